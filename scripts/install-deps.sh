@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages ibms needs that are not yet on this machine (run as root).
+# Usage: scripts/install-deps.sh [--report]   (--report adds LaTeX for the PDF report)
+set -euo pipefail
+packages=(build-essential cmake pkg-config git
+          libeigen3-dev libgsl-dev libboost-test-dev libhdf5-dev libfftw3-dev
+          libtomlplusplus-dev libcli11-dev libfmt-dev numdiff
+          python3 python3-matplotlib python3-numpy python3-h5py)
+if [[ "${1:-}" == "--report" ]]; then
+  packages+=(latexmk texlive-latex-base texlive-latex-recommended texlive-latex-extra
+             texlive-fonts-recommended lmodern)
+fi
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]} == 0)); then
+  echo "install-deps: all ${#packages[@]} packages present"
+  exit 0
+fi
+echo "install-deps: installing ${missing[*]}"
+SUDO=""
+if [[ $(id -u) -ne 0 ]]; then SUDO="sudo"; fi
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"

@@ -1,0 +1,104 @@
+// A validated, typed scene: everything a run needs, with defaults filled in (DESIGN.md §4).
+// scene/scene_reader.cpp builds it from TOML and checks every value once; the rest of the code
+// trusts it. Units: the solver is unit-agnostic, each scene states its system in a comment.
+#pragma once
+#include <array>
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace ibms {
+
+struct RunSpec {
+  double end_time = 1.0;             // stop time [time]
+  double time_step = 0.0;            // fixed dt [time]; 0 selects the adaptive step
+  double cfl = 0.5;                  // adaptive dt = cfl / max(|u|/dx + |v|/dy) [-]
+  double max_time_step = std::numeric_limits<double>::infinity();  // cap on adaptive dt [time]
+  double steady_tolerance = 0.0;     // stop when max|u^{n+1}-u^n| / (dt max|u|) < this [1/time]; 0 = off
+  long max_steps = 0;                // 0 = unlimited [-]
+  double max_cfl = 1.0;              // blow-up guard: stop if the CFL number exceeds this [-]
+};
+
+struct DomainSpec {
+  double length_x = 1.0, length_y = 1.0;  // [length]
+  int cells_x = 64, cells_y = 64;         // [-]
+  bool periodic_x = false, periodic_y = false;
+};
+
+struct FluidSpec {
+  double density = 1.0;              // rho_f [mass/length^3]
+  double kinematic_viscosity = 0.01; // nu [length^2/time]
+  std::array<double, 2> gravity{0.0, 0.0};  // g [length/time^2]; acts on bodies only (METHOD.md §2.6)
+};
+
+// Tangential velocity of one wall: speed for ramp_time <= ... ; see fluid/wall_motion.hpp.
+struct WallSpec {
+  double speed = 0.0;                // tangential speed [length/time]; +x on bottom/top, +y on left/right
+  double stop_time = std::numeric_limits<double>::infinity();  // wall stops (speed 0) from here [time]
+};
+
+struct WallsSpec {
+  WallSpec left, right, bottom, top;
+};
+
+struct IbmSpec {
+  std::string kernel = "roma3";      // roma3 | peskin4 | cosine4 | bkp6
+  int forcing_passes = 1;            // multi-direct forcing passes [-]
+  std::string inner_fluid_inertia = "kempe";  // kempe (variant K) | none (variant A, papers' literal form)
+  bool sub_markers = false;          // extra IB markers when marker spacing exceeds the cell size
+};
+
+struct SwellingSpec {
+  bool enabled = false;
+  double onset_time = 0.0;           // swelling starts [time]
+  double rate = 0.0;                 // dD/dt [length/time]
+  double max_diameter = 0.0;         // swelling stops at this diameter [length]
+};
+
+struct BodySpec {
+  std::array<double, 2> centre{0.0, 0.0};          // [length]
+  std::array<double, 2> velocity{0.0, 0.0};        // initial velocity [length/time]
+  double diameter = 0.0;             // D0 [length]
+  int n_surface_points = 0;          // N_l [-]
+  double density = 0.0;              // rho_s [mass/length^3]
+  double spring_stiffness = 0.0;     // k_s [force/length^2 per unit depth]
+  double spring_damping = -1.0;      // c_s [force time/length^2]; < 0: from restitution
+  double restitution_coefficient = 1.0;  // e_s in (0, 1] [-], used when spring_damping < 0
+  bool cross_springs = false;        // extra (l, l+2) rim springs
+  std::string mass_lumping = "equal";  // equal (M = rho_s V / (N_l + 1)) | uniform_disk
+  SwellingSpec swelling;
+};
+
+struct ContactSpec {
+  double stiffness = 0.0;            // k_Dn [force/length^2 per unit depth]; 0 = contacts off
+  double restitution_coefficient = 1.0;  // e_D in (0, 1] [-]
+  double cds_radius = 0.0;           // absolute CDS radius [length]; 0: use cds_radius_fraction
+  double cds_radius_fraction = 0.0;  // CDS radius as a fraction of the body diameter [-]
+  bool walls = true;                 // body-wall contacts
+};
+
+struct OutputSpec {
+  std::string file = "ibms_out.h5";  // HDF5 output path; XDMF and CSV files go beside it
+  int series_every = 1;              // write /series every k steps [-]
+  double snapshot_interval = 0.0;    // time between snapshots [time]; 0 = only the final state
+  bool centreline_profiles = true;   // write <file stem>_centreline_u.csv / _v.csv at the end
+  bool progress = true;              // progress line on stderr
+};
+
+struct Scene {
+  std::string source_file;           // path the scene came from (for messages)
+  std::string resolved_text;         // TOML text of the fully resolved scene (defaults filled)
+  RunSpec run;
+  DomainSpec domain;
+  FluidSpec fluid;
+  WallsSpec walls;
+  IbmSpec ibm;
+  std::vector<BodySpec> bodies;
+  ContactSpec contact;
+  OutputSpec output;
+
+  bool has_bodies() const { return !bodies.empty(); }
+};
+
+}  // namespace ibms
