@@ -1,0 +1,217 @@
+// SMAC projection with momentum interpolation on a collocated grid: METHOD.md §2.3, §2.5, §6.
+#include "fluid/fluid_solver.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "fluid/operators.hpp"
+
+namespace ibms {
+namespace {
+
+SpectralBoundary kind(bool periodic, SpectralBoundary wall_kind) {
+  return periodic ? SpectralBoundary::periodic : wall_kind;
+}
+
+}  // namespace
+
+FluidSolver::FluidSolver(const Grid& grid, double kinematic_viscosity, const FluidBoundaries& boundaries)
+    : grid_(grid), nu_(kinematic_viscosity), boundaries_(boundaries),
+      star_x_(grid), star_y_(grid), conv_x_(grid), conv_y_(grid), lap_x_(grid), lap_y_(grid),
+      grad_x_(grid), grad_y_(grid), phi_(grid), work_(grid),
+      star_face_x_(FaceField::x_faces(grid)), star_face_y_(FaceField::y_faces(grid)),
+      buffer_(grid.n_cells()) {
+  boundaries_.periodic_x = grid.periodic_x;
+  boundaries_.periodic_y = grid.periodic_y;
+  poisson_ = std::make_unique<SpectralSolver>(
+      grid, kind(grid.periodic_x, SpectralBoundary::neumann), kind(grid.periodic_y, SpectralBoundary::neumann));
+  helmholtz_ = std::make_unique<SpectralSolver>(
+      grid, kind(grid.periodic_x, SpectralBoundary::dirichlet), kind(grid.periodic_y, SpectralBoundary::dirichlet));
+}
+
+FluidState FluidSolver::make_state() const {
+  FluidState s;
+  s.velocity_x = CellField(grid_);
+  s.velocity_y = CellField(grid_);
+  s.pressure = CellField(grid_);
+  s.velocity_face_x = FaceField::x_faces(grid_);
+  s.velocity_face_y = FaceField::y_faces(grid_);
+  s.convection_x_prev = CellField(grid_);
+  s.convection_y_prev = CellField(grid_);
+  return s;
+}
+
+void FluidSolver::initialise_faces(FluidState& state) {
+  fill_velocity_ghosts(grid_, boundaries_, state.time, state.velocity_x, state.velocity_y);
+  // Interior (and periodic) faces: mean of the two neighbouring cells; wall faces: no flow.
+  for (int j = 0; j < grid_.ny; ++j)
+    for (int i = 0; i <= grid_.nx; ++i)
+      state.velocity_face_x(i, j) = 0.5 * (state.velocity_x(i - 1, j) + state.velocity_x(i, j));
+  for (int j = 0; j <= grid_.ny; ++j)
+    for (int i = 0; i < grid_.nx; ++i)
+      state.velocity_face_y(i, j) = 0.5 * (state.velocity_y(i, j - 1) + state.velocity_y(i, j));
+  if (!grid_.periodic_x)
+    for (int j = 0; j < grid_.ny; ++j) state.velocity_face_x(0, j) = state.velocity_face_x(grid_.nx, j) = 0.0;
+  if (!grid_.periodic_y)
+    for (int i = 0; i < grid_.nx; ++i) state.velocity_face_y(i, 0) = state.velocity_face_y(i, grid_.ny) = 0.0;
+  // One projection with unit time step: L phi = D U, U -= G_f phi, u -= G_c phi.
+  divergence(grid_, state.velocity_face_x, state.velocity_face_y, 1.0, buffer_.data());
+  poisson_->solve(/*a=*/0.0, /*b=*/1.0, buffer_.data(), buffer_.data());
+  phi_.copy_interior_from(buffer_.data());
+  fill_neumann_ghosts(grid_, phi_);
+  const double inv_dx = 1.0 / grid_.dx(), inv_dy = 1.0 / grid_.dy();
+  const int i_first = grid_.periodic_x ? 0 : 1, j_first = grid_.periodic_y ? 0 : 1;
+  for (int j = 0; j < grid_.ny; ++j)
+    for (int i = i_first; i < grid_.nx; ++i) state.velocity_face_x(i, j) -= (phi_(i, j) - phi_(i - 1, j)) * inv_dx;
+  for (int j = j_first; j < grid_.ny; ++j)
+    for (int i = 0; i < grid_.nx; ++i) state.velocity_face_y(i, j) -= (phi_(i, j) - phi_(i, j - 1)) * inv_dy;
+  sync_periodic_faces(grid_, state.velocity_face_x, state.velocity_face_y);
+  centre_gradient(grid_, phi_, grad_x_, grad_y_);
+  for (int j = 0; j < grid_.ny; ++j)
+    for (int i = 0; i < grid_.nx; ++i) {
+      state.velocity_x(i, j) -= grad_x_(i, j);
+      state.velocity_y(i, j) -= grad_y_(i, j);
+    }
+}
+
+void FluidSolver::solve_helmholtz_component(double dt, CellField& rhs_and_solution) {
+  // (I - nu dt/2 L) q = r with homogeneous Dirichlet/periodic rules; wall data already in r.
+  rhs_and_solution.copy_interior_to(buffer_.data());
+  helmholtz_->solve(/*a=*/1.0, /*b=*/-0.5 * nu_ * dt, buffer_.data(), buffer_.data());
+  rhs_and_solution.copy_interior_from(buffer_.data());
+}
+
+void FluidSolver::predict_momentum(FluidState& state, double dt, const CellField* force_x,
+                                   const CellField* force_y) {
+  // Ghosts of u^n with the wall velocities at t^n, of p^n with zero normal gradient.
+  CellField& u = state.velocity_x;
+  CellField& v = state.velocity_y;
+  CellField& p = state.pressure;
+  fill_velocity_ghosts(grid_, boundaries_, state.time, u, v);
+  fill_neumann_ghosts(grid_, p);
+
+  convection(grid_, state.velocity_face_x, state.velocity_face_y, u, conv_x_);  // N^n
+  convection(grid_, state.velocity_face_x, state.velocity_face_y, v, conv_y_);
+  laplacian(grid_, u, lap_x_);
+  laplacian(grid_, v, lap_y_);
+  centre_gradient(grid_, p, grad_x_, grad_y_);
+
+  // Variable-step AB2: N_ext = (1 + r/2) N^n - (r/2) N^{n-1}, r = dt^n/dt^{n-1}; Euler first step.
+  const double r = state.has_convection_prev ? dt / state.time_step_prev : 0.0;
+  const double c_new = 1.0 + 0.5 * r, c_old = -0.5 * r;
+  for (int j = 0; j < grid_.ny; ++j)
+    for (int i = 0; i < grid_.nx; ++i) {
+      const double fx = force_x ? (*force_x)(i, j) : 0.0;
+      const double fy = force_y ? (*force_y)(i, j) : 0.0;
+      const double nx_ext = c_new * conv_x_(i, j) + c_old * state.convection_x_prev(i, j);
+      const double ny_ext = c_new * conv_y_(i, j) + c_old * state.convection_y_prev(i, j);
+      star_x_(i, j) = u(i, j) + dt * (-nx_ext + 0.5 * nu_ * lap_x_(i, j) - grad_x_(i, j) + fx);
+      star_y_(i, j) = v(i, j) + dt * (-ny_ext + 0.5 * nu_ * lap_y_(i, j) - grad_y_(i, j) + fy);
+    }
+
+  // Wall velocities at t^{n+1} in the implicit half: the wall row of L is the homogeneous row
+  // plus 2 u_w / h^2 (METHOD.md §6, inhomogeneous Dirichlet), moved to the rhs.
+  const double t_new = state.time + dt;
+  const double cx = 0.5 * nu_ * dt * 2.0 / (grid_.dx() * grid_.dx());
+  const double cy = 0.5 * nu_ * dt * 2.0 / (grid_.dy() * grid_.dy());
+  if (!grid_.periodic_y) {
+    const double u_bottom = boundaries_.bottom.at(t_new), u_top = boundaries_.top.at(t_new);
+    for (int i = 0; i < grid_.nx; ++i) {
+      star_x_(i, 0) += cy * u_bottom;
+      star_x_(i, grid_.ny - 1) += cy * u_top;
+    }
+  }
+  if (!grid_.periodic_x) {
+    const double v_left = boundaries_.left.at(t_new), v_right = boundaries_.right.at(t_new);
+    for (int j = 0; j < grid_.ny; ++j) {
+      star_y_(0, j) += cx * v_left;
+      star_y_(grid_.nx - 1, j) += cx * v_right;
+    }
+  }
+  solve_helmholtz_component(dt, star_x_);
+  solve_helmholtz_component(dt, star_y_);
+}
+
+ProjectionStats FluidSolver::project_smac(FluidState& state, double dt) {
+  ProjectionStats stats;
+  const double inv_dx = 1.0 / grid_.dx(), inv_dy = 1.0 / grid_.dy();
+  // Momentum interpolation (METHOD.md §2.3 step 3): remove the wide gradient of p^n from the
+  // cell velocity, average to the face, add the compact face gradient back.
+  //   U*_{i-1/2} = mean(u* + dt G_c p^n) - dt (p_i - p_{i-1})/dx
+  // grad_x_/grad_y_ still hold G_c p^n from the predictor; p^n ghosts are filled.
+  for (int j = 0; j < grid_.ny; ++j)
+    for (int i = 0; i < grid_.nx; ++i) {
+      phi_(i, j) = star_x_(i, j) + dt * grad_x_(i, j);  // phi_ and work_ as scratch for u-hat
+      work_(i, j) = star_y_(i, j) + dt * grad_y_(i, j);
+    }
+  fill_neumann_ghosts(grid_, phi_);  // only periodic wraps are read; wall faces are fixed below
+  fill_neumann_ghosts(grid_, work_);
+  const CellField& p = state.pressure;
+  const int i_first = grid_.periodic_x ? 0 : 1, j_first = grid_.periodic_y ? 0 : 1;
+  for (int j = 0; j < grid_.ny; ++j) {
+    for (int i = i_first; i < grid_.nx; ++i)
+      star_face_x_(i, j) = 0.5 * (phi_(i - 1, j) + phi_(i, j)) - dt * (p(i, j) - p(i - 1, j)) * inv_dx;
+    if (!grid_.periodic_x) star_face_x_(0, j) = star_face_x_(grid_.nx, j) = 0.0;  // no flow through walls
+  }
+  for (int j = j_first; j < grid_.ny; ++j)
+    for (int i = 0; i < grid_.nx; ++i)
+      star_face_y_(i, j) = 0.5 * (work_(i, j - 1) + work_(i, j)) - dt * (p(i, j) - p(i, j - 1)) * inv_dy;
+  if (!grid_.periodic_y)
+    for (int i = 0; i < grid_.nx; ++i) star_face_y_(i, 0) = star_face_y_(i, grid_.ny) = 0.0;
+  sync_periodic_faces(grid_, star_face_x_, star_face_y_);
+  stats.max_divergence_before = max_abs_divergence(grid_, star_face_x_, star_face_y_);
+
+  // METHOD.md §2.3 step 4: L_c phi = D U* / dt, pure Neumann (mean removed) or periodic.
+  divergence(grid_, star_face_x_, star_face_y_, 1.0 / dt, buffer_.data());
+  stats.removed_mean = poisson_->solve(/*a=*/0.0, /*b=*/1.0, buffer_.data(), buffer_.data()).removed_mean;
+  phi_.copy_interior_from(buffer_.data());
+  fill_neumann_ghosts(grid_, phi_);
+
+  // Step 5: U^{n+1} = U* - dt G_f phi (wall faces are not corrected).
+  for (int j = 0; j < grid_.ny; ++j)
+    for (int i = i_first; i < grid_.nx; ++i)
+      state.velocity_face_x(i, j) = star_face_x_(i, j) - dt * (phi_(i, j) - phi_(i - 1, j)) * inv_dx;
+  if (!grid_.periodic_x)
+    for (int j = 0; j < grid_.ny; ++j) state.velocity_face_x(0, j) = state.velocity_face_x(grid_.nx, j) = 0.0;
+  for (int j = j_first; j < grid_.ny; ++j)
+    for (int i = 0; i < grid_.nx; ++i)
+      state.velocity_face_y(i, j) = star_face_y_(i, j) - dt * (phi_(i, j) - phi_(i, j - 1)) * inv_dy;
+  if (!grid_.periodic_y)
+    for (int i = 0; i < grid_.nx; ++i) state.velocity_face_y(i, 0) = state.velocity_face_y(i, grid_.ny) = 0.0;
+  sync_periodic_faces(grid_, state.velocity_face_x, state.velocity_face_y);
+  stats.max_divergence_after = max_abs_divergence(grid_, state.velocity_face_x, state.velocity_face_y);
+
+  // u^{n+1} = u* - dt G_c phi;  p^{n+1} = p^n + phi (standard incremental form, see header).
+  centre_gradient(grid_, phi_, grad_x_, grad_y_);
+  for (int j = 0; j < grid_.ny; ++j)
+    for (int i = 0; i < grid_.nx; ++i) {
+      const double u_new = star_x_(i, j) - dt * grad_x_(i, j);
+      const double v_new = star_y_(i, j) - dt * grad_y_(i, j);
+      stats.max_velocity_change = std::max({stats.max_velocity_change,
+                                            std::abs(u_new - state.velocity_x(i, j)),
+                                            std::abs(v_new - state.velocity_y(i, j))});
+      stats.max_velocity = std::max({stats.max_velocity, std::abs(u_new), std::abs(v_new)});
+      state.velocity_x(i, j) = u_new;
+      state.velocity_y(i, j) = v_new;
+      state.pressure(i, j) += phi_(i, j);
+    }
+
+  // N^n becomes N^{n-1} of the next step.
+  std::swap(state.convection_x_prev, conv_x_);
+  std::swap(state.convection_y_prev, conv_y_);
+  state.has_convection_prev = true;
+  state.time_step_prev = dt;
+  state.time += dt;
+  state.step += 1;
+  return stats;
+}
+
+double FluidSolver::kinetic_energy(const FluidState& state) const {
+  double sum = 0.0;
+  for (int j = 0; j < grid_.ny; ++j)
+    for (int i = 0; i < grid_.nx; ++i)
+      sum += state.velocity_x(i, j) * state.velocity_x(i, j) + state.velocity_y(i, j) * state.velocity_y(i, j);
+  return 0.5 * sum * grid_.cell_area();
+}
+
+}  // namespace ibms

@@ -1,0 +1,90 @@
+// Collocated-grid SMAC fluid solver (METHOD.md §2.3): AB2 convection with the face velocities,
+// Crank-Nicolson diffusion by a direct DST Helmholtz solve, momentum interpolation to faces,
+// DCT/FFT Poisson solve for the pressure correction, face velocities divergence-free to round-off.
+// Pressure update: the standard incremental form p^{n+1} = p^n + phi. METHOD.md's rotational
+// form p^n + phi - (nu dt/2) L_c phi is unstable on this collocated grid once nu dt/h^2 > 1/4:
+// the checkerboard pressure mode is invisible to the cell-centre gradient, so the predictor never
+// damps it while L_c amplifies it by 4 nu dt/h^2 per step (von Neumann analysis in
+// README.md, "Departures from METHOD.md"). The standard form is unconditionally stable and
+// measured second order for p in space and time on the manufactured solution.
+// Pressure is kinematic (p / rho_f) [length^2/time^2]; forcing terms are accelerations.
+// The step is split in two so the immersed boundary can act between them:
+//   predict_momentum (u^n -> u~), [IB forcing on velocity_star], project_smac (u* -> u^{n+1}).
+#pragma once
+#include <memory>
+#include <vector>
+
+#include "core/fields.hpp"
+#include "core/grid.hpp"
+#include "fluid/boundary_conditions.hpp"
+#include "fluid/spectral_solver.hpp"
+
+namespace ibms {
+
+// The fluid's full state at time level n (everything a restart needs).
+struct FluidState {
+  double time = 0.0;
+  long step = 0;
+  CellField velocity_x, velocity_y;      // u^n, v^n at cell centres [length/time]
+  CellField pressure;                    // p^n / rho_f [length^2/time^2]
+  FaceField velocity_face_x;             // U^n on x-faces, divergence-free transport velocity
+  FaceField velocity_face_y;             // V^n on y-faces
+  CellField convection_x_prev, convection_y_prev;  // N^{n-1} for AB2 [length/time^2]
+  bool has_convection_prev = false;      // false before the first step (Euler start)
+  double time_step_prev = 0.0;           // dt^{n-1}, for variable-step AB2
+};
+
+struct ProjectionStats {
+  double max_divergence_before = 0.0;    // max |D U*| [1/time]
+  double max_divergence_after = 0.0;     // max |D U^{n+1}| [1/time]
+  double removed_mean = 0.0;             // mean of the Poisson rhs projected out [1/time^2]
+  double max_velocity_change = 0.0;      // max |u^{n+1} - u^n| over both components [length/time]
+  double max_velocity = 0.0;             // max |u^{n+1}| over both components [length/time]
+};
+
+class FluidSolver {
+ public:
+  FluidSolver(const Grid& grid, double kinematic_viscosity, const FluidBoundaries& boundaries);
+
+  const Grid& grid() const { return grid_; }
+  const FluidBoundaries& boundaries() const { return boundaries_; }
+  double kinematic_viscosity() const { return nu_; }
+
+  FluidState make_state() const;  // fluid at rest, t = 0
+
+  // Face velocities from the cell velocities (averaged, wall faces 0) and one projection so that
+  // they are divergence-free; the cell velocities get the same correction. Pressure untouched.
+  void initialise_faces(FluidState& state);
+
+  // METHOD.md §2.3 step 1: (u~ - u^n)/dt = -AB2(N) + nu L (u~ + u^n)/2 - G_c p^n + f^{n+1/2}.
+  // force_x/force_y (accelerations at t^{n+1/2}) may be null. Result in velocity_star_x/y.
+  // Only the ghost layers of `state` are written (they are scratch).
+  void predict_momentum(FluidState& state, double dt, const CellField* force_x,
+                        const CellField* force_y);
+
+  // The predicted velocity, to be forced by the immersed boundary before projection.
+  CellField& velocity_star_x() { return star_x_; }
+  CellField& velocity_star_y() { return star_y_; }
+
+  // METHOD.md §2.3 steps 3-5: momentum interpolation, L phi = D U*/dt, corrections of U_f, u, p.
+  // Writes level n+1 into `state` and advances its time and step.
+  ProjectionStats project_smac(FluidState& state, double dt);
+
+  // Kinetic energy per unit density and depth, 0.5 sum |u|^2 dx dy [length^4/time^2].
+  double kinetic_energy(const FluidState& state) const;
+
+ private:
+  void solve_helmholtz_component(double dt, CellField& rhs_and_solution);
+
+  Grid grid_;
+  double nu_;
+  FluidBoundaries boundaries_;
+  std::unique_ptr<SpectralSolver> poisson_;    // Neumann/periodic
+  std::unique_ptr<SpectralSolver> helmholtz_;  // Dirichlet/periodic
+  // Work fields, allocated once.
+  CellField star_x_, star_y_, conv_x_, conv_y_, lap_x_, lap_y_, grad_x_, grad_y_, phi_, work_;
+  FaceField star_face_x_, star_face_y_;
+  std::vector<double> buffer_;
+};
+
+}  // namespace ibms

@@ -1,0 +1,45 @@
+// Direct solver of (a I + b L) q = r on the cell-centred grid by FFTW real-to-real transforms
+// (METHOD.md §6): DCT-II/III for Neumann walls, DST-II/III for homogeneous Dirichlet walls,
+// R2HC/HC2R for periodic directions. L is the compact 5-point Laplacian with the ghost rules of
+// fluid/boundary_conditions.hpp. Plans are made once (FFTW_MEASURE); solve() allocates nothing.
+#pragma once
+#include <fftw3.h>
+
+#include <vector>
+
+#include "core/grid.hpp"
+
+namespace ibms {
+
+enum class SpectralBoundary { periodic, neumann, dirichlet };
+
+struct SpectralSolveStats {
+  double removed_mean = 0.0;  // mean of r projected out when a I + b L is singular [units of r]
+};
+
+class SpectralSolver {
+ public:
+  // Boundary kind per direction; a periodic grid direction must be `periodic`.
+  SpectralSolver(const Grid& grid, SpectralBoundary boundary_x, SpectralBoundary boundary_y);
+  ~SpectralSolver();
+  SpectralSolver(const SpectralSolver&) = delete;
+  SpectralSolver& operator=(const SpectralSolver&) = delete;
+
+  // rhs and solution: contiguous (ny, nx), x fastest; may alias. If a + b(lambda_x + lambda_y)
+  // vanishes (the constant mode of a pure Neumann/periodic Poisson problem) that mode of the
+  // solution is set to 0 (zero mean) and the rhs mean is reported as removed.
+  SpectralSolveStats solve(double a, double b, const double* rhs, double* solution);
+
+  // Eigenvalues of the 1D operators in transform order [1/length^2].
+  const std::vector<double>& eigenvalues_x() const { return lambda_x_; }
+  const std::vector<double>& eigenvalues_y() const { return lambda_y_; }
+
+ private:
+  int nx_, ny_;
+  double normalisation_;  // product of the per-direction logical sizes
+  std::vector<double> lambda_x_, lambda_y_;
+  double* buffer_ = nullptr;  // fftw_malloc'ed, nx*ny
+  fftw_plan forward_ = nullptr, inverse_ = nullptr;
+};
+
+}  // namespace ibms

@@ -1,0 +1,149 @@
+// Claims (METHOD.md A10b, issue 2): with no-slip walls the collocated SMAC solver is second
+// order in space for u and v in L2 and max norms (>= 1.9 over four grids), the pressure at least
+// 1.5, and second order in time for the velocity (>= 1.8) on a fixed fine grid.
+#define BOOST_TEST_MODULE manufactured_solution
+#include <boost/test/unit_test.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+#include "../common/convergence.hpp"
+#include "fluid/fluid_solver.hpp"
+#include "manufactured_solution.hpp"
+
+using namespace ibms;
+using verification::ManufacturedSolution;
+
+namespace {
+
+struct Errors { double u_l2 = 0, u_max = 0, v_l2 = 0, v_max = 0, p_l2 = 0, p_max = 0; };
+
+struct Run {
+  FluidState state;
+  Errors errors;
+  long steps = 0;
+};
+
+// Runs the solver from the exact initial field to `end_time` (or to steady state when
+// steady_tolerance > 0) with a fixed dt, forcing evaluated at t^{n+1/2}.
+Run run(const ManufacturedSolution& ms, int n, double dt, double end_time, double steady_tolerance) {
+  const Grid g(n, n, 1.0, 1.0);
+  FluidSolver solver(g, ms.viscosity, FluidBoundaries{});
+  Run r{solver.make_state(), {}, 0};
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      r.state.velocity_x(i, j) = ms.u(g.x_centre(i), g.y_centre(j), 0.0);
+      r.state.velocity_y(i, j) = ms.v(g.x_centre(i), g.y_centre(j), 0.0);
+      r.state.pressure(i, j) = ms.p(g.x_centre(i), g.y_centre(j), -0.5 * dt);
+    }
+  solver.initialise_faces(r.state);
+  CellField fx(g), fy(g);
+  const long n_steps = std::lround(end_time / dt);
+  for (long s = 0; s < n_steps; ++s) {
+    const double t_half = r.state.time + 0.5 * dt;
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        fx(i, j) = ms.force_x(g.x_centre(i), g.y_centre(j), t_half);
+        fy(i, j) = ms.force_y(g.x_centre(i), g.y_centre(j), t_half);
+      }
+    solver.predict_momentum(r.state, dt, &fx, &fy);
+    const ProjectionStats stats = solver.project_smac(r.state, dt);
+    ++r.steps;
+    if (steady_tolerance > 0 && stats.max_velocity_change / (dt * stats.max_velocity) < steady_tolerance) break;
+  }
+  // Errors against the exact field; pressure p^{n+1} approximates p(t^{n+1/2}) (incremental
+  // CN projection, Brown, Cortez & Minion 2001), both with zero mean.
+  const double t = r.state.time, t_p = t - 0.5 * dt;
+  double mean_p = 0;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) mean_p += r.state.pressure(i, j);
+  mean_p /= n * n;
+  double su = 0, sv = 0, sp = 0;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const double x = g.x_centre(i), y = g.y_centre(j);
+      const double eu = std::abs(r.state.velocity_x(i, j) - ms.u(x, y, t));
+      const double ev = std::abs(r.state.velocity_y(i, j) - ms.v(x, y, t));
+      const double ep = std::abs(r.state.pressure(i, j) - mean_p - ms.p(x, y, t_p));
+      su += eu * eu; sv += ev * ev; sp += ep * ep;
+      // fmax with a NaN error would hide a blow-up: make it infinite instead.
+      r.errors.u_max = std::max(r.errors.u_max, std::isfinite(eu) ? eu : HUGE_VAL);
+      r.errors.v_max = std::max(r.errors.v_max, std::isfinite(ev) ? ev : HUGE_VAL);
+      r.errors.p_max = std::max(r.errors.p_max, std::isfinite(ep) ? ep : HUGE_VAL);
+    }
+  r.errors.u_l2 = std::sqrt(su / (n * n));
+  r.errors.v_l2 = std::sqrt(sv / (n * n));
+  r.errors.p_l2 = std::sqrt(sp / (n * n));
+  return r;
+}
+
+// Prints the table for one norm and checks the finest-three slope and every pairwise order.
+void check_order(const std::string& name, const std::vector<int>& n, const std::vector<double>& e,
+                 double required) {
+  std::vector<double> h;
+  for (int k : n) h.push_back(1.0 / k);
+  BOOST_TEST_MESSAGE(verification::convergence_table(name, n, h, e));
+  for (double order : verification::pairwise_orders(h, e)) BOOST_TEST(order > 0.0);
+  BOOST_TEST(verification::finest_three_slope(h, e) >= required);
+}
+
+void spatial_study(bool steady) {
+  ManufacturedSolution ms;
+  ms.steady = steady;
+  const std::vector<int> grids{16, 32, 64, 128};
+  std::vector<double> ul2, umax, vl2, vmax, pl2, pmax;
+  for (int n : grids) {
+    // dt proportional to h (CFL about 0.25 at |u| = 1) so time error shrinks like h^2 too.
+    const double dt = 0.25 / n;
+    const Run r = steady ? run(ms, n, dt, /*end_time=*/40.0, /*steady_tolerance=*/1e-9)
+                         : run(ms, n, dt, /*end_time=*/1.0, 0.0);
+    BOOST_TEST_MESSAGE("N = " << n << ": " << r.steps << " steps to t = " << r.state.time);
+    ul2.push_back(r.errors.u_l2); umax.push_back(r.errors.u_max);
+    vl2.push_back(r.errors.v_l2); vmax.push_back(r.errors.v_max);
+    pl2.push_back(r.errors.p_l2); pmax.push_back(r.errors.p_max);
+  }
+  // Issue 2 targets: velocity >= 1.9 (formal order 2 minus the 0.1 margin of DESIGN.md §6);
+  // pressure >= 1.5 (O(h^1.5) near walls on a collocated grid, METHOD.md A10b).
+  check_order("u, L2 norm", grids, ul2, 1.9);
+  check_order("u, max norm", grids, umax, 1.9);
+  check_order("v, L2 norm", grids, vl2, 1.9);
+  check_order("v, max norm", grids, vmax, 1.9);
+  check_order("p, L2 norm", grids, pl2, 1.5);
+  check_order("p, max norm", grids, pmax, 1.5);
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(steady_velocity_and_pressure_converge_at_second_order_in_space) {
+  spatial_study(/*steady=*/true);
+}
+
+BOOST_AUTO_TEST_CASE(unsteady_velocity_and_pressure_converge_at_second_order_in_space) {
+  spatial_study(/*steady=*/false);
+}
+
+// Fixed 64^2 grid, dt halved four times; the error of each run against the next finer-dt run
+// (the spatial error cancels) gives the temporal order.
+BOOST_AUTO_TEST_CASE(velocity_is_second_order_in_time) {
+  ManufacturedSolution ms;
+  ms.steady = false;
+  const std::vector<int> steps{10, 20, 40, 80, 160};
+  std::vector<FluidState> finals;
+  for (int s : steps) finals.push_back(run(ms, 64, 1.0 / s, 1.0, 0.0).state);
+  std::vector<double> h, e;
+  std::vector<int> n;
+  for (std::size_t k = 0; k + 1 < finals.size(); ++k) {
+    double err = 0;
+    for (int j = 0; j < 64; ++j)
+      for (int i = 0; i < 64; ++i)
+        err = std::max({err, std::abs(finals[k].velocity_x(i, j) - finals[k + 1].velocity_x(i, j)),
+                        std::abs(finals[k].velocity_y(i, j) - finals[k + 1].velocity_y(i, j))});
+    h.push_back(1.0 / steps[k]);
+    e.push_back(err);
+    n.push_back(steps[k]);
+  }
+  BOOST_TEST_MESSAGE(verification::convergence_table(
+      "velocity, max |u_dt - u_dt/2| at t = 1 on 64^2 (N = steps)", n, h, e));
+  for (double order : verification::pairwise_orders(h, e)) BOOST_TEST(order > 0.0);
+  BOOST_TEST(verification::finest_three_slope(h, e) >= 1.8);  // issue 2 target
+}
