@@ -1,0 +1,220 @@
+// HDF5 output of one run (output_file.hpp, DESIGN.md §5). Series datasets are chunked and
+// extendable with fill value NaN, so extending every series by one row and writing only the
+// values given leaves NaN where a row had no value.
+#include "io/output_file.hpp"
+
+#include <unistd.h>
+
+#include <cmath>
+#include <ctime>
+#include <filesystem>
+#include <limits>
+#include <set>
+
+#include <fmt/format.h>
+
+#include "core/errors.hpp"
+#include "io/hdf5_objects.hpp"
+
+namespace ibms {
+
+namespace {
+
+std::string utc_now_iso8601() {
+  const std::time_t now = std::time(nullptr);
+  std::tm utc{};
+  gmtime_r(&now, &utc);
+  char text[32];
+  std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &utc);
+  return text;
+}
+
+std::string host_name() {
+  char name[256] = {};
+  if (gethostname(name, sizeof name - 1) != 0) return "unknown";
+  return name;
+}
+
+// "<path without .h5>.xmf"
+std::string sidecar_path(const std::string& h5_path) {
+  const std::filesystem::path path(h5_path);
+  return (path.extension() == ".h5" ? std::filesystem::path(path).replace_extension(".xmf")
+                                    : std::filesystem::path(h5_path + ".xmf")).string();
+}
+
+constexpr hsize_t series_chunk_rows = 256;  // one chunk per ~256 steps keeps appends cheap
+
+}  // namespace
+
+OutputFile::OutputFile(const std::string& path, const std::string& resolved_scene, const Grid& grid,
+                       const std::string& version, const std::string& git_commit)
+    : path_(path), xdmf_path_(sidecar_path(path)), grid_(grid) {
+  silence_hdf5_errors();
+  file_ = checked_handle(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose, path,
+                         "cannot create HDF5 output file");
+  const hid_t root = file_.get();
+  write_string_attribute(root, "ibms_version", version, path_);
+  write_string_attribute(root, "git_commit", git_commit, path_);
+  write_string_attribute(root, "scene", resolved_scene, path_);
+  write_string_attribute(root, "start_time", utc_now_iso8601(), path_);
+  write_string_attribute(root, "host", host_name(), path_);
+  write_grid(grid);
+  flush();
+}
+
+OutputFile::~OutputFile() {
+  series_.clear();  // datasets before the file
+  file_.reset();
+}
+
+void OutputFile::write_grid(const Grid& grid) {
+  const Hdf5Handle group = checked_handle(H5Gcreate2(file_.get(), "/grid", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+                                          H5Gclose, path_, "cannot create /grid");
+  write_integer_attribute(group.get(), "nx", grid.nx, path_);
+  write_integer_attribute(group.get(), "ny", grid.ny, path_);
+  write_double_attribute(group.get(), "length_x", grid.length_x, path_);
+  write_double_attribute(group.get(), "length_y", grid.length_y, path_);
+  write_double_attribute(group.get(), "origin_x", grid.origin_x, path_);
+  write_double_attribute(group.get(), "origin_y", grid.origin_y, path_);
+  write_integer_attribute(group.get(), "periodic_x", grid.periodic_x ? 1 : 0, path_);
+  write_integer_attribute(group.get(), "periodic_y", grid.periodic_y ? 1 : 0, path_);
+  const double dx = grid.dx();
+  const double dy = grid.dy();
+  write_double_dataset(group.get(), "dx", {}, &dx, "length", path_);
+  write_double_dataset(group.get(), "dy", {}, &dy, "length", path_);
+  std::vector<double> coordinates;
+  const auto write_coordinates = [&](const char* name, int n, auto coordinate) {
+    coordinates.resize(static_cast<std::size_t>(n));
+    for (int i = 0; i < n; ++i) coordinates[static_cast<std::size_t>(i)] = coordinate(i);
+    write_double_dataset(group.get(), name, {static_cast<hsize_t>(n)}, coordinates.data(), "length", path_);
+  };
+  write_coordinates("x_centres", grid.nx, [&](int i) { return grid.x_centre(i); });
+  write_coordinates("y_centres", grid.ny, [&](int j) { return grid.y_centre(j); });
+  write_coordinates("x_faces", grid.nx + 1, [&](int i) { return grid.x_face(i); });
+  write_coordinates("y_faces", grid.ny + 1, [&](int j) { return grid.y_face(j); });
+}
+
+hid_t OutputFile::series_dataset(const SeriesValue& value) {
+  const auto found = series_.find(value.name);
+  if (found != series_.end()) return found->second.get();
+  const std::string name = "/series/" + value.name;
+  const std::string what = fmt::format("cannot create series '{}'", value.name);
+  if (value.name.empty() || link_exists(file_.get(), name)) throw_hdf5_error(path_, what + " (empty or taken name)");
+  const hsize_t initial = 0;
+  const hsize_t unlimited = H5S_UNLIMITED;
+  const Hdf5Handle space = checked_handle(H5Screate_simple(1, &initial, &unlimited), H5Sclose, path_, what);
+  const Hdf5Handle creation = checked_handle(H5Pcreate(H5P_DATASET_CREATE), H5Pclose, path_, what);
+  check_hdf5(H5Pset_chunk(creation.get(), 1, &series_chunk_rows), path_, what);
+  const double missing = std::numeric_limits<double>::quiet_NaN();  // rows without a value
+  check_hdf5(H5Pset_fill_value(creation.get(), H5T_NATIVE_DOUBLE, &missing), path_, what);
+  const Hdf5Handle link_list = intermediate_group_creation(path_);
+  Hdf5Handle dataset = checked_handle(H5Dcreate2(file_.get(), name.c_str(), H5T_NATIVE_DOUBLE, space.get(),
+                                                 link_list.get(), creation.get(), H5P_DEFAULT),
+                                      H5Dclose, path_, what);
+  write_string_attribute(dataset.get(), "units", value.units, path_);
+  const hid_t id = dataset.get();
+  series_.emplace(value.name, std::move(dataset));
+  return id;
+}
+
+void OutputFile::append_series(const std::vector<SeriesValue>& values) {
+  std::set<std::string> names;
+  for (const SeriesValue& value : values) {
+    if (!names.insert(value.name).second) {
+      throw InputError(fmt::format("{}: series '{}' given twice in one row", path_, value.name));
+    }
+    series_dataset(value);
+  }
+  const hsize_t row = n_series_rows_;
+  const hsize_t n_rows = row + 1;
+  for (auto& [name, dataset] : series_) {
+    check_hdf5(H5Dset_extent(dataset.get(), &n_rows), path_, fmt::format("cannot extend series '{}'", name));
+  }
+  const hsize_t one = 1;
+  const Hdf5Handle memory = checked_handle(H5Screate_simple(1, &one, nullptr), H5Sclose, path_, "cannot append series");
+  for (const SeriesValue& value : values) {
+    const hid_t dataset = series_.at(value.name).get();
+    const std::string what = fmt::format("cannot append to series '{}'", value.name);
+    const Hdf5Handle space = checked_handle(H5Dget_space(dataset), H5Sclose, path_, what);
+    check_hdf5(H5Sselect_hyperslab(space.get(), H5S_SELECT_SET, &row, nullptr, &one, nullptr), path_, what);
+    check_hdf5(H5Dwrite(dataset, H5T_NATIVE_DOUBLE, memory.get(), space.get(), H5P_DEFAULT, &value.value), path_, what);
+  }
+  n_series_rows_ = n_rows;
+  flush();
+}
+
+void OutputFile::write_snapshot(long step, double time, const std::vector<SnapshotArray>& arrays) {
+  if (step < 0) throw InputError(fmt::format("{}: snapshot step {} is negative", path_, step));
+  XdmfSnapshot record{fmt::format("/snapshots/{:06d}", step), time, {}, {}};
+  const std::string what = fmt::format("cannot write snapshot {}", record.group);
+  if (link_exists(file_.get(), record.group)) throw InputError(fmt::format("{}: {}: already written", path_, what));
+  const Hdf5Handle link_list = intermediate_group_creation(path_);
+  const Hdf5Handle group = checked_handle(
+      H5Gcreate2(file_.get(), record.group.c_str(), link_list.get(), H5P_DEFAULT, H5P_DEFAULT), H5Gclose, path_, what);
+  write_double_attribute(group.get(), "time", time, path_);
+  write_integer_attribute(group.get(), "step", step, path_);
+  std::map<std::string, std::map<std::string, std::size_t>> body_arrays;  // body group -> array -> size
+  for (const SnapshotArray& array : arrays) {
+    if (array.dims.empty() || array.data == nullptr || array.name.empty()) {
+      throw InputError(fmt::format("{}: {}: array '{}' needs a name, dims and data", path_, what, array.name));
+    }
+    const std::vector<hsize_t> dims(array.dims.begin(), array.dims.end());
+    write_double_dataset(group.get(), array.name, dims, array.data, array.units, path_);
+    const auto slash = array.name.rfind('/');
+    const bool is_grid_field = array.dims.size() == 2 && array.dims[0] == static_cast<std::size_t>(grid_.ny) &&
+                               array.dims[1] == static_cast<std::size_t>(grid_.nx);
+    if (is_grid_field && slash == std::string::npos) record.cell_arrays.push_back(array.name);
+    if (array.dims.size() == 1 && slash != std::string::npos && array.name.rfind("body_", 0) == 0) {
+      body_arrays[array.name.substr(0, slash)][array.name.substr(slash + 1)] = array.dims[0];
+    }
+  }
+  // A body appears in the sidecar when it has x and y of one length; its other arrays of that
+  // length become node attributes.
+  for (const auto& [body_group, members] : body_arrays) {
+    const auto x = members.find("x");
+    const auto y = members.find("y");
+    if (x == members.end() || y == members.end() || x->second != y->second) continue;
+    XdmfBody body{body_group, x->second, {}};
+    for (const auto& [name, size] : members) {
+      if (name != "x" && name != "y" && size == body.n_points) body.node_arrays.push_back(name);
+    }
+    record.bodies.push_back(std::move(body));
+  }
+  flush();
+  snapshots_.push_back(std::move(record));
+  write_xdmf_sidecar(xdmf_path_, std::filesystem::path(path_).filename().string(), grid_, snapshots_);
+}
+
+void OutputFile::write_checkpoint(const std::map<std::string, std::vector<double>>& arrays,
+                                  const std::map<std::string, double>& scalars, int format_version) {
+  const std::string what = "cannot write /checkpoint";
+  for (const auto& [name, value] : scalars) {
+    if (name == "format_version" || name == "complete") {
+      throw InputError(fmt::format("{}: {}: scalar name '{}' is reserved", path_, what, name));
+    }
+  }
+  // Drop the old checkpoint and write the new one; complete = 0 until everything is on disk,
+  // so a run killed in between leaves a checkpoint that read_checkpoint refuses.
+  if (link_exists(file_.get(), "/checkpoint")) {
+    check_hdf5(H5Ldelete(file_.get(), "/checkpoint", H5P_DEFAULT), path_, what);
+  }
+  const Hdf5Handle group = checked_handle(H5Gcreate2(file_.get(), "/checkpoint", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+                                          H5Gclose, path_, what);
+  write_integer_attribute(group.get(), "complete", 0, path_);
+  flush();
+  write_integer_attribute(group.get(), "format_version", format_version, path_);
+  for (const auto& [name, value] : scalars) write_double_attribute(group.get(), name, value, path_);
+  for (const auto& [name, values] : arrays) {
+    if (name.empty() || name.find('/') != std::string::npos) {
+      throw InputError(fmt::format("{}: {}: array name '{}' must be non-empty without '/'", path_, what, name));
+    }
+    write_double_dataset(group.get(), name, {static_cast<hsize_t>(values.size())}, values.data(), "state", path_);
+  }
+  flush();
+  write_integer_attribute(group.get(), "complete", 1, path_);
+  flush();
+}
+
+void OutputFile::flush() { check_hdf5(H5Fflush(file_.get(), H5F_SCOPE_GLOBAL), path_, "cannot flush"); }
+
+}  // namespace ibms

@@ -1,0 +1,78 @@
+// The HDF5 output of one run (DESIGN.md §5, the contract other implementations compare against):
+//   /            attributes ibms_version, git_commit, scene (resolved TOML), start_time (ISO 8601 UTC), host
+//   /grid        attributes nx, ny, length_x, length_y, origin_x, origin_y, periodic_x, periodic_y;
+//                datasets dx, dy, x_centres (nx), y_centres (ny), x_faces (nx+1), y_faces (ny+1)
+//   /series/*    extendable 1-D datasets, one row per append_series call (NaN where a row had no value)
+//   /snapshots/NNNNNN/*  (step, 6+ digits) attributes time, step; grid fields (ny, nx) x fastest,
+//                body arrays body_NNN/<name> (n)
+//   /checkpoint  the latest restart state (checkpoint.hpp)
+// Every dataset has a `units` attribute. The file is flushed after each write, so a killed run
+// leaves a readable file; an XDMF sidecar (<path without .h5>.xmf) is rewritten after each snapshot.
+#pragma once
+#include <cstddef>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "core/grid.hpp"
+#include "io/hdf5_handle.hpp"
+#include "io/xdmf_sidecar.hpp"
+
+namespace ibms {
+
+struct SeriesValue {
+  std::string name;   // may be a path, e.g. "body_000/centroid_x"
+  std::string units;  // e.g. "length/time"
+  double value;
+};
+
+struct SnapshotArray {
+  std::string name;               // e.g. "u" or "body_000/x"
+  std::string units;
+  std::vector<std::size_t> dims;  // (ny, nx) for grid fields, row-major x fastest; (n) for body arrays
+  const double* data;             // product(dims) values
+};
+
+class OutputFile {
+ public:
+  // Creates (truncates) the file and writes the root attributes and /grid.
+  // Throws InputError "<path>: <what>: <reason>" when the file cannot be created.
+  OutputFile(const std::string& path, const std::string& resolved_scene, const Grid& grid,
+             const std::string& version, const std::string& git_commit);
+  ~OutputFile();
+  OutputFile(const OutputFile&) = delete;
+  OutputFile& operator=(const OutputFile&) = delete;
+
+  // One row of /series: each value into /series/<name> (created with its units on first use).
+  // Series known from earlier rows but absent here get NaN in this row, so all series stay
+  // aligned row by row. A name twice in one call is an error.
+  void append_series(const std::vector<SeriesValue>& values);
+
+  // /snapshots/NNNNNN with the arrays; then rewrites the XDMF sidecar. A step written twice,
+  // an empty dims or a null data pointer is an error.
+  void write_snapshot(long step, double time, const std::vector<SnapshotArray>& arrays);
+
+  // Replaces /checkpoint: 1-D double datasets `arrays` (units "state"), double attributes
+  // `scalars` (integers such as the step are stored as doubles, exact up to 2^53), attribute
+  // format_version, and attribute complete = 1 once everything is written.
+  void write_checkpoint(const std::map<std::string, std::vector<double>>& arrays,
+                        const std::map<std::string, double>& scalars, int format_version);
+
+  void flush();  // H5Fflush; already called after each write
+  const std::string& path() const { return path_; }
+  const std::string& xdmf_path() const { return xdmf_path_; }
+
+ private:
+  void write_grid(const Grid& grid);
+  hid_t series_dataset(const SeriesValue& value);
+
+  std::string path_;
+  std::string xdmf_path_;
+  Grid grid_;
+  Hdf5Handle file_;
+  std::map<std::string, Hdf5Handle> series_;  // open /series datasets by name
+  hsize_t n_series_rows_ = 0;
+  std::vector<XdmfSnapshot> snapshots_;       // what the sidecar lists
+};
+
+}  // namespace ibms

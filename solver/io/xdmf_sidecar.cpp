@@ -1,0 +1,114 @@
+// Hand-written XDMF 3 sidecar for the HDF5 snapshots (xdmf_sidecar.hpp). Dimensions are listed
+// slowest first, as HDF5 stores them: grid fields (ny, nx), the corner mesh (ny+1, nx+1).
+#include "io/xdmf_sidecar.hpp"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+
+#include <fmt/format.h>
+
+#include "core/errors.hpp"
+
+namespace ibms {
+
+namespace {
+
+std::string xml_escaped(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+// <DataItem> pointing at one dataset of the .h5 file.
+std::string hdf_item(const std::string& h5_basename, const std::string& dataset, const std::string& dims,
+                     const char* indent) {
+  return fmt::format("{}<DataItem Dimensions=\"{}\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">{}:{}</DataItem>\n",
+                     indent, dims, xml_escaped(h5_basename), xml_escaped(dataset));
+}
+
+void append_fluid_grid(std::string& out, const std::string& h5, const Grid& grid, const XdmfSnapshot& snapshot) {
+  out += "        <Grid Name=\"fluid\" GridType=\"Uniform\">\n";
+  out += fmt::format("          <Time Value=\"{}\"/>\n", snapshot.time);
+  out += fmt::format("          <Topology TopologyType=\"2DRectMesh\" Dimensions=\"{} {}\"/>\n", grid.ny + 1, grid.nx + 1);
+  out += "          <Geometry GeometryType=\"VXVY\">\n";
+  out += hdf_item(h5, "/grid/x_faces", std::to_string(grid.nx + 1), "            ");
+  out += hdf_item(h5, "/grid/y_faces", std::to_string(grid.ny + 1), "            ");
+  out += "          </Geometry>\n";
+  for (const std::string& name : snapshot.cell_arrays) {
+    out += fmt::format("          <Attribute Name=\"{}\" AttributeType=\"Scalar\" Center=\"Cell\">\n", xml_escaped(name));
+    out += hdf_item(h5, snapshot.group + "/" + name, fmt::format("{} {}", grid.ny, grid.nx), "            ");
+    out += "          </Attribute>\n";
+  }
+  out += "        </Grid>\n";
+}
+
+void append_body_grid(std::string& out, const std::string& h5, const XdmfSnapshot& snapshot, const XdmfBody& body) {
+  const std::string group = snapshot.group + "/" + body.group;
+  const std::string n = std::to_string(body.n_points);
+  out += fmt::format("        <Grid Name=\"{}\" GridType=\"Uniform\">\n", xml_escaped(body.group));
+  out += fmt::format("          <Time Value=\"{}\"/>\n", snapshot.time);
+  // One polyline through the points in order, back to the first: the closed rim.
+  out += fmt::format("          <Topology TopologyType=\"Polyline\" NodesPerElement=\"{}\" NumberOfElements=\"1\">\n",
+                     body.n_points + 1);
+  out += fmt::format("            <DataItem Dimensions=\"1 {}\" NumberType=\"Int\" Format=\"XML\">", body.n_points + 1);
+  for (std::size_t k = 0; k < body.n_points; ++k) out += fmt::format("{} ", k);
+  out += "0</DataItem>\n          </Topology>\n";
+  out += "          <Geometry GeometryType=\"X_Y\">\n";
+  out += hdf_item(h5, group + "/x", n, "            ");
+  out += hdf_item(h5, group + "/y", n, "            ");
+  out += "          </Geometry>\n";
+  for (const std::string& name : body.node_arrays) {
+    out += fmt::format("          <Attribute Name=\"{}\" AttributeType=\"Scalar\" Center=\"Node\">\n", xml_escaped(name));
+    out += hdf_item(h5, group + "/" + name, n, "            ");
+    out += "          </Attribute>\n";
+  }
+  out += "        </Grid>\n";
+}
+
+}  // namespace
+
+std::string xdmf_text(const std::string& h5_basename, const Grid& grid, const std::vector<XdmfSnapshot>& snapshots) {
+  std::string out =
+      "<?xml version=\"1.0\" ?>\n"
+      "<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n"
+      "<Xdmf Version=\"3.0\">\n"
+      "  <Domain>\n"
+      "    <Grid Name=\"snapshots\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+  for (const XdmfSnapshot& snapshot : snapshots) {
+    out += fmt::format("      <Grid Name=\"{}\" GridType=\"Collection\" CollectionType=\"Spatial\">\n",
+                       xml_escaped(snapshot.group));
+    out += fmt::format("        <Time Value=\"{}\"/>\n", snapshot.time);
+    append_fluid_grid(out, h5_basename, grid, snapshot);
+    for (const XdmfBody& body : snapshot.bodies) append_body_grid(out, h5_basename, snapshot, body);
+    out += "      </Grid>\n";
+  }
+  out += "    </Grid>\n  </Domain>\n</Xdmf>\n";
+  return out;
+}
+
+void write_xdmf_sidecar(const std::string& xmf_path, const std::string& h5_basename, const Grid& grid,
+                        const std::vector<XdmfSnapshot>& snapshots) {
+  const std::string temporary = xmf_path + ".tmp";
+  {
+    std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
+    if (!file) throw InputError(fmt::format("{}: cannot create XDMF sidecar: {}", temporary, std::strerror(errno)));
+    file << xdmf_text(h5_basename, grid, snapshots);
+    file.close();
+    if (!file) throw InputError(fmt::format("{}: cannot write XDMF sidecar", temporary));
+  }
+  if (std::rename(temporary.c_str(), xmf_path.c_str()) != 0) {
+    throw InputError(fmt::format("{}: cannot replace XDMF sidecar: {}", xmf_path, std::strerror(errno)));
+  }
+}
+
+}  // namespace ibms

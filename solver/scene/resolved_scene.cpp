@@ -1,0 +1,133 @@
+// The fully resolved scene as TOML (scene_reader.hpp: resolved_scene_toml): every key with its
+// value, defaults included, sections in the documented order. Every run stores this text in its
+// output (DESIGN.md §5), so reading it back must give the same Scene: floats are written with
+// the shortest text that round-trips, strings are TOML-escaped.
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "scene/scene_diagnostics.hpp"
+#include "scene/scene_reader.hpp"
+
+namespace ibms {
+
+namespace {
+
+// Shortest round-trip text, always a TOML float (never read back as an integer).
+std::string toml_float(double value) {
+  if (std::isnan(value)) return "nan";
+  if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
+  std::string text = fmt::format("{}", value);
+  if (text.find_first_of(".eE") == std::string::npos) text += ".0";
+  return text;
+}
+
+std::string toml_pair(const std::array<double, 2>& pair) {
+  return fmt::format("[{}, {}]", toml_float(pair[0]), toml_float(pair[1]));
+}
+
+std::string toml_bool(bool value) { return value ? "true" : "false"; }
+
+// TOML basic string with escapes.
+std::string toml_string(const std::string& text) {
+  std::string out = "\"";
+  for (const char c : text) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (c == '"') out += "\\\"";
+    else if (c == '\\') out += "\\\\";
+    else if (c == '\n') out += "\\n";
+    else if (c == '\t') out += "\\t";
+    else if (byte < 0x20 || byte == 0x7f) out += fmt::format("\\u{:04X}", byte);
+    else out += c;
+  }
+  return out + "\"";
+}
+
+void append_body(std::string& out, const BodySpec& body) {
+  out += "\n[[bodies]]\n";
+  out += fmt::format("centre = {}\n", toml_pair(body.centre));
+  out += fmt::format("velocity = {}\n", toml_pair(body.velocity));
+  out += fmt::format("diameter = {}\n", toml_float(body.diameter));
+  out += fmt::format("n_surface_points = {}\n", body.n_surface_points);
+  out += fmt::format("density = {}\n", toml_float(body.density));
+  out += fmt::format("spring_stiffness = {}\n", toml_float(body.spring_stiffness));
+  if (body.spring_damping >= 0.0) out += fmt::format("spring_damping = {}\n", toml_float(body.spring_damping));
+  else out += "# spring_damping not set: derived from restitution_coefficient\n";
+  out += fmt::format("restitution_coefficient = {}\n", toml_float(body.restitution_coefficient));
+  out += fmt::format("cross_springs = {}\n", toml_bool(body.cross_springs));
+  out += fmt::format("mass_lumping = {}\n", toml_string(body.mass_lumping));
+  if (body.swelling.enabled) {
+    out += fmt::format("swelling = {{ onset_time = {}, rate = {}, max_diameter = {} }}\n",
+                       toml_float(body.swelling.onset_time), toml_float(body.swelling.rate),
+                       toml_float(body.swelling.max_diameter));
+  } else {
+    out += "# no swelling\n";
+  }
+}
+
+}  // namespace
+
+std::string resolved_scene_toml(const Scene& scene) {
+  std::string out = "# Resolved scene (every key, defaults filled in)";
+  if (!scene.source_file.empty()) out += " from " + one_line(scene.source_file);
+  out += "\n\n[run]\n";
+  const RunSpec& run = scene.run;
+  out += fmt::format("end_time = {}\n", toml_float(run.end_time));
+  out += fmt::format("time_step = {}\n", toml_float(run.time_step));
+  out += fmt::format("cfl = {}\n", toml_float(run.cfl));
+  out += fmt::format("max_time_step = {}\n", toml_float(run.max_time_step));
+  out += fmt::format("steady_tolerance = {}\n", toml_float(run.steady_tolerance));
+  out += fmt::format("max_steps = {}\n", run.max_steps);
+  out += fmt::format("max_cfl = {}\n", toml_float(run.max_cfl));
+
+  const DomainSpec& domain = scene.domain;
+  out += "\n[domain]\n";
+  out += fmt::format("length_x = {}\n", toml_float(domain.length_x));
+  out += fmt::format("length_y = {}\n", toml_float(domain.length_y));
+  out += fmt::format("cells_x = {}\n", domain.cells_x);
+  out += fmt::format("cells_y = {}\n", domain.cells_y);
+  out += fmt::format("periodic_x = {}\n", toml_bool(domain.periodic_x));
+  out += fmt::format("periodic_y = {}\n", toml_bool(domain.periodic_y));
+
+  out += "\n[fluid]\n";
+  out += fmt::format("density = {}\n", toml_float(scene.fluid.density));
+  out += fmt::format("kinematic_viscosity = {}\n", toml_float(scene.fluid.kinematic_viscosity));
+  out += fmt::format("gravity = {}\n", toml_pair(scene.fluid.gravity));
+
+  out += "\n[walls]\n";
+  const std::pair<const char*, const WallSpec*> walls[] = {
+      {"left", &scene.walls.left}, {"right", &scene.walls.right},
+      {"bottom", &scene.walls.bottom}, {"top", &scene.walls.top}};
+  for (const auto& [name, wall] : walls) {
+    out += fmt::format("[walls.{}]\nspeed = {}\nstop_time = {}\n", name, toml_float(wall->speed),
+                       toml_float(wall->stop_time));
+  }
+
+  const IbmSpec& ibm = scene.ibm;
+  out += "\n[ibm]\n";
+  out += fmt::format("kernel = {}\n", toml_string(ibm.kernel));
+  out += fmt::format("forcing_passes = {}\n", ibm.forcing_passes);
+  out += fmt::format("inner_fluid_inertia = {}\n", toml_string(ibm.inner_fluid_inertia));
+  out += fmt::format("sub_markers = {}\n", toml_bool(ibm.sub_markers));
+
+  for (const BodySpec& body : scene.bodies) append_body(out, body);
+
+  const ContactSpec& contact = scene.contact;
+  out += "\n[contact]\n";
+  out += fmt::format("stiffness = {}\n", toml_float(contact.stiffness));
+  out += fmt::format("restitution_coefficient = {}\n", toml_float(contact.restitution_coefficient));
+  out += fmt::format("cds_radius = {}\n", toml_float(contact.cds_radius));
+  out += fmt::format("cds_radius_fraction = {}\n", toml_float(contact.cds_radius_fraction));
+  out += fmt::format("walls = {}\n", toml_bool(contact.walls));
+
+  const OutputSpec& output = scene.output;
+  out += "\n[output]\n";
+  out += fmt::format("file = {}\n", toml_string(output.file));
+  out += fmt::format("series_every = {}\n", output.series_every);
+  out += fmt::format("snapshot_interval = {}\n", toml_float(output.snapshot_interval));
+  out += fmt::format("centreline_profiles = {}\n", toml_bool(output.centreline_profiles));
+  out += fmt::format("progress = {}\n", toml_bool(output.progress));
+  return out;
+}
+
+}  // namespace ibms

@@ -1,0 +1,232 @@
+// TOML scene -> Scene: parse, apply overrides, read each section with typed range-checked reads
+// (toml_table_reader.hpp), then the checks that involve several sections (scene_checks.hpp).
+#include "scene/scene_reader.hpp"
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <fmt/format.h>
+#include <toml++/toml.h>
+
+#include "core/errors.hpp"
+#include "scene/scene_checks.hpp"
+#include "scene/scene_diagnostics.hpp"
+#include "scene/scene_overrides.hpp"
+#include "scene/scene_schema.hpp"
+#include "scene/toml_table_reader.hpp"
+
+namespace ibms {
+
+namespace {
+
+namespace schema = scene_schema;
+
+void read_run(const TomlTableReader& table, RunSpec& run) {
+  table.reject_unknown_keys(schema::run_keys);
+  table.read_real("end_time", run.end_time, Need::required, positive);
+  table.read_real("time_step", run.time_step, Need::optional, non_negative);
+  table.read_real("cfl", run.cfl, Need::optional, {.lower = 0.0, .lower_open = true, .upper = 2.0});
+  table.read_real("max_time_step", run.max_time_step, Need::optional, positive_or_infinite);
+  table.read_real("steady_tolerance", run.steady_tolerance, Need::optional, non_negative);
+  table.read_integer("max_steps", run.max_steps, Need::optional, /*lower=*/0);
+  table.read_real("max_cfl", run.max_cfl, Need::optional, positive);
+}
+
+void read_domain(const TomlTableReader& table, DomainSpec& domain) {
+  table.reject_unknown_keys(schema::domain_keys);
+  table.read_real("length_x", domain.length_x, Need::required, positive);
+  table.read_real("length_y", domain.length_y, Need::required, positive);
+  // Four cells is the smallest grid the stencils (and a 4-point kernel) fit in.
+  table.read_integer("cells_x", domain.cells_x, Need::required, /*lower=*/4);
+  table.read_integer("cells_y", domain.cells_y, Need::required, /*lower=*/4);
+  table.read_bool("periodic_x", domain.periodic_x);
+  table.read_bool("periodic_y", domain.periodic_y);
+}
+
+void read_fluid(const TomlTableReader& table, FluidSpec& fluid) {
+  table.reject_unknown_keys(schema::fluid_keys);
+  table.read_real("density", fluid.density, Need::optional, positive);
+  table.read_real("kinematic_viscosity", fluid.kinematic_viscosity, Need::required, positive);
+  table.read_pair("gravity", fluid.gravity, Need::optional);
+}
+
+void read_walls(const TomlTableReader& table, WallsSpec& walls) {
+  table.reject_unknown_keys(schema::wall_names);
+  WallSpec* const sides[] = {&walls.left, &walls.right, &walls.bottom, &walls.top};
+  for (std::size_t s = 0; s < 4; ++s) {
+    const TomlTableReader wall = table.sub_table(schema::wall_names[s]);
+    wall.reject_unknown_keys(schema::wall_keys);
+    wall.read_real("speed", sides[s]->speed, Need::optional, any_finite);
+    wall.read_real("stop_time", sides[s]->stop_time, Need::optional, non_negative_or_infinite);
+  }
+}
+
+void read_ibm(const TomlTableReader& table, IbmSpec& ibm) {
+  table.reject_unknown_keys(schema::ibm_keys);
+  table.read_choice("kernel", ibm.kernel, schema::kernel_choices);
+  table.read_integer("forcing_passes", ibm.forcing_passes, Need::optional, /*lower=*/1);
+  table.read_choice("inner_fluid_inertia", ibm.inner_fluid_inertia,
+                    schema::inner_fluid_inertia_choices);
+  table.read_bool("sub_markers", ibm.sub_markers);
+}
+
+void read_swelling(const TomlTableReader& table, double diameter, SwellingSpec& swelling) {
+  if (!table.present()) return;  // no swelling table: the body keeps its diameter
+  table.reject_unknown_keys(schema::swelling_keys);
+  swelling.enabled = true;
+  table.read_real("onset_time", swelling.onset_time, Need::optional, non_negative);
+  table.read_real("rate", swelling.rate, Need::required, positive);
+  table.read_real("max_diameter", swelling.max_diameter, Need::required, positive);
+  if (swelling.max_diameter < diameter) {  // swelling never shrinks a body
+    table.fail("max_diameter", fmt::format("must be >= the body diameter {}, got {}", diameter,
+                                           swelling.max_diameter));
+  }
+}
+
+void read_body(const TomlTableReader& table, BodySpec& body) {
+  table.reject_unknown_keys(schema::body_keys);
+  table.read_pair("centre", body.centre, Need::required);
+  table.read_pair("velocity", body.velocity, Need::optional);
+  table.read_real("diameter", body.diameter, Need::required, positive);
+  table.read_integer("n_surface_points", body.n_surface_points, Need::required, /*lower=*/3);
+  table.read_real("density", body.density, Need::required, positive);
+  table.read_real("spring_stiffness", body.spring_stiffness, Need::required, positive);
+  table.read_real("spring_damping", body.spring_damping, Need::optional, non_negative);
+  table.read_real("restitution_coefficient", body.restitution_coefficient, Need::optional,
+                  unit_interval_open_closed);
+  table.read_bool("cross_springs", body.cross_springs);
+  table.read_choice("mass_lumping", body.mass_lumping, schema::mass_lumping_choices);
+  read_swelling(table.sub_table("swelling"), body.diameter, body.swelling);
+}
+
+void read_bodies(const toml::node* node, SceneDiagnostics& diagnostics, std::vector<BodySpec>& bodies) {
+  if (node == nullptr) return;
+  const toml::array* array = node->as_array();
+  if (array == nullptr) {
+    diagnostics.fail_at(node->source(), "bodies",
+                        fmt::format("expected an array of tables [[bodies]], got {}",
+                                    toml_type_name(node->type())));
+  }
+  for (std::size_t b = 0; b < array->size(); ++b) {
+    const toml::node& element = *array->get(b);
+    const std::string path = fmt::format("bodies.{}", b);
+    const toml::table* table = element.as_table();
+    if (table == nullptr) {
+      diagnostics.fail_at(element.source(), path,
+                          fmt::format("expected a table, got {}", toml_type_name(element.type())));
+    }
+    diagnostics.remember(path, element.source());
+    read_body(TomlTableReader(table, path, diagnostics), bodies.emplace_back());
+  }
+}
+
+// Top-level keys must be known sections, each a table ([[bodies]] an array of tables).
+void reject_unknown_sections(const toml::table& root, const SceneDiagnostics& diagnostics) {
+  for (auto&& [key, node] : root) {
+    const std::string_view name = key.str();
+    bool known = false;
+    for (const std::string_view section : schema::section_names) known = known || section == name;
+    if (name == "body_groups") {
+      diagnostics.fail_at(key.source(), "body_groups",
+                          "[[body_groups]] is not supported yet; list each body under [[bodies]]");
+    }
+    if (!known) {
+      // A key written above its section header lands at the top level: point to its section.
+      for (const std::string_view section : schema::section_names) {
+        for (const std::string_view section_key : schema::keys_of_section(section)) {
+          if (section_key == name) {
+            diagnostics.fail_at(key.source(), std::string(name),
+                                fmt::format("unknown top-level key, did you mean {}.{} (put it under [{}])?",
+                                            section, name, section));
+          }
+        }
+      }
+      diagnostics.fail_at(key.source(), std::string(name),
+                          fmt::format("unknown section{} (allowed: {})",
+                                      schema::suggestion_suffix(name, schema::section_names),
+                                      schema::join_names(schema::section_names)));
+    }
+    if (name != "bodies" && !node.is_table()) {
+      diagnostics.fail_at(node.source(), std::string(name),
+                          fmt::format("expected a table [{}], got {}", name, toml_type_name(node.type())));
+    }
+  }
+}
+
+Scene scene_from_table(const toml::table& root, SceneDiagnostics& diagnostics) {
+  reject_unknown_sections(root, diagnostics);
+  const auto section = [&](std::string_view name) {
+    const toml::node* node = root.get(name);
+    return TomlTableReader(node == nullptr ? nullptr : node->as_table(), std::string(name), diagnostics);
+  };
+  Scene scene;
+  read_run(section("run"), scene.run);
+  read_domain(section("domain"), scene.domain);
+  read_fluid(section("fluid"), scene.fluid);
+  read_walls(section("walls"), scene.walls);
+  read_ibm(section("ibm"), scene.ibm);
+  read_bodies(root.get("bodies"), diagnostics, scene.bodies);
+  TomlTableReader contact = section("contact");
+  contact.reject_unknown_keys(schema::contact_keys);
+  contact.read_real("stiffness", scene.contact.stiffness, Need::optional, non_negative);
+  contact.read_real("restitution_coefficient", scene.contact.restitution_coefficient, Need::optional,
+                    unit_interval_open_closed);
+  contact.read_real("cds_radius", scene.contact.cds_radius, Need::optional, non_negative);
+  contact.read_real("cds_radius_fraction", scene.contact.cds_radius_fraction, Need::optional,
+                    non_negative);
+  contact.read_bool("walls", scene.contact.walls);
+  TomlTableReader output = section("output");
+  output.reject_unknown_keys(schema::output_keys);
+  output.read_string("file", scene.output.file);
+  output.read_integer("series_every", scene.output.series_every, Need::optional, /*lower=*/1);
+  output.read_real("snapshot_interval", scene.output.snapshot_interval, Need::optional, non_negative);
+  output.read_bool("centreline_profiles", scene.output.centreline_profiles);
+  output.read_bool("progress", scene.output.progress);
+  return scene;
+}
+
+}  // namespace
+
+Scene read_scene_string(const std::string& toml_text, const std::string& source_name,
+                        const std::vector<std::string>& overrides) {
+  SceneDiagnostics diagnostics(source_name);
+  try {
+    toml::table root;
+    try {
+      root = toml::parse(std::string_view(toml_text), std::string_view(source_name));
+    } catch (const toml::parse_error& error) {
+      diagnostics.fail_at(error.source(), "TOML syntax", std::string(error.description()));
+    }
+    apply_scene_overrides(root, overrides, diagnostics);
+    Scene scene = scene_from_table(root, diagnostics);
+    check_scene_consistency(scene, diagnostics);
+    scene.source_file = source_name;
+    scene.resolved_text = resolved_scene_toml(scene);
+    return scene;
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::exception& error) {
+    // Fuzzed input must never crash the program: anything unexpected is still bad input.
+    diagnostics.fail_plain("scene", fmt::format("cannot be read: {}", error.what()));
+  }
+}
+
+Scene read_scene_file(const std::string& path, const std::vector<std::string>& overrides) {
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error)) {
+    throw InputError(fmt::format("{}: cannot read scene file: is a directory", one_line(path)));
+  }
+  std::ifstream file(path, std::ios::binary);
+  if (!file) {
+    throw InputError(fmt::format("{}: cannot open scene file: {}", one_line(path), std::strerror(errno)));
+  }
+  std::ostringstream text;
+  text << file.rdbuf();
+  if (file.bad()) throw InputError(fmt::format("{}: cannot read scene file", one_line(path)));
+  return read_scene_string(text.str(), path, overrides);
+}
+
+}  // namespace ibms

@@ -1,0 +1,50 @@
+// The scene schema: which sections and keys a scene may contain (DESIGN.md §4). One list serves
+// the reader (unknown-key errors), the `--set` overrides (key validation) and the suggestions
+// for misspelt keys, so the three can never disagree. Key names equal the fields in scene.hpp.
+#pragma once
+#include <span>
+#include <string>
+#include <string_view>
+
+namespace ibms::scene_schema {
+
+// Top-level sections in the order a scene lists them.
+inline constexpr std::string_view section_names[] = {"run",    "domain", "fluid",   "walls",
+                                                     "ibm",    "bodies", "contact", "output"};
+inline constexpr std::string_view run_keys[] = {"end_time",         "time_step", "cfl",
+                                                "max_time_step",    "steady_tolerance",
+                                                "max_steps",        "max_cfl"};
+inline constexpr std::string_view domain_keys[] = {"length_x", "length_y",   "cells_x",
+                                                   "cells_y",  "periodic_x", "periodic_y"};
+inline constexpr std::string_view fluid_keys[] = {"density", "kinematic_viscosity", "gravity"};
+inline constexpr std::string_view wall_names[] = {"left", "right", "bottom", "top"};
+inline constexpr std::string_view wall_keys[] = {"speed", "stop_time"};
+inline constexpr std::string_view ibm_keys[] = {"kernel", "forcing_passes", "inner_fluid_inertia",
+                                                "sub_markers"};
+inline constexpr std::string_view body_keys[] = {
+    "centre",        "velocity",       "diameter",      "n_surface_points",
+    "density",       "spring_stiffness", "spring_damping", "restitution_coefficient",
+    "cross_springs", "mass_lumping",   "swelling"};
+inline constexpr std::string_view swelling_keys[] = {"onset_time", "rate", "max_diameter"};
+inline constexpr std::string_view contact_keys[] = {"stiffness", "restitution_coefficient",
+                                                    "cds_radius", "cds_radius_fraction", "walls"};
+inline constexpr std::string_view output_keys[] = {"file", "series_every", "snapshot_interval",
+                                                   "centreline_profiles", "progress"};
+
+inline constexpr std::string_view kernel_choices[] = {"roma3", "peskin4", "cosine4", "bkp6"};
+inline constexpr std::string_view inner_fluid_inertia_choices[] = {"kempe", "none"};
+inline constexpr std::string_view mass_lumping_choices[] = {"equal", "uniform_disk"};
+
+// Keys of a plain section (run, domain, fluid, ibm, contact, output); empty for walls/bodies.
+std::span<const std::string_view> keys_of_section(std::string_view section);
+
+// The allowed name closest to `name` when it is a plausible misspelling, else "".
+std::string closest_name(std::string_view name, std::span<const std::string_view> allowed);
+
+// ", did you mean 'x'?" or "" — appended to unknown-key messages.
+std::string suggestion_suffix(std::string_view name, std::span<const std::string_view> allowed);
+
+// "a, b, c" for messages.
+std::string join_names(std::span<const std::string_view> names);
+
+}  // namespace ibms::scene_schema

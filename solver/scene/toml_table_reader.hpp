@@ -1,0 +1,83 @@
+// Typed, checked reads from one TOML table of a scene: each read rejects a wrong type or a value
+// out of range with a one-line message naming file, place, key path and the allowed range
+// (scene_diagnostics.hpp). Integers are accepted where a float is expected, never the reverse.
+#pragma once
+#include <array>
+#include <climits>
+#include <limits>
+#include <span>
+#include <string>
+#include <string_view>
+
+#include <toml++/toml.h>
+
+#include "scene/scene_diagnostics.hpp"
+
+namespace ibms {
+
+enum class Need { optional, required };
+
+// Allowed interval for a floating-point value; NaN is never allowed, infinity only if asked.
+struct Bounds {
+  double lower = -std::numeric_limits<double>::infinity();
+  bool lower_open = false;
+  double upper = std::numeric_limits<double>::infinity();
+  bool upper_open = false;
+  bool allow_infinity = false;
+
+  bool contains(double value) const;
+  std::string describe() const;  // "> 0", "in (0, 1]", "finite", ...
+};
+
+inline constexpr Bounds any_finite{};
+inline constexpr Bounds positive{.lower = 0.0, .lower_open = true};
+inline constexpr Bounds positive_or_infinite{.lower = 0.0, .lower_open = true, .allow_infinity = true};
+inline constexpr Bounds non_negative{.lower = 0.0};
+inline constexpr Bounds non_negative_or_infinite{.lower = 0.0, .allow_infinity = true};
+inline constexpr Bounds unit_interval_open_closed{.lower = 0.0, .lower_open = true, .upper = 1.0};
+
+// "integer", "floating-point number", "table", ... for messages.
+std::string_view toml_type_name(toml::node_type type);
+
+class TomlTableReader {
+ public:
+  // `table` may be null (section absent: optional keys keep defaults, required keys fail).
+  TomlTableReader(const toml::table* table, std::string path, SceneDiagnostics& diagnostics)
+      : table_(table), path_(std::move(path)), diagnostics_(&diagnostics) {}
+
+  bool present() const { return table_ != nullptr; }
+  const std::string& path() const { return path_; }
+  std::string key_path(std::string_view key) const;
+
+  // Every key of the table must be in `allowed`; otherwise an error with a close match.
+  void reject_unknown_keys(std::span<const std::string_view> allowed) const;
+
+  // Each read leaves `out` unchanged when the key is absent and optional; returns presence.
+  bool read_real(std::string_view key, double& out, Need need, const Bounds& bounds) const;
+  bool read_integer(std::string_view key, long& out, Need need, long lower,
+                    long upper = LONG_MAX) const;
+  bool read_integer(std::string_view key, int& out, Need need, long lower,
+                    long upper = INT_MAX) const;
+  bool read_bool(std::string_view key, bool& out) const;
+  bool read_string(std::string_view key, std::string& out) const;
+  bool read_choice(std::string_view key, std::string& out,
+                   std::span<const std::string_view> choices) const;
+  bool read_pair(std::string_view key, std::array<double, 2>& out, Need need) const;  // [a, b], finite
+
+  // The sub-table at `key` (absent: a reader over nothing); a non-table value is an error.
+  TomlTableReader sub_table(std::string_view key) const;
+
+  [[noreturn]] void fail(std::string_view key, const std::string& reason) const;
+
+ private:
+  // The node at `key`, or null when absent (error if required); remembers its place.
+  const toml::node* find(std::string_view key, Need need) const;
+  [[noreturn]] void fail_type(std::string_view key, const toml::node& node,
+                              std::string_view expected) const;
+
+  const toml::table* table_;
+  std::string path_;
+  SceneDiagnostics* diagnostics_;
+};
+
+}  // namespace ibms
