@@ -1,0 +1,130 @@
+// Interpolation and spreading with wall mirroring, METHOD.md §3.1, §4 (see ib_operators.hpp).
+// Per marker and direction the kernel weights are computed once (kernel_stencil) and each node
+// is mapped to the interior cell it reads/writes, with the side of the wall it mirrors across.
+#include "ibm/ib_operators.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace ibms {
+namespace {
+
+// The stencil of one marker in one direction, mapped onto interior cells.
+struct MappedStencil {
+  int n_nodes = 0;
+  std::array<int, 6> cell{};     // interior cell index each node reads/writes
+  std::array<double, 6> weight{};  // phi of the node [-]
+  std::array<int, 6> ghost_side{};  // 0: interior or periodic image; -1: beyond the low wall; +1: high
+};
+
+// Marker coordinate -> stencil over cells 0..n_cells-1 in one direction.
+MappedStencil map_stencil(KernelKind kernel, double coordinate, double origin, double spacing,
+                          int n_cells, bool periodic, const char* axis) {
+  const double length = spacing * n_cells;
+  if (!std::isfinite(coordinate))
+    throw std::invalid_argument(std::string("IB marker has a non-finite ") + axis + " coordinate");
+  if (!periodic && (coordinate < origin || coordinate > origin + length))
+    throw std::invalid_argument(std::string("IB marker outside the box in ") + axis + ": " +
+                                std::to_string(coordinate));
+  if (!periodic && n_cells < kernel_support(kernel))
+    throw std::invalid_argument(std::string("fewer cells than the kernel support in ") + axis);
+  // Cell centre m sits at xi = m.
+  const double xi = (coordinate - origin) / spacing - 0.5;
+  const KernelStencil stencil = kernel_stencil(kernel, xi);
+  MappedStencil mapped;
+  mapped.n_nodes = stencil.n_nodes;
+  for (int k = 0; k < stencil.n_nodes; ++k) {
+    int node = stencil.first + k;
+    int side = 0;
+    if (periodic) {
+      node = ((node % n_cells) + n_cells) % n_cells;
+    } else if (node < 0) {
+      node = -1 - node;  // ghost -1-m mirrors interior m
+      side = -1;
+    } else if (node >= n_cells) {
+      node = 2*n_cells - 1 - node;  // ghost n+m mirrors interior n-1-m
+      side = +1;
+    }
+    mapped.cell[k] = node;
+    mapped.weight[k] = stencil.weight[k];
+    mapped.ghost_side[k] = side;
+  }
+  return mapped;
+}
+
+void check_field(const Grid& grid, const CellField& field, const char* name) {
+  if (field.nx() != grid.nx || field.ny() != grid.ny)
+    throw std::invalid_argument(std::string(name) + " does not match the grid");
+}
+
+}  // namespace
+
+void interpolate(const Grid& grid, KernelKind kernel, const WallVelocities& walls,
+                 const CellField& velocity_x, const CellField& velocity_y,
+                 const std::vector<std::array<double, 2>>& markers,
+                 std::vector<std::array<double, 2>>& velocity_out) {
+  check_field(grid, velocity_x, "interpolate: velocity_x");
+  check_field(grid, velocity_y, "interpolate: velocity_y");
+  velocity_out.assign(markers.size(), {0.0, 0.0});
+  for (std::size_t l = 0; l < markers.size(); ++l) {
+    const MappedStencil sx = map_stencil(kernel, markers[l][0], grid.origin_x, grid.dx(), grid.nx,
+                                         grid.periodic_x, "x");
+    const MappedStencil sy = map_stencil(kernel, markers[l][1], grid.origin_y, grid.dy(), grid.ny,
+                                         grid.periodic_y, "y");
+    double u_sum = 0.0, v_sum = 0.0;
+    for (int ky = 0; ky < sy.n_nodes; ++ky) {
+      const int j = sy.cell[ky];
+      // Tangential (u) wall speed of the bottom/top wall this row mirrors across.
+      const double u_wall = sy.ghost_side[ky] < 0 ? walls.bottom : walls.top;
+      for (int kx = 0; kx < sx.n_nodes; ++kx) {
+        const int i = sx.cell[kx];
+        const double w = sx.weight[kx] * sy.weight[ky];  // delta_h dx dy
+        const double v_wall = sx.ghost_side[kx] < 0 ? walls.left : walls.right;
+        const bool ghost_x = sx.ghost_side[kx] != 0, ghost_y = sy.ghost_side[ky] != 0;
+        // Both ghost rules have linear part -u_mirror; reflect in x, then in y:
+        // value = a_x + s_x (a_y + s_y u_mirror).
+        const double s_x = ghost_x ? -1.0 : 1.0, s_y = ghost_y ? -1.0 : 1.0;
+        // u: normal to the x-walls (a_x = 0), tangential to the y-walls (a_y = 2 u_wall).
+        const double u_ghost = s_x * ((ghost_y ? 2.0*u_wall : 0.0) + s_y * velocity_x(i, j));
+        // v: tangential to the x-walls (a_x = 2 v_wall), normal to the y-walls (a_y = 0).
+        const double v_ghost = (ghost_x ? 2.0*v_wall : 0.0) + s_x * s_y * velocity_y(i, j);
+        u_sum += w * u_ghost;
+        v_sum += w * v_ghost;
+      }
+    }
+    velocity_out[l] = {u_sum, v_sum};
+  }
+}
+
+void spread(const Grid& grid, KernelKind kernel, const std::vector<std::array<double, 2>>& markers,
+            const std::vector<std::array<double, 2>>& marker_force,
+            const std::vector<double>& marker_volume, CellField& force_x, CellField& force_y) {
+  check_field(grid, force_x, "spread: force_x");
+  check_field(grid, force_y, "spread: force_y");
+  if (marker_force.size() != markers.size() || marker_volume.size() != markers.size())
+    throw std::invalid_argument("spread: markers, forces and volumes differ in length");
+  const double inverse_cell_area = 1.0 / (grid.dx() * grid.dy());
+  for (std::size_t l = 0; l < markers.size(); ++l) {
+    const MappedStencil sx = map_stencil(kernel, markers[l][0], grid.origin_x, grid.dx(), grid.nx,
+                                         grid.periodic_x, "x");
+    const MappedStencil sy = map_stencil(kernel, markers[l][1], grid.origin_y, grid.dy(), grid.ny,
+                                         grid.periodic_y, "y");
+    // f += F_l phi phi / (dx dy) dV_l; a ghost-cell share goes to its mirror with the
+    // transpose of the linear ghost rule, (-1) per reflection (affine part has no transpose).
+    const double fx = marker_force[l][0] * marker_volume[l] * inverse_cell_area;
+    const double fy = marker_force[l][1] * marker_volume[l] * inverse_cell_area;
+    for (int ky = 0; ky < sy.n_nodes; ++ky) {
+      const int j = sy.cell[ky];
+      for (int kx = 0; kx < sx.n_nodes; ++kx) {
+        const int i = sx.cell[kx];
+        const double sign = (sx.ghost_side[kx] != 0) == (sy.ghost_side[ky] != 0) ? 1.0 : -1.0;
+        const double w = sign * sx.weight[kx] * sy.weight[ky];
+        force_x(i, j) += w * fx;
+        force_y(i, j) += w * fy;
+      }
+    }
+  }
+}
+
+}  // namespace ibms

@@ -1,0 +1,39 @@
+// Interpolation J (grid -> markers) and spreading S = J* (markers -> grid) of the direct-forcing
+// IB method, METHOD.md §3.1 steps 2 and 4 and §4 ("Weights, adjointness, conservation"):
+//   U_l = sum_x u(x) delta_h(x - X_l) dx dy,   f(x) += sum_l F_l delta_h(x - X_l) dV_l,
+// on cell-centred (collocated) velocity components; only interior cell values are read/written.
+// Walls: stencil cells beyond a wall are mirrored onto interior cells with the no-slip ghost
+// rule u_g = 2 u_wall - u_mirror (tangential) and u_g = -u_mirror (normal), reflecting in x
+// then y at corners; spreading adds the transpose of the linear part, so with zero wall
+// speeds <S F, u>_{dx dy} = <F, J u>_{dV} to round-off. Periodic directions wrap.
+#pragma once
+#include <array>
+#include <vector>
+
+#include "core/fields.hpp"
+#include "core/grid.hpp"
+#include "ibm/delta_kernel.hpp"
+
+namespace ibms {
+
+// Tangential wall speeds [length/time]: v on the left/right walls, u on the bottom/top walls.
+// Ignored in periodic directions.
+struct WallVelocities {
+  double left = 0, right = 0, bottom = 0, top = 0;
+};
+
+// U_out[l] = (J u, J v)(X_l) [length/time]. Markers must lie inside the box in wall directions
+// (anywhere in periodic ones), otherwise std::invalid_argument.
+void interpolate(const Grid& grid, KernelKind kernel, const WallVelocities& walls,
+                 const CellField& velocity_x, const CellField& velocity_y,
+                 const std::vector<std::array<double, 2>>& markers,
+                 std::vector<std::array<double, 2>>& velocity_out);
+
+// force_x/y(cell) += sum_l F_l delta_h(x_cell - X_l) dV_l  (adds; does not clear).
+// F [force per unit mass, i.e. length/time^2], dV [length^2 per unit depth],
+// f [length/time^2]. Same marker checks as interpolate.
+void spread(const Grid& grid, KernelKind kernel, const std::vector<std::array<double, 2>>& markers,
+            const std::vector<std::array<double, 2>>& marker_force,
+            const std::vector<double>& marker_volume, CellField& force_x, CellField& force_y);
+
+}  // namespace ibms
