@@ -1,0 +1,84 @@
+// Blow-up checks, adaptive time step and centre-line profiles (DESIGN.md §3 stage 6).
+#include "sim/diagnostics.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/errors.hpp"
+
+namespace ibms {
+
+VelocityScan scan_velocity(const Grid& grid, const FluidState& fluid) {
+  VelocityScan scan;
+  const double inv_dx = 1.0 / grid.dx(), inv_dy = 1.0 / grid.dy();
+  for (int j = 0; j < grid.ny; ++j)
+    for (int i = 0; i < grid.nx; ++i) {
+      const double rate = std::abs(fluid.velocity_x(i, j)) * inv_dx + std::abs(fluid.velocity_y(i, j)) * inv_dy;
+      if (!std::isfinite(rate) || !std::isfinite(fluid.pressure(i, j))) {
+        return {HUGE_VAL, i, j, false};
+      }
+      if (rate > scan.max_rate) scan = {rate, i, j, true};
+    }
+  return scan;
+}
+
+void check_for_blow_up(const Simulation& sim, double dt, const VelocityScan& scan) {
+  const Grid& g = sim.grid();
+  const FluidState& f = sim.fluid();
+  const std::string place = fmt::format("cell ({}, {}) at x = {:.6g}, y = {:.6g}", scan.i, scan.j,
+                                        g.x_centre(scan.i), g.y_centre(scan.j));
+  if (!scan.finite)
+    throw BlowUpError(fmt::format("blow-up at step {}, t = {:.6g}: non-finite velocity or pressure in {}",
+                                  f.step, f.time, place));
+  const double cfl = dt * scan.max_rate;
+  if (cfl > sim.scene().run.max_cfl)
+    throw BlowUpError(fmt::format(
+        "blow-up at step {}, t = {:.6g}: CFL number {:.3g} exceeds run.max_cfl = {:.3g} in {} "
+        "(|u| = {:.3g}, |v| = {:.3g}); reduce run.time_step or run.cfl",
+        f.step, f.time, cfl, sim.scene().run.max_cfl, place, f.velocity_x(scan.i, scan.j),
+        f.velocity_y(scan.i, scan.j)));
+}
+
+double next_time_step(const Simulation& sim, const VelocityScan& scan) {
+  const RunSpec& run = sim.scene().run;
+  const double time_left = run.end_time - sim.fluid().time;
+  if (run.time_step > 0.0) return std::min(run.time_step, time_left);
+  // Moving walls set the velocity scale of a fluid at rest (lid-driven start).
+  const WallsSpec& w = sim.scene().walls;
+  const double wall_speed = std::max({std::abs(w.left.speed), std::abs(w.right.speed),
+                                      std::abs(w.bottom.speed), std::abs(w.top.speed)});
+  const double rate = std::max(scan.max_rate, wall_speed / std::min(sim.grid().dx(), sim.grid().dy()));
+  const double dt = rate > 0.0 ? run.cfl / rate : run.max_time_step;
+  return std::min({dt, run.max_time_step, time_left});
+}
+
+CentrelineProfiles centreline_profiles(const Simulation& sim) {
+  const Grid& g = sim.grid();
+  const FluidState& f = sim.fluid();
+  const double t = f.time;
+  const FluidBoundaries bc = boundaries_from_scene(sim.scene());
+  CentrelineProfiles p;
+  // Vertical line x = mid: cells i0, i0 + 1 around it, weight w on i0 + 1.
+  const double x_mid = g.origin_x + 0.5 * g.length_x, y_mid = g.origin_y + 0.5 * g.length_y;
+  const double si = (x_mid - g.origin_x) / g.dx() - 0.5, sj = (y_mid - g.origin_y) / g.dy() - 0.5;
+  const int i0 = std::clamp(static_cast<int>(std::floor(si)), 0, g.nx - 2);
+  const int j0 = std::clamp(static_cast<int>(std::floor(sj)), 0, g.ny - 2);
+  const double wi = si - i0, wj = sj - j0;
+  if (!g.periodic_y) { p.y.push_back(g.origin_y); p.u.push_back(bc.bottom.at(t)); }
+  for (int j = 0; j < g.ny; ++j) {
+    p.y.push_back(g.y_centre(j));
+    p.u.push_back((1 - wi) * f.velocity_x(i0, j) + wi * f.velocity_x(i0 + 1, j));
+  }
+  if (!g.periodic_y) { p.y.push_back(g.origin_y + g.length_y); p.u.push_back(bc.top.at(t)); }
+  if (!g.periodic_x) { p.x.push_back(g.origin_x); p.v.push_back(bc.left.at(t)); }
+  for (int i = 0; i < g.nx; ++i) {
+    p.x.push_back(g.x_centre(i));
+    p.v.push_back((1 - wj) * f.velocity_y(i, j0) + wj * f.velocity_y(i, j0 + 1));
+  }
+  if (!g.periodic_x) { p.x.push_back(g.origin_x + g.length_x); p.v.push_back(bc.right.at(t)); }
+  return p;
+}
+
+}  // namespace ibms

@@ -1,0 +1,159 @@
+// Run loop, output and progress (DESIGN.md §3 stage 6, §5).
+#include "sim/run.hpp"
+
+#include <fmt/format.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+#include "core/errors.hpp"
+#include "fluid/boundary_conditions.hpp"
+#include "fluid/operators.hpp"
+#include "io/csv_table.hpp"
+#include "io/output_file.hpp"
+#include "sim/diagnostics.hpp"
+
+#ifndef IBMS_VERSION
+#define IBMS_VERSION "unknown"
+#endif
+#ifndef IBMS_GIT_COMMIT
+#define IBMS_GIT_COMMIT "unknown"
+#endif
+
+namespace ibms {
+namespace {
+
+void write_series(OutputFile& out, const Simulation& sim, double dt, double cfl, double steady_residual) {
+  const FluidState& f = sim.fluid();
+  const ProjectionStats& ps = sim.last_projection;
+  out.append_series({
+      {"time", "time", f.time},
+      {"dt", "time", dt},
+      {"step", "-", static_cast<double>(f.step)},
+      {"kinetic_energy", "mass length^2/time^2 per unit depth",
+       sim.fluid_density() * const_cast<Simulation&>(sim).fluid_solver().kinetic_energy(f)},
+      {"max_divergence", "1/time", ps.max_divergence_after},
+      {"max_divergence_before_projection", "1/time", ps.max_divergence_before},
+      {"poisson_removed_mean", "1/time^2", ps.removed_mean},
+      {"cfl", "-", cfl},
+      {"steady_residual", "1/time", steady_residual},
+  });
+}
+
+void write_snapshot(OutputFile& out, Simulation& sim) {
+  const Grid& g = sim.grid();
+  FluidState& f = sim.fluid();
+  const std::size_t n = g.n_cells();
+  std::vector<double> u(n), v(n), p(n), w(n);
+  fill_velocity_ghosts(g, boundaries_from_scene(sim.scene()), f.time, f.velocity_x, f.velocity_y);
+  CellField vort(g);
+  vorticity(g, f.velocity_x, f.velocity_y, vort);
+  f.velocity_x.copy_interior_to(u.data());
+  f.velocity_y.copy_interior_to(v.data());
+  f.pressure.copy_interior_to(p.data());
+  for (double& x : p) x *= sim.fluid_density();  // kinematic -> dynamic pressure
+  vort.copy_interior_to(w.data());
+  const std::vector<std::size_t> dims{static_cast<std::size_t>(g.ny), static_cast<std::size_t>(g.nx)};
+  out.write_snapshot(f.step, f.time,
+                     {{"u", "length/time", dims, u.data()},
+                      {"v", "length/time", dims, v.data()},
+                      {"p", "mass/(length time^2)", dims, p.data()},
+                      {"vorticity", "1/time", dims, w.data()}});
+}
+
+void write_profiles(const std::string& h5_path, const Simulation& sim) {
+  const CentrelineProfiles prof = centreline_profiles(sim);
+  const std::filesystem::path base = std::filesystem::path(h5_path).replace_extension("");
+  const std::string t = fmt::format("t = {:.10g}, step {}", sim.fluid().time, sim.fluid().step);
+  write_csv(base.string() + "_centreline_u.csv",
+            {"ibms centre-line profile: u along the vertical line x = mid-width", t,
+             "source scene: " + sim.scene().source_file},
+            {"y [length]", "u [length/time]"}, {prof.y, prof.u});
+  write_csv(base.string() + "_centreline_v.csv",
+            {"ibms centre-line profile: v along the horizontal line y = mid-height", t,
+             "source scene: " + sim.scene().source_file},
+            {"x [length]", "v [length/time]"}, {prof.x, prof.v});
+}
+
+std::string format_seconds(double s) {
+  if (!std::isfinite(s)) return "?";
+  if (s < 120) return fmt::format("{:.0f} s", s);
+  if (s < 7200) return fmt::format("{:.1f} min", s / 60);
+  return fmt::format("{:.1f} h", s / 3600);
+}
+
+}  // namespace
+
+RunSummary run_simulation(Simulation& sim, const RunOptions& options) {
+  using clock = std::chrono::steady_clock;
+  const Scene& scene = sim.scene();
+  const RunSpec& run = scene.run;
+  RunSummary summary;
+  summary.output_path = options.output_path.empty() ? scene.output.file : options.output_path;
+  OutputFile out(summary.output_path, scene.resolved_text, sim.grid(), IBMS_VERSION, IBMS_GIT_COMMIT);
+
+  const auto start = clock::now();
+  auto last_progress = start;
+  const bool progress = scene.output.progress && !options.quiet;
+  double next_snapshot = scene.output.snapshot_interval > 0 ? sim.fluid().time : HUGE_VAL;
+  FluidState& f = sim.fluid();
+  VelocityScan scan = scan_velocity(sim.grid(), f);
+  summary.stop_reason = "end_time";
+  const double time_tolerance = 1e-12 * std::max(1.0, std::abs(run.end_time));
+  try {
+    if (!(next_time_step(sim, scan) > 0.0) && f.time < run.end_time)
+      throw InputError(scene.source_file + ": run.max_time_step: the adaptive time step has no velocity scale "
+                       "(fluid at rest, no moving wall): set run.max_time_step or run.time_step");
+    while (f.time < run.end_time - time_tolerance) {
+      if (run.max_steps > 0 && f.step >= run.max_steps) { summary.stop_reason = "max_steps"; break; }
+      if (f.time >= next_snapshot - time_tolerance) {
+        auto t = sim.timers().time(Stage::output);
+        write_snapshot(out, sim);
+        next_snapshot += scene.output.snapshot_interval;
+      }
+      const double dt = next_time_step(sim, scan);
+      advance_one_step(sim, dt);
+      {
+        auto t = sim.timers().time(Stage::diagnostics);
+        scan = scan_velocity(sim.grid(), f);
+        check_for_blow_up(sim, dt, scan);
+      }
+      const ProjectionStats& ps = sim.last_projection;
+      const double steady_residual = ps.max_velocity > 0 ? ps.max_velocity_change / (dt * ps.max_velocity) : 0.0;
+      if (f.step % scene.output.series_every == 0) {
+        auto t = sim.timers().time(Stage::output);
+        write_series(out, sim, dt, dt * scan.max_rate, steady_residual);
+      }
+      if (run.steady_tolerance > 0 && steady_residual < run.steady_tolerance) {
+        summary.reached_steady_state = true;
+        summary.stop_reason = "steady state";
+        break;
+      }
+      const auto now = clock::now();
+      if (progress && now - last_progress > std::chrono::seconds(5)) {
+        last_progress = now;
+        const double elapsed = std::chrono::duration<double>(now - start).count();
+        const double rate = f.step / elapsed, t_rate = f.time / elapsed;
+        std::fprintf(stderr, "step %ld  t = %.6g / %.6g  dt = %.3g  %.0f steps/s  ETA %s%s\n", f.step, f.time,
+                     run.end_time, dt, rate, format_seconds((run.end_time - f.time) / t_rate).c_str(),
+                     run.steady_tolerance > 0 ? fmt::format("  steady residual {:.2e}", steady_residual).c_str() : "");
+      }
+    }
+  } catch (const BlowUpError&) {
+    out.flush();  // everything written so far stays readable
+    throw;
+  }
+  {
+    auto t = sim.timers().time(Stage::output);
+    write_snapshot(out, sim);
+    write_profiles(summary.output_path, sim);
+  }
+  summary.steps = f.step;
+  summary.time = f.time;
+  summary.wall_seconds = std::chrono::duration<double>(clock::now() - start).count();
+  return summary;
+}
+
+}  // namespace ibms

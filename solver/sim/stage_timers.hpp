@@ -1,0 +1,40 @@
+// Wall-clock time per pipeline stage (fluid predictor, IB forcing, projection, bodies, output),
+// so benchmarks and the report can show that a scene pays only for the stages it runs.
+#pragma once
+#include <array>
+#include <chrono>
+#include <string_view>
+
+namespace ibms {
+
+enum class Stage { schedules, predictor, ib_forcing, projection, bodies, diagnostics, output, count };
+
+inline constexpr std::array<std::string_view, static_cast<int>(Stage::count)> stage_names{
+    "schedules", "predictor", "ib_forcing", "projection", "bodies", "diagnostics", "output"};
+
+class StageTimers {
+ public:
+  class Scope {
+   public:
+    Scope(StageTimers& timers, Stage stage)
+        : timers_(timers), stage_(stage), start_(std::chrono::steady_clock::now()) {}
+    ~Scope() {
+      timers_.seconds_[static_cast<int>(stage_)] +=
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+      timers_.calls_[static_cast<int>(stage_)] += 1;
+    }
+   private:
+    StageTimers& timers_;
+    Stage stage_;
+    std::chrono::steady_clock::time_point start_;
+  };
+  Scope time(Stage stage) { return Scope(*this, stage); }
+  double seconds(Stage stage) const { return seconds_[static_cast<int>(stage)]; }
+  long calls(Stage stage) const { return calls_[static_cast<int>(stage)]; }
+
+ private:
+  std::array<double, static_cast<int>(Stage::count)> seconds_{};
+  std::array<long, static_cast<int>(Stage::count)> calls_{};
+};
+
+}  // namespace ibms
