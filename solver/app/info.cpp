@@ -7,7 +7,9 @@
 #include <cmath>
 
 #include "scene/scene_reader.hpp"
+#include "sim/diagnostics.hpp"
 #include "sim/simulation.hpp"
+#include "solid/stable_substep.hpp"
 
 namespace ibms {
 
@@ -40,6 +42,30 @@ std::string describe_scene(const Scene& scene) {
   text += "  viscous number nu dt / h^2 = " +
           (std::isfinite(dt) ? fmt::format("{:.3g}", scene.fluid.kinematic_viscosity * dt / (h * h)) : "?") +
           " (Crank-Nicolson: no limit)\n";
+  if (sim.has_bodies()) {
+    // METHOD.md §7 step 7 and §5.3: marker travel and the solid sub-step.
+    double body_speed = 0.0;
+    for (const BodySpec& b : scene.bodies) body_speed = std::max(body_speed, std::hypot(b.velocity[0], b.velocity[1]));
+    text += fmt::format("marker travel: dt <= {:.2g} h / max|U_body| = {:.4g} / max|U_body|", max_marker_travel_cells,
+                        max_marker_travel_cells * h);
+    if (body_speed > 0) text += fmt::format(" = {:.4g} at the initial speed {:.4g}", max_marker_travel_cells * h / body_speed, body_speed);
+    text += "\n";
+    double dt_sub = HUGE_VAL;
+    for (std::size_t b = 0; b < sim.bodies().size(); ++b) {
+      const MassSpringBody& body = sim.bodies()[b];
+      const SpectralBounds bounds = spectral_bounds(body);
+      const double dt_b = stable_substep(body, /*safety=*/0.5);
+      dt_sub = std::min(dt_sub, dt_b);
+      text += fmt::format("body {}: {} points, {} springs, mass {:.4g} [mass/length], omega_max <= {:.4g} [1/time], "
+                          "damping rate <= {:.4g} [1/time], spring sub-step {:.4g}\n", b, body.n_points(),
+                          body.springs.size(), body.total_mass(), std::sqrt(bounds.omega_squared_max),
+                          bounds.damping_rate_max, dt_b);
+    }
+    text += fmt::format("spring sub-step (safety 0.5): {:.4g}", dt_sub);
+    if (std::isfinite(dt) && dt > 0)
+      text += fmt::format("; sub-steps per fluid step at dt = {:.4g}: {}", dt, substeps_for(sim.bodies(), dt));
+    text += "\n";
+  }
   if (std::isfinite(dt) && dt > 0) {
     const double steps = std::ceil(scene.run.end_time / dt);
     text += fmt::format("estimated steps to end_time {:.6g}: {:.0f}{}\n", scene.run.end_time, steps,

@@ -24,7 +24,40 @@ VelocityScan scan_velocity(const Grid& grid, const FluidState& fluid) {
   return scan;
 }
 
+double max_body_point_speed(const Simulation& sim) {
+  double speed = 0.0;
+  for (const MassSpringBody& body : sim.bodies())
+    for (const auto& u : body.velocity) speed = std::max(speed, std::hypot(u[0], u[1]));
+  return speed;
+}
+
+namespace {
+
+// Non-finite body points, or points outside the box in a wall direction (the IB stencil and the
+// inner-fluid region need them inside).
+void check_bodies_for_blow_up(const Simulation& sim) {
+  const Grid& g = sim.grid();
+  const FluidState& f = sim.fluid();
+  for (std::size_t b = 0; b < sim.bodies().size(); ++b) {
+    const MassSpringBody& body = sim.bodies()[b];
+    for (int p = 0; p < body.n_points(); ++p) {
+      const auto& x = body.position[p];
+      const auto& u = body.velocity[p];
+      const bool finite = std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(u[0]) && std::isfinite(u[1]);
+      const bool inside_x = g.periodic_x || (x[0] > g.origin_x && x[0] < g.origin_x + g.length_x);
+      const bool inside_y = g.periodic_y || (x[1] > g.origin_y && x[1] < g.origin_y + g.length_y);
+      if (finite && inside_x && inside_y) continue;
+      throw BlowUpError(fmt::format(
+          "blow-up at step {}, t = {:.6g}: body {} point {} {} at x = {:.6g}, y = {:.6g} (u = {:.3g}, v = {:.3g})",
+          f.step, f.time, b, p, finite ? "left the box" : "is non-finite", x[0], x[1], u[0], u[1]));
+    }
+  }
+}
+
+}  // namespace
+
 void check_for_blow_up(const Simulation& sim, double dt, const VelocityScan& scan) {
+  if (sim.has_bodies()) check_bodies_for_blow_up(sim);
   const Grid& g = sim.grid();
   const FluidState& f = sim.fluid();
   const std::string place = fmt::format("cell ({}, {}) at x = {:.6g}, y = {:.6g}", scan.i, scan.j,
@@ -50,7 +83,11 @@ double next_time_step(const Simulation& sim, const VelocityScan& scan) {
   const double wall_speed = std::max({std::abs(w.left.speed), std::abs(w.right.speed),
                                       std::abs(w.bottom.speed), std::abs(w.top.speed)});
   const double rate = std::max(scan.max_rate, wall_speed / std::min(sim.grid().dx(), sim.grid().dy()));
-  const double dt = rate > 0.0 ? run.cfl / rate : run.max_time_step;
+  double dt = rate > 0.0 ? run.cfl / rate : run.max_time_step;
+  if (sim.has_bodies()) {
+    const double body_speed = max_body_point_speed(sim);
+    if (body_speed > 0.0) dt = std::min(dt, max_marker_travel_cells * sim.grid().dx() / body_speed);
+  }
   return std::min({dt, run.max_time_step, time_left});
 }
 

@@ -17,13 +17,21 @@ struct VelocityScan {
 };
 VelocityScan scan_velocity(const Grid& grid, const FluidState& fluid);
 
+// Largest speed of any body point [length/time] (0 without bodies).
+double max_body_point_speed(const Simulation& sim);
+
 // Throws BlowUpError naming step, time, quantity and place if the state is non-finite or the
-// CFL number dt * max_rate exceeds run.max_cfl.
+// CFL number dt * max_rate exceeds run.max_cfl; with bodies also if a body point is non-finite
+// or has left the box in a wall direction (naming body, point and position).
 void check_for_blow_up(const Simulation& sim, double dt, const VelocityScan& scan);
 
-// The time step for the next step: fixed, or cfl / max rate (with moving walls counted), capped
-// by run.max_time_step and by the time left to run.end_time.
+// The time step for the next step: fixed, or cfl / max rate (with moving walls counted) and,
+// with bodies, marker travel <= 0.5 h per step (METHOD.md §7 step 7), capped by
+// run.max_time_step and by the time left to run.end_time.
 double next_time_step(const Simulation& sim, const VelocityScan& scan);
+
+// Marker travel limit of METHOD.md §7 step 7: a marker moves at most this fraction of h per step.
+inline constexpr double max_marker_travel_cells = 0.5;
 
 // Velocity along the vertical centre line (u against y) and the horizontal one (v against x),
 // wall values included at both ends; linear interpolation between the two central cells.

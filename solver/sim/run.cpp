@@ -14,6 +14,7 @@
 #include "io/csv_table.hpp"
 #include "io/output_file.hpp"
 #include "sim/diagnostics.hpp"
+#include "solid/spring_forces.hpp"
 
 #ifndef IBMS_VERSION
 #define IBMS_VERSION "unknown"
@@ -25,10 +26,37 @@
 namespace ibms {
 namespace {
 
-void write_series(OutputFile& out, const Simulation& sim, double dt, double cfl, double steady_residual) {
+std::vector<SeriesValue> body_series(const Simulation& sim);
+
+// Body series kept in memory for <stem>_bodies.csv (one column per series, time first).
+struct BodyTable {
+  std::vector<std::string> headers;
+  std::vector<std::vector<double>> columns;
+  void append(double time, const std::vector<SeriesValue>& values) {
+    if (headers.empty()) {
+      headers.push_back("time [time]");
+      for (const SeriesValue& v : values) headers.push_back(v.name + " [" + v.units + "]");
+      columns.resize(headers.size());
+    }
+    columns[0].push_back(time);
+    for (std::size_t k = 0; k < values.size(); ++k) columns[k + 1].push_back(values[k].value);
+  }
+};
+
+void write_body_table(const std::string& h5_path, const Simulation& sim, const BodyTable& table) {
+  if (table.headers.empty()) return;
+  const std::filesystem::path base = std::filesystem::path(h5_path).replace_extension("");
+  write_csv(base.string() + "_bodies.csv",
+            {"ibms body series: per body centroid of the rim polygon, centre-of-mass velocity, diameter D(t),",
+             "rim-polygon area, spring energy, sub-steps of the step; source scene: " + sim.scene().source_file},
+            table.headers, table.columns);
+}
+
+void write_series(OutputFile& out, const Simulation& sim, double dt, double cfl, double steady_residual,
+                  BodyTable& bodies) {
   const FluidState& f = sim.fluid();
   const ProjectionStats& ps = sim.last_projection;
-  out.append_series({
+  std::vector<SeriesValue> row({
       {"time", "time", f.time},
       {"dt", "time", dt},
       {"step", "-", static_cast<double>(f.step)},
@@ -40,6 +68,36 @@ void write_series(OutputFile& out, const Simulation& sim, double dt, double cfl,
       {"cfl", "-", cfl},
       {"steady_residual", "1/time", steady_residual},
   });
+  const std::vector<SeriesValue> body_row = body_series(sim);
+  if (!body_row.empty()) bodies.append(f.time, body_row);
+  for (const SeriesValue& v : body_row) row.push_back(v);
+  out.append_series(row);
+}
+
+std::string body_name(std::size_t b) { return fmt::format("body_{:03d}", b); }
+
+// Per-body series: centroid of the rim polygon, centre-of-mass velocity, diameter (the swelling
+// law's D), rim-polygon area, elastic energy and the sub-steps of the latest step.
+std::vector<SeriesValue> body_series(const Simulation& sim) {
+  std::vector<SeriesValue> row;
+  for (std::size_t b = 0; b < sim.bodies().size(); ++b) {
+    const MassSpringBody& body = sim.bodies()[b];
+    const std::string name = body_name(b);
+    const auto c = centroid(body);
+    std::array<double, 2> momentum{0.0, 0.0};
+    for (int p = 0; p < body.n_points(); ++p)
+      for (int d = 0; d < 2; ++d) momentum[d] += body.mass[p] * body.velocity[p][d];
+    const double mass = body.total_mass();
+    row.push_back({name + "/centroid_x", "length", c[0]});
+    row.push_back({name + "/centroid_y", "length", c[1]});
+    row.push_back({name + "/velocity_x", "length/time", momentum[0] / mass});
+    row.push_back({name + "/velocity_y", "length/time", momentum[1] / mass});
+    row.push_back({name + "/diameter", "length", body.diameter});
+    row.push_back({name + "/area", "length^2 per unit depth", polygon_area(body)});
+    row.push_back({name + "/spring_energy", "energy per unit depth", spring_energy(body, body.length_scale())});
+    row.push_back({name + "/n_substeps", "-", static_cast<double>(sim.last_n_substeps)});
+  }
+  return row;
 }
 
 void write_snapshot(OutputFile& out, Simulation& sim) {
@@ -56,11 +114,24 @@ void write_snapshot(OutputFile& out, Simulation& sim) {
   for (double& x : p) x *= sim.fluid_density();  // kinematic -> dynamic pressure
   vort.copy_interior_to(w.data());
   const std::vector<std::size_t> dims{static_cast<std::size_t>(g.ny), static_cast<std::size_t>(g.nx)};
-  out.write_snapshot(f.step, f.time,
-                     {{"u", "length/time", dims, u.data()},
-                      {"v", "length/time", dims, v.data()},
-                      {"p", "mass/(length time^2)", dims, p.data()},
-                      {"vorticity", "1/time", dims, w.data()}});
+  std::vector<SnapshotArray> arrays{{"u", "length/time", dims, u.data()},
+                                    {"v", "length/time", dims, v.data()},
+                                    {"p", "mass/(length time^2)", dims, p.data()},
+                                    {"vorticity", "1/time", dims, w.data()}};
+  // Surface (rim) points of every body: body_NNN/x, y, u, v.
+  std::vector<std::vector<double>> body_data;
+  body_data.reserve(4 * sim.bodies().size());
+  for (std::size_t b = 0; b < sim.bodies().size(); ++b) {
+    const MassSpringBody& body = sim.bodies()[b];
+    const std::size_t n_rim = static_cast<std::size_t>(body.n_surface);
+    for (int q = 0; q < 4; ++q) {
+      std::vector<double>& values = body_data.emplace_back(n_rim);
+      for (std::size_t l = 0; l < n_rim; ++l) values[l] = q < 2 ? body.position[l][q] : body.velocity[l][q - 2];
+      static const char* names[4] = {"x", "y", "u", "v"};
+      arrays.push_back({body_name(b) + "/" + names[q], q < 2 ? "length" : "length/time", {n_rim}, values.data()});
+    }
+  }
+  out.write_snapshot(f.step, f.time, arrays);
 }
 
 void write_profiles(const std::string& h5_path, const Simulation& sim) {
@@ -99,6 +170,7 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& options) {
   const bool progress = scene.output.progress && !options.quiet;
   double next_snapshot = scene.output.snapshot_interval > 0 ? sim.fluid().time : HUGE_VAL;
   FluidState& f = sim.fluid();
+  BodyTable body_table;
   VelocityScan scan = scan_velocity(sim.grid(), f);
   summary.stop_reason = "end_time";
   const double time_tolerance = 1e-12 * std::max(1.0, std::abs(run.end_time));
@@ -124,7 +196,7 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& options) {
       const double steady_residual = ps.max_velocity > 0 ? ps.max_velocity_change / (dt * ps.max_velocity) : 0.0;
       if (f.step % scene.output.series_every == 0) {
         auto t = sim.timers().time(Stage::output);
-        write_series(out, sim, dt, dt * scan.max_rate, steady_residual);
+        write_series(out, sim, dt, dt * scan.max_rate, steady_residual, body_table);
       }
       if (run.steady_tolerance > 0 && steady_residual < run.steady_tolerance) {
         summary.reached_steady_state = true;
@@ -142,13 +214,15 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& options) {
       }
     }
   } catch (const BlowUpError&) {
+    write_body_table(summary.output_path, sim, body_table);
     out.flush();  // everything written so far stays readable
     throw;
   }
   {
     auto t = sim.timers().time(Stage::output);
     write_snapshot(out, sim);
-    write_profiles(summary.output_path, sim);
+    if (scene.output.centreline_profiles) write_profiles(summary.output_path, sim);
+    write_body_table(summary.output_path, sim, body_table);
   }
   summary.steps = f.step;
   summary.time = f.time;

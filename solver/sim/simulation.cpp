@@ -1,6 +1,10 @@
 // Building a Simulation from a Scene: grid, wall motions, fluid solver, initial state.
 #include "sim/simulation.hpp"
 
+#include <cmath>
+
+#include "core/errors.hpp"
+
 namespace ibms {
 
 Grid grid_from_scene(const Scene& scene) {
@@ -24,8 +28,24 @@ Simulation::Simulation(const Scene& scene)
     : scene_(scene),
       grid_(grid_from_scene(scene)),
       fluid_solver_(grid_, scene.fluid.kinematic_viscosity, boundaries_from_scene(scene)),
-      fluid_(fluid_solver_.make_state()) {
+      fluid_(fluid_solver_.make_state()),
+      kernel_(kernel_from_name(scene.ibm.kernel)) {
+  inner_fluid_inertia = inner_fluid_inertia_from_name(scene.ibm.inner_fluid_inertia);
   fluid_solver_.initialise_faces(fluid_);  // fluid at rest: faces 0, projection is a no-op
+  if (!has_bodies()) return;
+  // dV_l = h s_l (METHOD.md §3.6) and the kernel assume square cells.
+  if (std::abs(grid_.dx() - grid_.dy()) > 1e-12 * grid_.dx())
+    throw InputError(scene.source_file + ": domain: bodies need square cells (dx = dy), got dx = " +
+                     std::to_string(grid_.dx()) + ", dy = " + std::to_string(grid_.dy()));
+  for (const BodySpec& spec : scene.bodies) {
+    bodies_.push_back(build_wheel(spec));
+    swelling_.emplace_back(spec.swelling, spec.diameter);
+    coupling_.emplace_back(bodies_.back());
+  }
+  apply_swelling_schedules(swelling_, fluid_.time, bodies_);
+  // Variant K: I_T at t = 0 (region X^0, velocity u^0), the first "previous" value.
+  if (inner_fluid_inertia == &kempe_inner_fluid_inertia)
+    sample_inner_fluid_momentum(grid_, fluid_, bodies_, coupling_);
 }
 
 std::vector<std::string> Simulation::stage_names() const {

@@ -1,14 +1,22 @@
 // The Simulation: everything one run holds (grid, fluid solver and state, stage list, timers),
 // built once from a validated Scene. sim/ is the only place where modules meet (DESIGN.md §2).
-// Schemes and stages are chosen here, when the Simulation is built, never inside the step.
+// Schemes and stages are chosen here, when the Simulation is built, never inside the step:
+// the IB kernel, the inner-fluid inertia variant (METHOD.md §1.7) and the contact hook.
+// Bodies, their swelling schedules and all coupling work arrays are allocated here, once.
 #pragma once
 #include <string>
 #include <vector>
 
 #include "core/grid.hpp"
 #include "fluid/fluid_solver.hpp"
+#include "ibm/delta_kernel.hpp"
 #include "scene/scene.hpp"
+#include "sim/body_coupling.hpp"
+#include "sim/body_update.hpp"
+#include "sim/inner_fluid_inertia.hpp"
 #include "sim/stage_timers.hpp"
+#include "solid/mass_spring_body.hpp"
+#include "solid/swelling_schedule.hpp"
 
 namespace ibms {
 
@@ -28,7 +36,21 @@ class Simulation {
   // Names of the pipeline stages this scene runs, in order (`ibms info` prints them).
   std::vector<std::string> stage_names() const;
 
+  // Bodies (METHOD.md §1), in scene order, and what couples them to the fluid.
+  std::vector<MassSpringBody>& bodies() { return bodies_; }
+  const std::vector<MassSpringBody>& bodies() const { return bodies_; }
+  const std::vector<SwellingSchedule>& swelling() const { return swelling_; }
+  std::vector<BodyCoupling>& coupling() { return coupling_; }
+  const std::vector<BodyCoupling>& coupling() const { return coupling_; }
+  std::vector<std::vector<Vec2>>& contact_work() { return contact_work_; }
+  KernelKind kernel() const { return kernel_; }
+  const FluidBoundaries& boundaries() const { return fluid_solver_.boundaries(); }
+
+  InnerFluidInertia inner_fluid_inertia = nullptr;  // variant K or A, from ibm.inner_fluid_inertia
+  ContactForces contact_forces = no_contact_forces; // the contact seam (solver/contact wires in here)
+
   ProjectionStats last_projection;  // diagnostics of the latest step
+  int last_n_substeps = 0;          // solid sub-steps of the latest step [-]
 
  private:
   Scene scene_;
@@ -36,6 +58,11 @@ class Simulation {
   FluidSolver fluid_solver_;
   FluidState fluid_;
   StageTimers timers_;
+  KernelKind kernel_;
+  std::vector<MassSpringBody> bodies_;
+  std::vector<SwellingSchedule> swelling_;
+  std::vector<BodyCoupling> coupling_;
+  std::vector<std::vector<Vec2>> contact_work_;
 };
 
 // Builders shared with `ibms info` and tests.

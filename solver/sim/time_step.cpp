@@ -1,4 +1,5 @@
 // One step n -> n+1 of METHOD.md §7. Read top to bottom; each line is one substep.
+// Scenes without bodies run only the predictor and the projection.
 #include "sim/simulation.hpp"
 
 namespace ibms {
@@ -6,13 +7,34 @@ namespace ibms {
 void advance_one_step(Simulation& sim, double dt) {
   FluidState& fluid = sim.fluid();
   StageTimers& timers = sim.timers();
+  const double time_n = fluid.time;
+  if (sim.has_bodies()) {
+    auto t = timers.time(Stage::schedules);
+    apply_swelling_schedules(sim.swelling(), time_n, sim.bodies());  // D(t^n), M at constant density, §1.8
+    prepare_markers(sim.bodies(), sim.swelling(), time_n, sim.grid(), sim.coupling());  // X^n, dV_l, U_target, §1.8, §3.6
+  }
   {
     auto t = timers.time(Stage::predictor);
     sim.fluid_solver().predict_momentum(fluid, dt, nullptr, nullptr);  // u~, METHOD.md §2.3 step 1
   }
+  if (sim.has_bodies()) {
+    auto t = timers.time(Stage::ib_forcing);
+    apply_direct_forcing(sim.grid(), sim.kernel(), wall_velocities_at(sim.boundaries(), time_n), dt,
+                         sim.scene().ibm.forcing_passes, sim.coupling(), sim.fluid_solver().velocity_star_x(),
+                         sim.fluid_solver().velocity_star_y());  // F = (U_target - J u~)/dt, u~ += dt S F, §3.5
+  }
   {
     auto t = timers.time(Stage::projection);
     sim.last_projection = sim.fluid_solver().project_smac(fluid, dt);  // u^{n+1}, U_f^{n+1}, p^{n+1}
+  }
+  if (sim.has_bodies()) {
+    auto t = timers.time(Stage::bodies);
+    compute_fluid_reaction(sim.fluid_density(), sim.coupling());  // F_f,l = -rho_f sum F_l dV_l, §1.6
+    sim.inner_fluid_inertia(sim.grid(), sim.fluid_density(), fluid, sim.bodies(), dt,
+                            sim.coupling());  // F_int = rho_f dI/dt (variant K) or 0 (A), §1.7
+    sim.last_n_substeps = advance_bodies({time_n, dt, sim.fluid_density(), sim.scene().fluid.gravity},
+                                         sim.swelling(), sim.contact_forces, sim.coupling(), sim.contact_work(),
+                                         sim.bodies());  // n_sub symplectic Euler sub-steps, §5.3
   }
 }
 

@@ -1,0 +1,26 @@
+// Exact overlap areas of a triangle with the cells of the grid, for the inner-fluid momentum
+// I_T = sum_ij alpha_T(i,j) u_ij h^2 of METHOD.md §1.7 (variant K, step 1): each cell square is
+// clipped by the triangle (Sutherland-Hodgman; the triangle is convex) and the clipped polygon's
+// shoelace area is its overlap. Summed over the triangles of a fan, the overlaps add up to the
+// polygon's area to round-off, so the inner-fluid momentum is split between triangles without
+// loss. Periodic directions wrap cell indices; in wall directions only cells inside the box count.
+#pragma once
+#include <array>
+#include <vector>
+
+#include "core/grid.hpp"
+
+namespace ibms {
+
+struct CellOverlap {
+  int i = 0, j = 0;     // cell [-]
+  double area = 0.0;    // overlap area [length^2 per unit depth]
+};
+
+// Appends the cells overlapped by triangle (a, b, c) (either orientation) with their overlap
+// areas to `overlaps` (not cleared); cells with zero overlap are skipped.
+void add_triangle_cell_overlaps(const Grid& grid, const std::array<double, 2>& a,
+                                const std::array<double, 2>& b, const std::array<double, 2>& c,
+                                std::vector<CellOverlap>& overlaps);
+
+}  // namespace ibms

@@ -1,0 +1,62 @@
+// The immersed-boundary coupling of the mass-spring bodies with the fluid (METHOD.md §1.6, §1.8,
+// §3.5, §3.6, §7 steps 2 and 5): the markers X^n (rim points), their volume weights dV_l = h s_l,
+// the forcing target U_target_l = U_l - (s'/s)(X_l - X_c) (swelling part removed, §1.8), the
+// multi-direct forcing passes on the predicted velocity, and the fluid reaction
+// F_f,l = -rho_f (sum_m F_l^(m)) dV_l on the rim points (the centre point gets none).
+// Work arrays live in BodyCoupling, one per body, sized when the Simulation is built.
+#pragma once
+#include <array>
+#include <vector>
+
+#include "core/fields.hpp"
+#include "core/grid.hpp"
+#include "fluid/boundary_conditions.hpp"
+#include "ibm/delta_kernel.hpp"
+#include "ibm/ib_operators.hpp"
+#include "ibm/triangle_cell_overlap.hpp"
+#include "solid/mass_spring_body.hpp"
+#include "solid/swelling_schedule.hpp"
+
+namespace ibms {
+
+using Vec2 = std::array<double, 2>;
+
+struct BodyCoupling {
+  // IB markers (the rim points), per rim point l.
+  std::vector<Vec2> marker;                // X_l^n [length]
+  std::vector<double> marker_volume;       // dV_l = h s_l [length^2 per unit depth]
+  std::vector<Vec2> target_velocity;       // U_target_l [length/time]
+  std::vector<Vec2> interpolated_velocity; // U~_l = J u~ [length/time]
+  std::vector<Vec2> pass_force;            // F_l^(m) of one pass [length/time^2]
+  std::vector<Vec2> pass_increment;        // dt F_l^(m), what one pass spreads [length/time]
+  std::vector<Vec2> forcing_sum;           // sum_m F_l^(m) [length/time^2]
+  // Per body point (rim + centre): forces frozen over the fluid step [force/length].
+  std::vector<Vec2> fluid_force;           // F_f,l (§1.6)
+  std::vector<Vec2> inner_fluid_force;     // F_int distributed to the points (§1.7)
+  std::vector<Vec2> external_force;        // work: F_f + F_int + F_e + F_c per sub-step
+  // Variant K (§1.7): fan triangles T_l = (c, l, l+1), their cells at X^n, and
+  // I_T = sum alpha_T u h^2 from the previous step (region X^{n-1}, velocity u^n).
+  std::vector<std::vector<CellOverlap>> triangle_cells;
+  std::vector<Vec2> triangle_momentum;     // [length^3/time per unit depth]
+
+  explicit BodyCoupling(const MassSpringBody& body);
+};
+
+// Tangential wall speeds at `time` seen by interpolation (ghost rule of the fluid walls).
+WallVelocities wall_velocities_at(const FluidBoundaries& boundaries, double time);
+
+// X^n, dV_l and U_target_l of every body (METHOD.md §1.8, §3.6) at `time` = t^n.
+void prepare_markers(const std::vector<MassSpringBody>& bodies,
+                     const std::vector<SwellingSchedule>& swelling, double time, const Grid& grid,
+                     std::vector<BodyCoupling>& coupling);
+
+// n_passes direct-forcing passes on (velocity_star_x, velocity_star_y): interpolate u~ at X^n,
+// F = (U_target - U~)/dt, spread dt F with dV_l, u~ += dt f; accumulates F in forcing_sum.
+void apply_direct_forcing(const Grid& grid, KernelKind kernel, const WallVelocities& walls, double dt,
+                          int n_passes, std::vector<BodyCoupling>& coupling, CellField& velocity_star_x,
+                          CellField& velocity_star_y);
+
+// F_f,l = -rho_f forcing_sum_l dV_l on the rim points, 0 on the centre (METHOD.md §1.6).
+void compute_fluid_reaction(double fluid_density, std::vector<BodyCoupling>& coupling);
+
+}  // namespace ibms
