@@ -1,0 +1,21 @@
+// One solid sub-step of all bodies with contacts, METHOD.md §5.3: at x^k, U^k evaluate the DEM
+// contact forces of every body (before any body moves, so pair forces stay equal and opposite),
+// add the frozen external forces (fluid reaction, internal-fluid term, gravity [force/length]),
+// then advance each body by symplectic Euler with its springs and dashpots re-evaluated (§5.1).
+// The caller chooses dt_sub <= min(stable_substep(body), contact_substep(model, bodies)).
+#pragma once
+#include <array>
+#include <vector>
+
+#include "contact/contact_forces.hpp"
+#include "contact/contact_model.hpp"
+#include "solid/mass_spring_body.hpp"
+
+namespace ibms {
+
+// frozen_force_per_body: one vector of n_points per body, held over the fluid step.
+ContactStats advance_bodies_substep(const ContactModel& model, const WallBox& box, double dt_sub,
+                                    const std::vector<std::vector<std::array<double, 2>>>& frozen_force_per_body,
+                                    std::vector<MassSpringBody>& bodies);
+
+}  // namespace ibms

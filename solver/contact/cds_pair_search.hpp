@@ -1,0 +1,47 @@
+// Pair search between contact-detection spheres (CDS) of different bodies, METHOD.md §1.9: a cell
+// list with bins of at least 2 r_max (so touching spheres sit in the same or adjacent bins) and a
+// brute-force O(n^2) reference. Spheres touch when |x_j - x_i| < r_i + r_j; periodic directions
+// of the box use the minimum image. Positions [length]; no grid, plain data.
+#pragma once
+#include <array>
+#include <vector>
+
+#include "contact/contact_model.hpp"
+#include "solid/mass_spring_body.hpp"
+
+namespace ibms {
+
+// All CDS of a scene, flattened: sphere s sits on surface point point[s] of body body[s].
+struct ContactSpheres {
+  std::vector<std::array<double, 2>> centre;  // [length]
+  std::vector<double> radius;                 // [length]
+  std::vector<int> body;
+  std::vector<int> point;
+
+  int n_spheres() const { return static_cast<int>(centre.size()); }
+};
+
+ContactSpheres gather_contact_spheres(const ContactModel& model,
+                                      const std::vector<MassSpringBody>& bodies);
+
+// Two touching spheres of different bodies, first < second (indices into ContactSpheres).
+struct SpherePair {
+  int first = 0, second = 0;
+  bool operator==(const SpherePair& other) const {
+    return first == other.first && second == other.second;
+  }
+};
+
+struct PairSearchResult {
+  std::vector<SpherePair> pairs;  // sorted by (first, second)
+  long n_pair_checks = 0;         // candidate pairs whose distance was examined [-]
+};
+
+PairSearchResult find_touching_pairs_cell_list(const ContactSpheres& spheres, const WallBox& box);
+PairSearchResult find_touching_pairs_brute_force(const ContactSpheres& spheres, const WallBox& box);
+
+// x_to - x_from, minimum image in the periodic directions of the box [length].
+std::array<double, 2> separation(const std::array<double, 2>& from, const std::array<double, 2>& to,
+                                 const WallBox& box);
+
+}  // namespace ibms

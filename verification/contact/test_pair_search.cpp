@@ -1,0 +1,83 @@
+// The CDS pair search (METHOD.md §1.9): the cell list (bins >= 2 r_max) finds exactly the pairs of
+// the brute-force O(n^2) search, with and without periodic directions, and a scene with one body
+// does no pair search at all (only wall contacts). CDS radii follow the current diameter.
+#define BOOST_TEST_MODULE pair_search
+#include <boost/test/unit_test.hpp>
+
+#include <ostream>
+#include <random>
+
+#include "contact/cds_pair_search.hpp"
+#include "contact/contact_forces.hpp"
+#include "wheel_collision.hpp"
+
+namespace ibms {
+std::ostream& operator<<(std::ostream& out, const SpherePair& pair) {  // for Boost.Test messages
+  return out << "(" << pair.first << ", " << pair.second << ")";
+}
+}  // namespace ibms
+
+using namespace ibms;
+using namespace ibms::test;
+
+namespace {
+
+// 3000 CDS on 40 bodies at random in the unit box, radii 0.002 to 0.02 (seeded).
+ContactSpheres random_spheres() {
+  std::mt19937 generator(/*seed=*/4);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::uniform_int_distribution<int> body(0, 39);
+  ContactSpheres spheres;
+  for (int s = 0; s < 3000; ++s) {
+    spheres.centre.push_back({unit(generator), unit(generator)});
+    spheres.radius.push_back(0.002 + 0.018 * unit(generator));
+    spheres.body.push_back(body(generator));
+    spheres.point.push_back(s);
+  }
+  return spheres;
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(cell_list_finds_exactly_the_brute_force_pairs) {
+  const ContactSpheres spheres = random_spheres();
+  BOOST_TEST_MESSAGE("periodic  pairs_cell_list  pairs_brute_force  checks_cell_list  checks_brute_force");
+  for (bool periodic : {false, true}) {
+    const WallBox box{{0.0, 0.0}, {1.0, 1.0}, {periodic, periodic}};
+    const PairSearchResult cells = find_touching_pairs_cell_list(spheres, box);
+    const PairSearchResult brute = find_touching_pairs_brute_force(spheres, box);
+    BOOST_TEST_MESSAGE(periodic << "  " << cells.pairs.size() << "  " << brute.pairs.size() << "  "
+                                << cells.n_pair_checks << "  " << brute.n_pair_checks);
+    BOOST_TEST(brute.pairs.size() > 100u);  // a configuration with plenty of contacts
+    BOOST_TEST(cells.pairs == brute.pairs, boost::test_tools::per_element());  // exact equality
+    BOOST_TEST(cells.n_pair_checks < brute.n_pair_checks / 10);  // the point of the cell list
+  }
+}
+
+BOOST_AUTO_TEST_CASE(single_body_scene_does_no_pair_search) {
+  // One wheel whose rim point 0 overlaps the right wall x = 1: a wall contact, no pair checks;
+  // a second wheel far away makes the search run.
+  const WallBox box{{-1.0, -1.0}, {2.0, 2.0}, {false, false}};
+  const ContactModel model = make_contact_model(0.5, 0.05);
+  std::vector<MassSpringBody> bodies = {make_wheel({0.47, 0.0}, {0.0, 0.0}, 10.0)};
+  std::vector<std::vector<std::array<double, 2>>> force(1, std::vector<std::array<double, 2>>(21));
+  const ContactStats one = add_contact_forces(model, bodies, box, force);
+  bodies.push_back(make_wheel({-0.4, 0.0}, {0.0, 0.0}, 10.0));
+  force.emplace_back(21, std::array<double, 2>{0.0, 0.0});
+  const ContactStats two = add_contact_forces(model, bodies, box, force);
+  BOOST_TEST_MESSAGE("bodies  pair_checks  wall_contacts");
+  BOOST_TEST_MESSAGE("1  " << one.n_pair_checks << "  " << one.n_wall_contacts);
+  BOOST_TEST_MESSAGE("2  " << two.n_pair_checks << "  " << two.n_wall_contacts);
+  BOOST_TEST(one.n_pair_checks == 0);
+  BOOST_TEST(one.n_wall_contacts == 1);
+  BOOST_TEST(two.n_pair_checks > 0);
+}
+
+BOOST_AUTO_TEST_CASE(cds_radius_follows_current_diameter) {
+  ContactModel model = make_contact_model(1.0, 0.167);
+  MassSpringBody body = make_wheel({0.0, 0.0}, {0.0, 0.0}, 10.0);
+  body.diameter = 1.5 * body.diameter0;  // swollen
+  BOOST_TEST(model.cds_radius_of(body) == 0.167 * 1.5, boost::test_tools::tolerance(1e-15));
+  model.cds_radius = 0.04;  // an absolute radius wins over the fraction
+  BOOST_TEST(model.cds_radius_of(body) == 0.04);
+}

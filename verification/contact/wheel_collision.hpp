@@ -1,0 +1,115 @@
+// Shared set-up of the contact tests: stiff wheels (D = 1, rho_s = 1, N_l = 20, equal masses) with
+// no fluid, driven only by their springs and the DEM contacts, advanced with the production
+// sub-step min(stable_substep, contact_substep). Restitution is measured on the centre-of-mass
+// velocities along x: e = -(V_b - V_a)_after / (V_b - V_a)_before (a wall has V_b = 0).
+#pragma once
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <vector>
+
+#include "contact/body_substep.hpp"
+#include "contact/contact_model.hpp"
+#include "solid/mass_spring_body.hpp"
+#include "solid/stable_substep.hpp"
+
+namespace ibms::test {
+
+constexpr double contact_stiffness = 1e4;  // k_Dn [force/length^2]: delta_max ~ 0.6 % of D at v0 = 1
+constexpr double impact_speed = 1.0;       // relative approach speed v0 [length/time]
+
+// A wheel centred at `centre` moving with `velocity`, turned by `angle` about its centre (rim
+// point 0 starts at `angle`), springs `stiffness_ratio` times stiffer than the contact, undamped.
+inline MassSpringBody make_wheel(std::array<double, 2> centre, std::array<double, 2> velocity,
+                                 double stiffness_ratio, double angle = 0.0) {
+  BodySpec spec;
+  spec.centre = centre;
+  spec.velocity = velocity;
+  spec.diameter = 1.0;
+  spec.n_surface_points = 20;
+  spec.density = 1.0;
+  spec.spring_stiffness = stiffness_ratio * contact_stiffness;
+  spec.spring_damping = 0.0;  // no internal dashpots: all dissipation is the contact's
+  MassSpringBody body = build_wheel(spec);
+  for (auto& x : body.position) {
+    const double dx = x[0] - centre[0], dy = x[1] - centre[1];
+    x = {centre[0] + std::cos(angle)*dx - std::sin(angle)*dy,
+         centre[1] + std::sin(angle)*dx + std::cos(angle)*dy};
+  }
+  return body;
+}
+
+inline ContactModel make_contact_model(double restitution, double cds_radius_fraction = 0.05) {
+  ContactSpec spec;
+  spec.stiffness = contact_stiffness;
+  spec.restitution_coefficient = restitution;
+  spec.cds_radius_fraction = cds_radius_fraction;
+  return ContactModel(spec);
+}
+
+inline std::array<double, 2> centre_of_mass_velocity(const MassSpringBody& body) {
+  std::array<double, 2> momentum{0.0, 0.0};
+  for (int p = 0; p < body.n_points(); ++p)
+    for (int c = 0; c < 2; ++c) momentum[c] += body.mass[p] * body.velocity[p][c];
+  return {momentum[0] / body.total_mass(), momentum[1] / body.total_mass()};
+}
+
+struct CollisionRecord {
+  std::vector<std::array<double, 2>> velocity_before, velocity_after;  // centre of mass, per body
+  double max_overlap = 0.0;       // [length]
+  int max_active = 0;             // most CDS pairs (or wall contacts) active at once [-]
+  double contact_time = 0.0;      // [time]
+  double substep = 0.0;           // [time]
+  double max_momentum_drift = 0.0;  // max |P(t) - P(0)| during the run, P = total momentum
+};
+
+// Runs until the bodies have been apart for as long as they touched (so a re-contact would show).
+inline CollisionRecord collide(const ContactModel& model, const WallBox& box,
+                               std::vector<MassSpringBody> bodies) {
+  CollisionRecord record;
+  record.substep = contact_substep(model, bodies);
+  for (const auto& body : bodies) record.substep = std::min(record.substep, stable_substep(body));
+  const auto total_momentum = [&] {
+    std::array<double, 2> p{0.0, 0.0};
+    for (const auto& body : bodies)
+      for (int k = 0; k < body.n_points(); ++k)
+        for (int c = 0; c < 2; ++c) p[c] += body.mass[k] * body.velocity[k][c];
+    return p;
+  };
+  const std::array<double, 2> momentum0 = total_momentum();
+  for (const auto& body : bodies) record.velocity_before.push_back(centre_of_mass_velocity(body));
+  const std::vector<std::vector<std::array<double, 2>>> no_external = [&] {
+    std::vector<std::vector<std::array<double, 2>>> zero;
+    for (const auto& body : bodies) zero.emplace_back(body.n_points(), std::array<double, 2>{0.0, 0.0});
+    return zero;
+  }();
+  double time_apart = 0.0;
+  for (long step = 0; step < 100000000; ++step) {
+    const ContactStats stats = advance_bodies_substep(model, box, record.substep, no_external, bodies);
+    const int n_active = stats.n_active_pairs + stats.n_wall_contacts;
+    record.max_active = std::max(record.max_active, n_active);
+    record.max_overlap = std::max(record.max_overlap, stats.max_overlap);
+    const std::array<double, 2> momentum = total_momentum();
+    record.max_momentum_drift = std::max(record.max_momentum_drift,
+        std::hypot(momentum[0] - momentum0[0], momentum[1] - momentum0[1]));
+    if (n_active > 0) {
+      record.contact_time += record.substep;
+      time_apart = 0.0;
+    } else if (record.contact_time > 0.0) {
+      time_apart += record.substep;
+      if (time_apart > record.contact_time) break;
+    }
+  }
+  for (const auto& body : bodies) record.velocity_after.push_back(centre_of_mass_velocity(body));
+  return record;
+}
+
+// e along x from the first body's centre-of-mass velocity and the second's (or a wall at rest).
+inline double measured_restitution(const CollisionRecord& record) {
+  const auto relative = [](const std::vector<std::array<double, 2>>& v) {
+    return v.size() > 1 ? v[1][0] - v[0][0] : -v[0][0];
+  };
+  return -relative(record.velocity_after) / relative(record.velocity_before);
+}
+
+}  // namespace ibms::test
