@@ -32,12 +32,14 @@ SmallPolygon clip_left_of(const SmallPolygon& in, const std::array<double, 2>& p
   return out;
 }
 
+// Shoelace relative to the first vertex (coordinates O(h), not O(box), keep the round-off small).
 double shoelace_area(const SmallPolygon& poly) {
   double twice = 0.0;
-  for (int k = 0; k < poly.n; ++k) {
-    const auto& a = poly.vertex[k];
-    const auto& b = poly.vertex[(k + 1) % poly.n];
-    twice += a[0]*b[1] - b[0]*a[1];
+  const auto& o = poly.vertex[0];
+  for (int k = 1; k + 1 < poly.n; ++k) {
+    const double ax = poly.vertex[k][0] - o[0], ay = poly.vertex[k][1] - o[1];
+    const double bx = poly.vertex[k + 1][0] - o[0], by = poly.vertex[k + 1][1] - o[1];
+    twice += ax*by - bx*ay;
   }
   return 0.5 * twice;
 }

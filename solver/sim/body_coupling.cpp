@@ -1,6 +1,8 @@
 // Markers, direct forcing and fluid reaction of the bodies (see body_coupling.hpp).
 #include "sim/body_coupling.hpp"
 
+#include <cmath>
+
 #include "ibm/direct_forcing.hpp"
 #include "ibm/marker_weights.hpp"
 
@@ -18,8 +20,8 @@ WallVelocities wall_velocities_at(const FluidBoundaries& boundaries, double time
 }
 
 void prepare_markers(const std::vector<MassSpringBody>& bodies,
-                     const std::vector<SwellingSchedule>& swelling, double time, const Grid& grid,
-                     std::vector<BodyCoupling>& coupling) {
+                     const std::vector<SwellingSchedule>& swelling, double time, double previous_dt,
+                     const Grid& grid, std::vector<BodyCoupling>& coupling) {
   const double h = grid.dx();  // square cells (checked when the Simulation is built)
   for (std::size_t b = 0; b < bodies.size(); ++b) {
     const MassSpringBody& body = bodies[b];
@@ -28,7 +30,12 @@ void prepare_markers(const std::vector<MassSpringBody>& bodies,
     c.marker_volume = marker_weights(c.marker, h);  // dV_l = h s_l, METHOD.md §3.6
     // METHOD.md §1.8: the fluid is forced towards the marker velocity minus the swelling
     // part (s'/s)(X_l - X_c), so a swelling body absorbs fluid instead of pushing it away.
-    const double growth = swelling[b].relative_growth_rate(time);  // s'/s [1/time]
+    // s'/s [1/time] over the step that produced U^n: the marker velocities at t^n are the end of
+    // the previous step's sub-steps, so the dilation they carry is that step's, ln(s^n/s^{n-1})/dt^{n-1}
+    // (the instantaneous rate at t^n would mismatch U^n by the full D'/2 at the schedule's kinks).
+    const double growth = previous_dt > 0.0
+        ? std::log(swelling[b].length_scale(time) / swelling[b].length_scale(time - previous_dt)) / previous_dt
+        : swelling[b].relative_growth_rate(time);
     const Vec2 x_c = centre_of_mass(body);
     for (int l = 0; l < body.n_surface; ++l)
       for (int d = 0; d < 2; ++d)

@@ -45,10 +45,11 @@ struct BodyCoupling {
 // Tangential wall speeds at `time` seen by interpolation (ghost rule of the fluid walls).
 WallVelocities wall_velocities_at(const FluidBoundaries& boundaries, double time);
 
-// X^n, dV_l and U_target_l of every body (METHOD.md §1.8, §3.6) at `time` = t^n.
+// X^n, dV_l and U_target_l of every body (METHOD.md §1.8, §3.6) at `time` = t^n; previous_dt is
+// dt^{n-1} (0 on the first step), over which the swelling part of U^n is measured.
 void prepare_markers(const std::vector<MassSpringBody>& bodies,
-                     const std::vector<SwellingSchedule>& swelling, double time, const Grid& grid,
-                     std::vector<BodyCoupling>& coupling);
+                     const std::vector<SwellingSchedule>& swelling, double time, double previous_dt,
+                     const Grid& grid, std::vector<BodyCoupling>& coupling);
 
 // n_passes direct-forcing passes on (velocity_star_x, velocity_star_y): interpolate u~ at X^n,
 // F = (U_target - U~)/dt, spread dt F with dV_l, u~ += dt f; accumulates F in forcing_sum.
