@@ -1,0 +1,12 @@
+#!/usr/bin/env bash
+# Set-up and tests in one command: installs missing Debian packages, configures and builds ibms
+# (Release), then runs every ctest except the `slow` label (unit, convergence, validation).
+# Usage: scripts/run-tests.sh [build-dir]     (default: build)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+build=${1:-build}
+scripts/install-deps.sh
+cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release
+cmake --build "$build" -j "$(nproc)"
+cd "$build"
+ctest --output-on-failure -j "$(nproc)" -LE slow
