@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -80,6 +81,11 @@ std::string body_name(std::size_t b) { return fmt::format("body_{:03d}", b); }
 // law's D), rim-polygon area, elastic energy and the sub-steps of the latest step.
 std::vector<SeriesValue> body_series(const Simulation& sim) {
   std::vector<SeriesValue> row;
+  if (!sim.has_bodies()) return row;
+  // Coupling diagnostics of the step: largest fluid velocity component and the Poisson removed
+  // mean (compatibility, METHOD.md §1.8), with each body's largest forcing target speed.
+  row.push_back({"max_fluid_velocity_component", "length/time", sim.last_projection.max_velocity});
+  row.push_back({"poisson_removed_mean_bodies", "1/time^2", sim.last_projection.removed_mean});
   for (std::size_t b = 0; b < sim.bodies().size(); ++b) {
     const MassSpringBody& body = sim.bodies()[b];
     const std::string name = body_name(b);
@@ -96,6 +102,9 @@ std::vector<SeriesValue> body_series(const Simulation& sim) {
     row.push_back({name + "/area", "length^2 per unit depth", polygon_area(body)});
     row.push_back({name + "/spring_energy", "energy per unit depth", spring_energy(body, body.length_scale())});
     row.push_back({name + "/n_substeps", "-", static_cast<double>(sim.last_n_substeps)});
+    double max_target = 0.0;
+    for (const auto& u : sim.coupling()[b].target_velocity) max_target = std::max(max_target, std::hypot(u[0], u[1]));
+    row.push_back({name + "/max_target_speed", "length/time", max_target});
   }
   return row;
 }

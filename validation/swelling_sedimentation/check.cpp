@@ -1,0 +1,103 @@
+// Check of the swelling sedimentation case (README.md; issue 3 §5): reads the body series of the
+// swelling run and of the non-swelling runs with D = 0.25 and D = 0.30, prints the three metrics,
+// writes the three diameter and velocity histories on the swelling run's times to one CSV, and
+// exits non-zero if a check fails:
+//   1. t <= onset: max |v_sw - v_025| / max |v_025| <= 1 %;
+//   2. after swelling ends and before wall effects (the D = 0.30 disk's gap to the bottom still
+//      > 4 D_max): |v_sw - v_030| / |v_030| at the end of that window <= 3 %;
+//   3. bottom arrival (gap centre_y - D/2 <= 0.015 cm): t_030 < t_sw < t_025.
+// usage: swelling_sedimentation_check <onset> <swelling_end> <base_swelling> <base_d025> <base_d030> <out.csv>
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "../settling_disk/body_series.hpp"
+
+using namespace ibms::validation;
+
+namespace {
+
+double interpolate_at(const std::vector<double>& t, const std::vector<double>& v, double time) {
+  if (time <= t.front()) return v.front();
+  if (time >= t.back()) return NAN;
+  const std::size_t k = std::upper_bound(t.begin(), t.end(), time) - t.begin();
+  const double w = (time - t[k - 1]) / (t[k] - t[k - 1]);
+  return (1 - w)*v[k - 1] + w*v[k];
+}
+
+// Time the gap between the disk and the bottom wall falls to `gap` (linear interpolation).
+double arrival_time(const SeriesTable& s, double gap) {
+  const std::vector<double>& y = s.at("body_000/centroid_y");
+  const std::vector<double>& d = s.at("body_000/diameter");
+  std::vector<double> g(y.size());
+  for (std::size_t k = 0; k < y.size(); ++k) g[k] = y[k] - 0.5*d[k];
+  return first_crossing_below(s.at("time"), g, gap);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc != 7) {
+    std::fprintf(stderr, "usage: %s <onset> <swelling_end> <base_swelling> <base_d025> <base_d030> <out.csv>\n", argv[0]);
+    return 2;
+  }
+  try {
+    const double onset = std::atof(argv[1]), swelling_end = std::atof(argv[2]);
+    const SeriesTable sw = read_series_csv(std::string(argv[3]) + "_bodies.csv");
+    const SeriesTable d25 = read_series_csv(std::string(argv[4]) + "_bodies.csv");
+    const SeriesTable d30 = read_series_csv(std::string(argv[5]) + "_bodies.csv");
+    const auto& t = sw.at("time");
+    const auto& v = sw.at("body_000/velocity_y");
+    std::vector<double> v25(t.size()), v30(t.size());
+    for (std::size_t k = 0; k < t.size(); ++k) {
+      v25[k] = interpolate_at(d25.at("time"), d25.at("body_000/velocity_y"), t[k]);
+      v30[k] = interpolate_at(d30.at("time"), d30.at("body_000/velocity_y"), t[k]);
+    }
+    // 1. Before the onset the swelling run is the D = 0.25 run.
+    double diff_before = 0.0, scale_before = 0.0;
+    for (std::size_t k = 0; k < t.size() && t[k] <= onset; ++k) {
+      diff_before = std::max(diff_before, std::abs(v[k] - v25[k]));
+      scale_before = std::max(scale_before, std::abs(v25[k]));
+    }
+    const double metric_before = diff_before / scale_before;
+    // 2. Approach to the D = 0.30 run: the window ends when the D = 0.30 disk's gap reaches 4 D_max.
+    const double wall_effect_time = arrival_time(d30, 4 * 0.30);
+    double metric_after = NAN, time_after = NAN;
+    std::printf("  t [s]    v_sw      v_025     v_030   (v_sw - v_030)/v_030\n");
+    for (std::size_t k = 0; k < t.size(); ++k) {
+      if (t[k] < swelling_end || t[k] > wall_effect_time || std::isnan(v30[k])) continue;
+      metric_after = std::abs(v[k] - v30[k]) / std::abs(v30[k]);
+      time_after = t[k];
+      if (k % 50 == 0) std::printf("  %.4f  %8.4f  %8.4f  %8.4f  %+.3f %%\n", t[k], v[k], v25[k], v30[k],
+                                   100 * (v[k] - v30[k]) / std::abs(v30[k]));
+    }
+    // 3. Arrival order.
+    const double gap = 0.015;  // cm, as in the settling-disk touchdown (centre at y = R + 0.015)
+    const double t_sw = arrival_time(sw, gap), t_25 = arrival_time(d25, gap), t_30 = arrival_time(d30, gap);
+    // Histories on the swelling run's times.
+    std::ofstream out(argv[6]);
+    out << "# swelling sedimentation: diameter and settling velocity of the three runs on the swelling run's times\n"
+           "# (D = 0.25 and D = 0.30 runs linearly interpolated); ibms body series, cgs units\n"
+           "time [s],diameter_swelling [cm],velocity_y_swelling [cm/s],velocity_y_d025 [cm/s],velocity_y_d030 [cm/s]\n";
+    for (std::size_t k = 0; k < t.size(); ++k)
+      out << t[k] << "," << sw.at("body_000/diameter")[k] << "," << v[k] << "," << v25[k] << "," << v30[k] << "\n";
+    const bool pass1 = metric_before <= 0.01;
+    const bool pass2 = std::isfinite(metric_after) && metric_after <= 0.03;
+    const bool pass3 = t_30 > 0 && t_sw > 0 && t_25 > 0 && t_30 < t_sw && t_sw < t_25;
+    std::printf("%s 1. t <= %.2f: max |v_sw - v_025| / max |v_025| = %.3g %% (tolerance 1 %%)\n",
+                pass1 ? "PASS" : "FAIL", onset, 100 * metric_before);
+    std::printf("%s 2. at t = %.4f (end of the window before wall effects, D=0.30 gap = 4 D_max at %.4f): "
+                "|v_sw - v_030| / |v_030| = %.3g %% (tolerance 3 %%)\n",
+                pass2 ? "PASS" : "FAIL", time_after, wall_effect_time, 100 * metric_after);
+    std::printf("%s 3. bottom arrival (gap %.3f cm): D=0.30 %.4f s < swelling %.4f s < D=0.25 %.4f s\n",
+                pass3 ? "PASS" : "FAIL", gap, t_30, t_sw, t_25);
+    return pass1 && pass2 && pass3 ? 0 : 1;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "swelling_sedimentation_check: %s\n", e.what());
+    return 2;
+  }
+}
