@@ -53,9 +53,17 @@ std::vector<std::string> Simulation::stage_names() const {
   if (has_bodies()) stages.push_back("schedules (wall velocities, swelling)");
   else stages.push_back("schedules (wall velocities)");
   stages.push_back("predictor (AB2 convection, Crank-Nicolson diffusion by DST Helmholtz)");
-  if (has_bodies()) stages.push_back("immersed-boundary forcing");
+  if (has_bodies())
+    stages.push_back("immersed-boundary forcing (" + scene_.ibm.kernel + ", " + std::to_string(scene_.ibm.forcing_passes) +
+                     " pass(es); target = marker velocity minus swelling part)");
   stages.push_back("projection (momentum interpolation, DCT/FFT Poisson)");
-  if (has_bodies()) stages.push_back("bodies (sub-stepped mass-spring update)");
+  if (has_bodies()) {
+    stages.push_back("fluid reaction on the rim points");
+    stages.push_back(scene_.ibm.inner_fluid_inertia == "kempe"
+                         ? "inner-fluid inertia (variant K: exact triangle-cell overlaps, Reynolds-transport form)"
+                         : "inner-fluid inertia off (variant A)");
+    stages.push_back("bodies (sub-stepped symplectic Euler: springs, buoyant gravity, swelling, contact hook)");
+  }
   stages.push_back("diagnostics");
   if (scene_.run.steady_tolerance > 0) stages.push_back("steady-state stop");
   return stages;
