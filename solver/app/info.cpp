@@ -61,10 +61,16 @@ std::string describe_scene(const Scene& scene) {
                           body.springs.size(), body.total_mass(), std::sqrt(bounds.omega_squared_max),
                           bounds.damping_rate_max, dt_b);
     }
-    text += fmt::format("spring sub-step (safety 0.5): {:.4g}", dt_sub);
+    text += fmt::format("spring sub-step (safety 0.5): {:.4g}\n", dt_sub);
+    double contact_limit = HUGE_VAL;
+    if (sim.has_contacts()) {
+      contact_limit = contact_substep(sim.contact_model(), sim.bodies());
+      text += fmt::format("contact sub-step (contact duration / {} at {} x k_Dn): {:.4g}\n",
+                          sim.contact_model().steps_per_contact, sim.contact_model().active_pairs_safety, contact_limit);
+    }
     if (std::isfinite(dt) && dt > 0)
-      text += fmt::format("; sub-steps per fluid step at dt = {:.4g}: {}", dt, substeps_for(sim.bodies(), dt));
-    text += "\n";
+      text += fmt::format("sub-steps per fluid step at dt = {:.4g}: {}\n", dt,
+                          substeps_for(sim.bodies(), dt, contact_limit));
   }
   if (std::isfinite(dt) && dt > 0) {
     const double steps = std::ceil(scene.run.end_time / dt);

@@ -18,8 +18,8 @@ void apply_swelling_schedules(const std::vector<SwellingSchedule>& swelling, dou
     if (swelling[b].enabled) apply_swelling(bodies[b], swelling[b].diameter(time));
 }
 
-int substeps_for(const std::vector<MassSpringBody>& bodies, double dt) {
-  double dt_s = HUGE_VAL;
+int substeps_for(const std::vector<MassSpringBody>& bodies, double dt, double max_substep) {
+  double dt_s = max_substep;
   for (const MassSpringBody& body : bodies) dt_s = std::min(dt_s, stable_substep(body, /*safety=*/0.5));
   if (!(dt_s > 0.0)) throw std::runtime_error("advance_bodies: non-positive stable sub-step");
   return std::max(1, static_cast<int>(std::ceil(dt / dt_s * (1.0 - 1e-12))));
@@ -28,7 +28,7 @@ int substeps_for(const std::vector<MassSpringBody>& bodies, double dt) {
 int advance_bodies(const SolidStepInputs& in, const std::vector<SwellingSchedule>& swelling,
                    const ContactForces& contact_forces, std::vector<BodyCoupling>& coupling,
                    std::vector<std::vector<Vec2>>& contact_work, std::vector<MassSpringBody>& bodies) {
-  const int n_sub = substeps_for(bodies, in.dt);
+  const int n_sub = substeps_for(bodies, in.dt, in.max_substep);
   const double dt_sub = in.dt / n_sub;
   contact_work.resize(bodies.size());
   for (std::size_t b = 0; b < bodies.size(); ++b) contact_work[b].resize(bodies[b].n_points());

@@ -6,6 +6,7 @@
 // force F_int stay frozen at their values from the projection.
 #pragma once
 #include <array>
+#include <cmath>
 #include <functional>
 #include <vector>
 
@@ -26,13 +27,14 @@ void apply_swelling_schedules(const std::vector<SwellingSchedule>& swelling, dou
                               std::vector<MassSpringBody>& bodies);
 
 // Number of sub-steps the next fluid step of length dt needs, from stable_substep (§5.3).
-int substeps_for(const std::vector<MassSpringBody>& bodies, double dt);
+int substeps_for(const std::vector<MassSpringBody>& bodies, double dt, double max_substep = HUGE_VAL);
 
 struct SolidStepInputs {
   double time = 0.0;                 // t^n [time]
   double dt = 0.0;                   // fluid step [time]
   double fluid_density = 0.0;        // rho_f [mass/length^3]
   Vec2 gravity{0.0, 0.0};            // g [length/time^2]
+  double max_substep = HUGE_VAL;     // further sub-step bound, e.g. the contact duration / 20 [time]
 };
 
 // Advances all bodies from t^n to t^n + dt; returns the number of sub-steps taken.

@@ -106,6 +106,12 @@ std::vector<SeriesValue> body_series(const Simulation& sim) {
     for (const auto& u : sim.coupling()[b].target_velocity) max_target = std::max(max_target, std::hypot(u[0], u[1]));
     row.push_back({name + "/max_target_speed", "length/time", max_target});
   }
+  if (sim.has_contacts()) {  // merged over the sub-steps of the step
+    const ContactStats& cs = sim.last_contact_stats;
+    row.push_back({"contact/n_active_pairs", "-", static_cast<double>(cs.n_active_pairs)});
+    row.push_back({"contact/n_wall_contacts", "-", static_cast<double>(cs.n_wall_contacts)});
+    row.push_back({"contact/max_overlap", "length", cs.max_overlap});
+  }
   return row;
 }
 

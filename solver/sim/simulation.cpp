@@ -43,6 +43,16 @@ Simulation::Simulation(const Scene& scene)
     coupling_.emplace_back(bodies_.back());
   }
   apply_swelling_schedules(swelling_, fluid_.time, bodies_);
+  if (scene.contact.stiffness > 0.0) {
+    contact_model_ = ContactModel(scene.contact);
+    contact_box_ = WallBox{{grid_.origin_x, grid_.origin_y}, {grid_.length_x, grid_.length_y},
+                           {grid_.periodic_x, grid_.periodic_y}};
+    // The contact seam of body_update.hpp: DEM forces every sub-step, stats merged per step.
+    contact_forces = [this](const std::vector<MassSpringBody>& bodies, double /*time*/,
+                            std::vector<std::vector<Vec2>>& forces) {
+      last_contact_stats.include(add_contact_forces(contact_model_, bodies, contact_box_, forces));
+    };
+  }
   // Variant K: I_T at t = 0 (region X^0, velocity u^0), the first "previous" value.
   if (inner_fluid_inertia == &kempe_inner_fluid_inertia)
     sample_inner_fluid_momentum(grid_, fluid_, bodies_, coupling_);

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "contact/contact_forces.hpp"
+#include "contact/contact_model.hpp"
 #include "core/grid.hpp"
 #include "fluid/fluid_solver.hpp"
 #include "ibm/delta_kernel.hpp"
@@ -49,6 +51,11 @@ class Simulation {
   InnerFluidInertia inner_fluid_inertia = nullptr;  // variant K or A, from ibm.inner_fluid_inertia
   ContactForces contact_forces = no_contact_forces; // the contact seam (solver/contact wires in here)
 
+  // DEM contacts (solver/contact), active when contact.stiffness > 0.
+  bool has_contacts() const { return contact_model_.enabled(); }
+  const ContactModel& contact_model() const { return contact_model_; }
+  ContactStats last_contact_stats;  // merged over the sub-steps of the latest step
+
   ProjectionStats last_projection;  // diagnostics of the latest step
   int last_n_substeps = 0;          // solid sub-steps of the latest step [-]
 
@@ -63,6 +70,8 @@ class Simulation {
   std::vector<SwellingSchedule> swelling_;
   std::vector<BodyCoupling> coupling_;
   std::vector<std::vector<Vec2>> contact_work_;
+  ContactModel contact_model_;
+  WallBox contact_box_;
 };
 
 // Builders shared with `ibms info` and tests.

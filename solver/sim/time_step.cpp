@@ -33,7 +33,9 @@ void advance_one_step(Simulation& sim, double dt) {
     compute_fluid_reaction(sim.fluid_density(), sim.coupling());  // F_f,l = -rho_f sum F_l dV_l, §1.6
     sim.inner_fluid_inertia(sim.grid(), sim.fluid_density(), fluid, sim.bodies(), dt,
                             sim.coupling());  // F_int = rho_f dI/dt (variant K) or 0 (A), §1.7
-    sim.last_n_substeps = advance_bodies({time_n, dt, sim.fluid_density(), sim.scene().fluid.gravity},
+    sim.last_contact_stats = ContactStats{};
+    const double contact_limit = sim.has_contacts() ? contact_substep(sim.contact_model(), sim.bodies()) : HUGE_VAL;
+    sim.last_n_substeps = advance_bodies({time_n, dt, sim.fluid_density(), sim.scene().fluid.gravity, contact_limit},
                                          sim.swelling(), sim.contact_forces, sim.coupling(), sim.contact_work(),
                                          sim.bodies());  // n_sub symplectic Euler sub-steps, §5.3
   }
