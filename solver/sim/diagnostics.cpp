@@ -95,7 +95,7 @@ CentrelineProfiles centreline_profiles(const Simulation& sim) {
   const Grid& g = sim.grid();
   const FluidState& f = sim.fluid();
   const double t = f.time;
-  const FluidBoundaries bc = boundaries_from_scene(sim.scene());
+  const FluidBoundaries& bc = sim.boundaries();
   CentrelineProfiles p;
   // Vertical line x = mid: cells i0, i0 + 1 around it, weight w on i0 + 1.
   const double x_mid = g.origin_x + 0.5 * g.length_x, y_mid = g.origin_y + 0.5 * g.length_y;

@@ -62,7 +62,7 @@ void write_series(OutputFile& out, const Simulation& sim, double dt, double cfl,
       {"dt", "time", dt},
       {"step", "-", static_cast<double>(f.step)},
       {"kinetic_energy", "mass length^2/time^2 per unit depth",
-       sim.fluid_density() * const_cast<Simulation&>(sim).fluid_solver().kinetic_energy(f)},
+       sim.fluid_density() * sim.fluid_solver().kinetic_energy(f)},
       {"max_divergence", "1/time", ps.max_divergence_after},
       {"max_divergence_before_projection", "1/time", ps.max_divergence_before},
       {"poisson_removed_mean", "1/time^2", ps.removed_mean},
@@ -120,7 +120,7 @@ void write_snapshot(OutputFile& out, Simulation& sim) {
   FluidState& f = sim.fluid();
   const std::size_t n = g.n_cells();
   std::vector<double> u(n), v(n), p(n), w(n);
-  fill_velocity_ghosts(g, boundaries_from_scene(sim.scene()), f.time, f.velocity_x, f.velocity_y);
+  fill_velocity_ghosts(g, sim.boundaries(), f.time, f.velocity_x, f.velocity_y);
   CellField vort(g);
   vorticity(g, f.velocity_x, f.velocity_y, vort);
   f.velocity_x.copy_interior_to(u.data());

@@ -29,6 +29,7 @@ class Simulation {
   const Scene& scene() const { return scene_; }
   const Grid& grid() const { return grid_; }
   FluidSolver& fluid_solver() { return fluid_solver_; }
+  const FluidSolver& fluid_solver() const { return fluid_solver_; }
   FluidState& fluid() { return fluid_; }
   const FluidState& fluid() const { return fluid_; }
   StageTimers& timers() { return timers_; }
