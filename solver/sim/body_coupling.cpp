@@ -1,6 +1,7 @@
 // Markers, direct forcing and fluid reaction of the bodies (see body_coupling.hpp).
 #include "sim/body_coupling.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "ibm/direct_forcing.hpp"
@@ -8,11 +9,44 @@
 
 namespace ibms {
 
-BodyCoupling::BodyCoupling(const MassSpringBody& body)
-    : marker(body.n_surface), marker_volume(body.n_surface), target_velocity(body.n_surface),
-      interpolated_velocity(body.n_surface), pass_force(body.n_surface), pass_increment(body.n_surface),
-      forcing_sum(body.n_surface), fluid_force(body.n_points()), inner_fluid_force(body.n_points()),
-      external_force(body.n_points()), triangle_cells(body.n_surface), triangle_momentum(body.n_surface) {}
+namespace {
+
+// Marker arrays sized n (within the capacity reserved at construction).
+void resize_markers(BodyCoupling& c, std::size_t n) {
+  c.marker.resize(n);
+  c.marker_edge.resize(n);
+  c.marker_fraction.resize(n);
+  c.marker_volume.resize(n);
+  c.target_velocity.resize(n);
+  c.interpolated_velocity.resize(n);
+  c.pass_force.resize(n);
+  c.pass_increment.resize(n);
+  c.forcing_sum.resize(n);
+}
+
+}  // namespace
+
+BodyCoupling::BodyCoupling(const MassSpringBody& body, std::size_t max_markers)
+    : fluid_force(body.n_points()), inner_fluid_force(body.n_points()), external_force(body.n_points()),
+      triangle_cells(body.n_surface), triangle_momentum(body.n_surface) {
+  const std::size_t capacity = std::max<std::size_t>(max_markers, body.n_surface);
+  for (auto* v : {&marker, &target_velocity, &interpolated_velocity, &pass_force, &pass_increment, &forcing_sum})
+    v->reserve(capacity);
+  marker_edge.reserve(capacity);
+  marker_fraction.reserve(capacity);
+  marker_volume.reserve(capacity);
+  resize_markers(*this, body.n_surface);
+  for (int l = 0; l < body.n_surface; ++l) {
+    marker_edge[l] = l;
+    marker_fraction[l] = 0.0;
+  }
+}
+
+std::size_t max_sub_marker_count(double diameter, int n_surface, double h) {
+  // Edge of a regular n-gon inscribed in the diameter, with 50 % slack for deformation.
+  const double edge = 1.5 * diameter * std::sin(M_PI / n_surface);
+  return static_cast<std::size_t>(n_surface) * static_cast<std::size_t>(std::ceil(edge / h));
+}
 
 WallVelocities wall_velocities_at(const FluidBoundaries& boundaries, double time) {
   return {boundaries.left.at(time), boundaries.right.at(time), boundaries.bottom.at(time),
@@ -21,12 +55,36 @@ WallVelocities wall_velocities_at(const FluidBoundaries& boundaries, double time
 
 void prepare_markers(const std::vector<MassSpringBody>& bodies,
                      const std::vector<SwellingSchedule>& swelling, double time, double previous_dt,
-                     const Grid& grid, std::vector<BodyCoupling>& coupling) {
+                     const Grid& grid, bool sub_markers, std::vector<BodyCoupling>& coupling) {
   const double h = grid.dx();  // square cells (checked when the Simulation is built)
   for (std::size_t b = 0; b < bodies.size(); ++b) {
     const MassSpringBody& body = bodies[b];
     BodyCoupling& c = coupling[b];
-    for (int l = 0; l < body.n_surface; ++l) c.marker[l] = body.position[l];
+    const int n_rim = body.n_surface;
+    if (!sub_markers) {
+      for (int l = 0; l < n_rim; ++l) c.marker[l] = body.position[l];
+    } else {
+      // METHOD.md §3.6: split each rim edge into ceil(|e|/h) pieces, so marker spacing <= h.
+      std::size_t n_markers = 0;
+      for (int e = 0; e < n_rim; ++e) {
+        const Vec2& a = body.position[e];
+        const Vec2& z = body.position[(e + 1) % n_rim];
+        n_markers += static_cast<std::size_t>(std::max(1.0, std::ceil(std::hypot(z[0] - a[0], z[1] - a[1]) / h)));
+      }
+      resize_markers(c, n_markers);
+      std::size_t m = 0;
+      for (int e = 0; e < n_rim; ++e) {
+        const Vec2& a = body.position[e];
+        const Vec2& z = body.position[(e + 1) % n_rim];
+        const int pieces = static_cast<int>(std::max(1.0, std::ceil(std::hypot(z[0] - a[0], z[1] - a[1]) / h)));
+        for (int j = 0; j < pieces; ++j, ++m) {
+          const double w = static_cast<double>(j) / pieces;
+          c.marker_edge[m] = e;
+          c.marker_fraction[m] = w;
+          c.marker[m] = {(1.0 - w) * a[0] + w * z[0], (1.0 - w) * a[1] + w * z[1]};
+        }
+      }
+    }
     c.marker_volume = marker_weights(c.marker, h);  // dV_l = h s_l, METHOD.md §3.6
     // METHOD.md §1.8: the fluid is forced towards the marker velocity minus the swelling
     // part (s'/s)(X_l - X_c), so a swelling body absorbs fluid instead of pushing it away.
@@ -37,9 +95,17 @@ void prepare_markers(const std::vector<MassSpringBody>& bodies,
         ? std::log(swelling[b].length_scale(time) / swelling[b].length_scale(time - previous_dt)) / previous_dt
         : swelling[b].relative_growth_rate(time);
     const Vec2 x_c = centre_of_mass(body);
-    for (int l = 0; l < body.n_surface; ++l)
-      for (int d = 0; d < 2; ++d)
-        c.target_velocity[l][d] = body.velocity[l][d] - growth*(body.position[l][d] - x_c[d]);
+    // U_target is linear in (U, X), so a sub-marker's target is the linear interpolation of its
+    // edge end points' targets.
+    for (std::size_t l = 0; l < c.marker.size(); ++l) {
+      const int e0 = c.marker_edge[l];
+      const int e1 = (e0 + 1) % n_rim;
+      const double w = c.marker_fraction[l];
+      for (int d = 0; d < 2; ++d) {
+        const double u = (1.0 - w) * body.velocity[e0][d] + w * body.velocity[e1][d];
+        c.target_velocity[l][d] = u - growth * (c.marker[l][d] - x_c[d]);
+      }
+    }
   }
 }
 
@@ -69,11 +135,20 @@ void apply_direct_forcing(const Grid& grid, KernelKind kernel, const WallVelocit
 
 void compute_fluid_reaction(double fluid_density, std::vector<BodyCoupling>& coupling) {
   for (BodyCoupling& c : coupling) {
-    const std::size_t n_rim = c.marker.size();
-    // METHOD.md §1.6: F_f,l = -rho_f (sum_m F_l^(m)) dV_l, a force per unit depth.
-    for (std::size_t l = 0; l < n_rim; ++l)
-      for (int d = 0; d < 2; ++d) c.fluid_force[l][d] = -fluid_density * c.forcing_sum[l][d] * c.marker_volume[l];
-    for (std::size_t p = n_rim; p < c.fluid_force.size(); ++p) c.fluid_force[p] = {0.0, 0.0};  // centre
+    for (Vec2& f : c.fluid_force) f = {0.0, 0.0};  // the centre point gets none
+    const int n_rim = static_cast<int>(c.triangle_momentum.size());
+    // METHOD.md §1.6: F_f,l = -rho_f (sum_m F_l^(m)) dV_l, a force per unit depth; a sub-marker's
+    // share goes to its edge's end points with weights (1 - w, w) (§3.6).
+    for (std::size_t l = 0; l < c.marker.size(); ++l) {
+      const int e0 = c.marker_edge[l];
+      const int e1 = (e0 + 1) % n_rim;
+      const double w = c.marker_fraction[l];
+      for (int d = 0; d < 2; ++d) {
+        const double f = -fluid_density * c.forcing_sum[l][d] * c.marker_volume[l];
+        c.fluid_force[e0][d] += (1.0 - w) * f;
+        c.fluid_force[e1][d] += w * f;
+      }
+    }
   }
 }
 

@@ -22,8 +22,15 @@ namespace ibms {
 using Vec2 = std::array<double, 2>;
 
 struct BodyCoupling {
-  // IB markers (the rim points), per rim point l.
+  // IB markers, per marker l: the rim points and, with ibm.sub_markers, the sub-markers that split
+  // each rim edge (METHOD.md §3.6, an extension, off by default). Marker l sits on rim edge
+  // marker_edge[l] (points e -> e+1) at fraction marker_fraction[l] in [0, 1): its target velocity
+  // is the linear interpolation of the two end points' targets, and its force reaction goes back
+  // to the end points with the same weights (1 - w, w), which keeps total force and torque.
+  // Without sub-markers marker l is rim point l (edge l, fraction 0).
   std::vector<Vec2> marker;                // X_l^n [length]
+  std::vector<int> marker_edge;            // rim edge (and first end point) of marker l [-]
+  std::vector<double> marker_fraction;     // position along that edge [-]
   std::vector<double> marker_volume;       // dV_l = h s_l [length^2 per unit depth]
   std::vector<Vec2> target_velocity;       // U_target_l [length/time]
   std::vector<Vec2> interpolated_velocity; // U~_l = J u~ [length/time]
@@ -39,17 +46,24 @@ struct BodyCoupling {
   std::vector<std::vector<CellOverlap>> triangle_cells;
   std::vector<Vec2> triangle_momentum;     // [length^3/time per unit depth]
 
-  explicit BodyCoupling(const MassSpringBody& body);
+  // max_markers: capacity reserved once, so that sub-markers added as the body swells reallocate
+  // nothing within the step loop.
+  BodyCoupling(const MassSpringBody& body, std::size_t max_markers);
 };
+
+// Markers per rim edge needed for spacing <= h on a body of diameter d with n_surface rim points
+// (ceil(|e|/h) pieces per edge, METHOD.md §3.6), for reserving capacity.
+std::size_t max_sub_marker_count(double diameter, int n_surface, double h);
 
 // Tangential wall speeds at `time` seen by interpolation (ghost rule of the fluid walls).
 WallVelocities wall_velocities_at(const FluidBoundaries& boundaries, double time);
 
 // X^n, dV_l and U_target_l of every body (METHOD.md §1.8, §3.6) at `time` = t^n; previous_dt is
-// dt^{n-1} (0 on the first step), over which the swelling part of U^n is measured.
+// dt^{n-1} (0 on the first step), over which the swelling part of U^n is measured. With
+// sub_markers, each rim edge e is split into ceil(|e|/h) pieces at X^n (METHOD.md §3.6).
 void prepare_markers(const std::vector<MassSpringBody>& bodies,
                      const std::vector<SwellingSchedule>& swelling, double time, double previous_dt,
-                     const Grid& grid, std::vector<BodyCoupling>& coupling);
+                     const Grid& grid, bool sub_markers, std::vector<BodyCoupling>& coupling);
 
 // n_passes direct-forcing passes on (velocity_star_x, velocity_star_y): interpolate u~ at X^n,
 // F = (U_target - U~)/dt, spread dt F with dV_l, u~ += dt f; accumulates F in forcing_sum.
@@ -57,7 +71,8 @@ void apply_direct_forcing(const Grid& grid, KernelKind kernel, const WallVelocit
                           int n_passes, std::vector<BodyCoupling>& coupling, CellField& velocity_star_x,
                           CellField& velocity_star_y);
 
-// F_f,l = -rho_f forcing_sum_l dV_l on the rim points, 0 on the centre (METHOD.md §1.6).
+// F_f = -rho_f forcing_sum_l dV_l of every marker, returned to the rim points of its edge with
+// weights (1 - w, w); 0 on the centre (METHOD.md §1.6, §3.6).
 void compute_fluid_reaction(double fluid_density, std::vector<BodyCoupling>& coupling);
 
 }  // namespace ibms

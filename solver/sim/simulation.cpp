@@ -1,6 +1,7 @@
 // Building a Simulation from a Scene: grid, wall motions, fluid solver, initial state.
 #include "sim/simulation.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/errors.hpp"
@@ -40,7 +41,10 @@ Simulation::Simulation(const Scene& scene)
   for (const BodySpec& spec : scene.bodies) {
     bodies_.push_back(build_wheel(spec));
     swelling_.emplace_back(spec.swelling, spec.diameter);
-    coupling_.emplace_back(bodies_.back());
+    const double largest = spec.swelling.enabled ? std::max(spec.diameter, spec.swelling.max_diameter) : spec.diameter;
+    coupling_.emplace_back(bodies_.back(), scene.ibm.sub_markers
+                                               ? max_sub_marker_count(largest, spec.n_surface_points, grid_.dx())
+                                               : static_cast<std::size_t>(spec.n_surface_points));
   }
   apply_swelling_schedules(swelling_, fluid_.time, bodies_);
   if (scene.contact.stiffness > 0.0) {
