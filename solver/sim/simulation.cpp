@@ -54,6 +54,7 @@ Simulation::Simulation(const Scene& scene)
     // The contact seam of body_update.hpp: DEM forces every sub-step, stats merged per step.
     contact_forces = [this](const std::vector<MassSpringBody>& bodies, double /*time*/,
                             std::vector<std::vector<Vec2>>& forces) {
+      auto t = timers_.time(Stage::contacts);
       last_contact_stats.include(add_contact_forces(contact_model_, bodies, contact_box_, forces));
     };
   }

@@ -59,6 +59,7 @@ class Simulation {
 
   ProjectionStats last_projection;  // diagnostics of the latest step
   int last_n_substeps = 0;          // solid sub-steps of the latest step [-]
+  long total_substeps = 0;          // solid sub-steps since the Simulation was built [-]
 
  private:
   Scene scene_;

@@ -7,10 +7,12 @@
 
 namespace ibms {
 
-enum class Stage { schedules, predictor, ib_forcing, projection, bodies, diagnostics, output, count };
+// `contacts` (DEM forces and pair search, every solid sub-step) runs inside `bodies`: the solid
+// stage proper is bodies - contacts. The others do not nest.
+enum class Stage { schedules, predictor, ib_forcing, projection, bodies, contacts, diagnostics, output, count };
 
 inline constexpr std::array<std::string_view, static_cast<int>(Stage::count)> stage_names{
-    "schedules", "predictor", "ib_forcing", "projection", "bodies", "diagnostics", "output"};
+    "schedules", "predictor", "ib_forcing", "projection", "bodies", "contacts", "diagnostics", "output"};
 
 class StageTimers {
  public:

@@ -38,6 +38,7 @@ void advance_one_step(Simulation& sim, double dt) {
     sim.last_n_substeps = advance_bodies({time_n, dt, sim.fluid_density(), sim.scene().fluid.gravity, contact_limit},
                                          sim.swelling(), sim.contact_forces, sim.coupling(), sim.contact_work(),
                                          sim.bodies());  // n_sub symplectic Euler sub-steps, §5.3
+    sim.total_substeps += sim.last_n_substeps;
   }
 }
 

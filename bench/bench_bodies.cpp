@@ -1,0 +1,114 @@
+// Body benchmarks (issue 3 item 6, issue 4 item 4), run on demand, printing figures: the cost of
+// each pipeline stage per fluid step from the solver's own stage timers, for
+//   - the settling disk (validation/settling_disk) at D/h = 12.5, 18.75, 25 (and more on request),
+//     first 0.3 s of settling (the run's own adaptive time step);
+//   - any further scene given on the command line, run to its end time (cavity cases with bodies).
+// Columns: fluid = predictor + projection; IB = direct forcing (interpolate + spread, all passes);
+// solid = sub-stepped body update without contacts (springs, fluid reaction, inner-fluid inertia);
+// contacts = DEM forces and pair search inside the solid sub-steps; other = schedules,
+// diagnostics and output. Ratios are against the fluid stage of the same run.
+// Usage: bench_bodies SETTLING_SCENE [--cells 100,150,200] [--until 0.3] [EXTRA_SCENE...]
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "scene/scene_reader.hpp"
+#include "sim/run.hpp"
+#include "sim/simulation.hpp"
+
+using namespace ibms;
+
+namespace {
+
+struct Figures {
+  long steps = 0;
+  double fluid = 0, ib = 0, solid = 0, contacts = 0, other = 0, wall = 0;
+  long substeps = 0;
+};
+
+Figures run_and_time(const std::string& scene_path, const std::vector<std::string>& overrides) {
+  const Scene scene = read_scene_file(scene_path, overrides);
+  Simulation sim(scene);
+  const std::string out = (std::filesystem::temp_directory_path() / "ibms_bench_bodies.h5").string();
+  const RunSummary summary = run_simulation(sim, {out, /*quiet=*/true});
+  std::filesystem::remove(out);
+  for (const char* suffix : {".xmf", "_bodies.csv", "_centreline_u.csv", "_centreline_v.csv"})
+    std::filesystem::remove((std::filesystem::temp_directory_path() / "ibms_bench_bodies").string() + suffix);
+  const StageTimers& t = sim.timers();
+  Figures f;
+  f.steps = summary.steps;
+  f.fluid = t.seconds(Stage::predictor) + t.seconds(Stage::projection);
+  f.ib = t.seconds(Stage::ib_forcing);
+  f.contacts = t.seconds(Stage::contacts);
+  f.solid = t.seconds(Stage::bodies) - f.contacts;
+  f.other = t.seconds(Stage::schedules) + t.seconds(Stage::diagnostics) + t.seconds(Stage::output);
+  f.wall = summary.wall_seconds;
+  f.substeps = sim.total_substeps;
+  return f;
+}
+
+void print_header() {
+  std::printf("   %-28s %7s %9s %9s %9s %9s %9s %7s %7s %7s %8s\n", "case", "steps", "fluid", "IB", "solid",
+              "contacts", "other", "IB/fl", "sol/fl", "con/fl", "sub/step");
+  std::printf("   %-28s %7s %9s %9s %9s %9s %9s %7s %7s %7s %8s\n", "", "", "ms/step", "ms/step", "ms/step",
+              "ms/step", "ms/step", "", "", "", "");
+}
+
+void print_row(const std::string& name, const Figures& f) {
+  const double per = 1e3 / static_cast<double>(f.steps);
+  std::printf("   %-28s %7ld %9.3f %9.3f %9.3f %9.3f %9.3f %7.3f %7.3f %7.3f %8.1f\n", name.c_str(), f.steps,
+              f.fluid * per, f.ib * per, f.solid * per, f.contacts * per, f.other * per, f.ib / f.fluid,
+              f.solid / f.fluid, f.contacts / f.fluid, static_cast<double>(f.substeps) / f.steps);
+}
+
+std::vector<int> parse_list(const std::string& text) {
+  std::vector<int> values;
+  std::stringstream in(text);
+  for (std::string item; std::getline(in, item, ',');) values.push_back(std::atoi(item.c_str()));
+  return values;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 2) {
+    std::fprintf(stderr, "usage: bench_bodies SETTLING_SCENE [--cells 100,150,200] [--until 0.3] [SCENE...]\n");
+    return 2;
+  }
+  std::vector<int> cells{100, 150, 200};
+  std::string until = "0.3";
+  std::vector<std::string> extra;
+  for (int a = 2; a < argc; ++a) {
+    const std::string arg = argv[a];
+    if (arg == "--cells" && a + 1 < argc) cells = parse_list(argv[++a]);
+    else if (arg == "--until" && a + 1 < argc) until = argv[++a];
+    else extra.push_back(arg);
+  }
+  try {
+    std::printf("Stage cost per fluid step (solver stage timers, one run each; machine shared, noisy)\n");
+    print_header();
+    for (int n : cells) {
+      // Markers spaced ~h: N_l = 0.4 n (D = 0.25 cm, width 2 cm), as the validation runs.
+      const std::vector<std::string> sets{"domain.cells_x=" + std::to_string(n),
+                                          "domain.cells_y=" + std::to_string(3 * n),
+                                          "bodies.0.n_surface_points=" + std::to_string(2 * n / 5),
+                                          "run.end_time=" + until};
+      const Figures f = run_and_time(argv[1], sets);
+      char name[64];
+      std::snprintf(name, sizeof name, "settling %dx%d D/h=%.2f", n, 3 * n, 0.25 * n / 2.0);
+      print_row(name, f);
+    }
+    for (const std::string& path : extra) {
+      const Figures f = run_and_time(path, {});
+      print_row(std::filesystem::path(path).parent_path().filename().string(), f);
+      std::printf("   %-28s wall %.1f s\n", "", f.wall);
+    }
+  } catch (const std::exception& error) {
+    std::fprintf(stderr, "bench_bodies: %s\n", error.what());
+    return 1;
+  }
+  return 0;
+}
