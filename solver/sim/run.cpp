@@ -15,6 +15,7 @@
 #include "io/csv_table.hpp"
 #include "io/output_file.hpp"
 #include "sim/diagnostics.hpp"
+#include "solid/body_geometry.hpp"
 #include "solid/spring_forces.hpp"
 
 #ifndef IBMS_VERSION
@@ -100,11 +101,23 @@ std::vector<SeriesValue> body_series(const Simulation& sim) {
     row.push_back({name + "/velocity_y", "length/time", momentum[1] / mass});
     row.push_back({name + "/diameter", "length", body.diameter});
     row.push_back({name + "/area", "length^2 per unit depth", polygon_area(body)});
+    row.push_back({name + "/deformation", "-", deformation_parameter(body)});
     row.push_back({name + "/spring_energy", "energy per unit depth", spring_energy(body, body.length_scale())});
     row.push_back({name + "/n_substeps", "-", static_cast<double>(sim.last_n_substeps)});
     double max_target = 0.0;
     for (const auto& u : sim.coupling()[b].target_velocity) max_target = std::max(max_target, std::hypot(u[0], u[1]));
     row.push_back({name + "/max_target_speed", "length/time", max_target});
+  }
+  {  // separation: from the walls always, between bodies when there are several
+    const Grid& g = sim.grid();
+    const BodySeparation sep = body_separation(sim.bodies(), {g.origin_x, g.origin_y},
+                                               {g.origin_x + g.length_x, g.origin_y + g.length_y},
+                                               {g.periodic_x, g.periodic_y});
+    row.push_back({"bodies/min_wall_distance", "length", sep.min_wall_distance});
+    if (sim.bodies().size() > 1) {
+      row.push_back({"bodies/min_rim_distance", "length", sep.min_rim_distance});
+      row.push_back({"bodies/n_points_inside_others", "-", static_cast<double>(sep.n_points_inside_others)});
+    }
   }
   if (sim.has_contacts()) {  // merged over the sub-steps of the step
     const ContactStats& cs = sim.last_contact_stats;

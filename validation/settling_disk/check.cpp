@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "body_series.hpp"
+#include "../common/results_csv.hpp"
 
 using namespace ibms::validation;
 
@@ -49,6 +50,11 @@ int main(int argc, char** argv) {
                   100 * deviation, t[k_max], touchdown > 0 ? std::to_string(touchdown).c_str() : "not reached",
                   std::isnan(previous) ? "" : (std::to_string(speed - previous) + " cm/s").c_str());
       previous = speed;
+      char label[96];
+      std::snprintf(label, sizeof label, "max settling speed [cm/s], D/h = %.2f", resolution);
+      record_info("settling_disk", label, speed);
+      std::snprintf(label, sizeof label, "touchdown time (centre at y = 0.14) [s], D/h = %.2f", resolution);
+      if (touchdown > 0) record_info("settling_disk", label, touchdown);
       if (resolution >= 25.0 - 1e-9) { finest_deviation = deviation; finest_resolution = resolution; }
     }
     if (std::isnan(finest_deviation)) {
@@ -56,6 +62,9 @@ int main(int argc, char** argv) {
       return 1;
     }
     const bool pass = std::abs(finest_deviation) <= tolerance;
+    char label[96];
+    std::snprintf(label, sizeof label, "|max settling speed / 5.5 cm/s - 1| at D/h = %.2f", finest_resolution);
+    record("settling_disk", label, tolerance, std::abs(finest_deviation), pass);
     std::printf("%s: D/h = %.2f deviates by %+.2f %% (tolerance %.1f %%)\n", pass ? "PASS" : "FAIL", finest_resolution,
                 100 * finest_deviation, 100 * tolerance);
     return pass ? 0 : 1;

@@ -11,6 +11,7 @@
 #include <cstdlib>
 #include <string>
 
+#include "../common/results_csv.hpp"
 #include "../settling_disk/body_series.hpp"
 
 using namespace ibms::validation;
@@ -36,6 +37,11 @@ int main(int argc, char** argv) {
                 pass1 ? "PASS" : "FAIL", max_fluid, max_fluid / swelling_speed, max_target, max_target / swelling_speed);
     std::printf("%s 2. max |Poisson removed mean| = %.3g 1/s^2 (<= 1e-10)\n", pass2 ? "PASS" : "FAIL", max_mean);
     std::printf("%s 3. final diameter %.6g (D_max %.6g)\n", pass3 ? "PASS" : "FAIL", final_diameter, max_diameter);
+    record("swelling_disk_quiescent", "max fluid velocity component - max forcing target speed [cm/s]", 0.0,
+           max_fluid - max_target, pass1);
+    record("swelling_disk_quiescent", "max |Poisson removed mean| [1/s^2]", 1e-10, max_mean, pass2);
+    record("swelling_disk_quiescent", "|final diameter - D_max| [cm]", 1e-9, std::abs(final_diameter - max_diameter),
+           pass3);
     return pass1 && pass2 && pass3 ? 0 : 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "swelling_disk_quiescent_check: %s\n", e.what());

@@ -1,0 +1,29 @@
+// Geometric diagnostics of mass-spring bodies for the time series and the cavity checks:
+// a deformation measure of one body and the separation of several bodies from each other and
+// from the walls (interpenetration detection). Pure functions of the rim points.
+#pragma once
+#include <array>
+#include <vector>
+
+#include "solid/mass_spring_body.hpp"
+
+namespace ibms {
+
+// Deformation parameter (r_max - r_min) / (r_max + r_min) of the rim distances r_l = |X_l - C|
+// from the rim polygon's area centroid C: 0 for a regular polygon, ~ Taylor's (L - B)/(L + B)
+// for an ellipse-like shape [-].
+double deformation_parameter(const MassSpringBody& body);
+
+struct BodySeparation {
+  double min_rim_distance = 0.0;  // smallest distance between rim points of different bodies [length]
+  int n_points_inside_others = 0; // rim points of one body inside another's rim polygon [-]
+  double min_wall_distance = 0.0; // smallest distance from any rim point to a wall [length]
+};
+
+// Walls at x = lower[0], upper[0] (unless periodic[0]) and y = lower[1], upper[1] (unless
+// periodic[1]). A rim point outside the box has a negative wall distance. With one body
+// min_rim_distance is +infinity. O((sum N_l)^2): a diagnostic, evaluated when series are written.
+BodySeparation body_separation(const std::vector<MassSpringBody>& bodies, std::array<double, 2> lower,
+                               std::array<double, 2> upper, std::array<bool, 2> periodic);
+
+}  // namespace ibms
