@@ -9,6 +9,12 @@ namespace ibms {
 ContactSpheres gather_contact_spheres(const ContactModel& model,
                                       const std::vector<MassSpringBody>& bodies) {
   ContactSpheres spheres;
+  std::size_t n = 0;
+  for (const MassSpringBody& body : bodies) n += static_cast<std::size_t>(body.n_surface);
+  spheres.centre.reserve(n);
+  spheres.radius.reserve(n);
+  spheres.body.reserve(n);
+  spheres.point.reserve(n);
   for (int b = 0; b < static_cast<int>(bodies.size()); ++b) {
     const double radius = model.cds_radius_of(bodies[b]);
     for (int k = 0; k < bodies[b].n_surface; ++k) {  // surface points only; the centre has no CDS
@@ -58,20 +64,23 @@ struct BinAxis {
     if (periodic) return ((i % n_bins) + n_bins) % n_bins;
     return std::clamp(i, 0, n_bins - 1);  // nothing lies outside the span; guards round-off
   }
-  // Distinct bins i-1, i, i+1 (wrapped if periodic); fewer when n_bins < 3 or at an end.
-  std::vector<int> neighbours(int i) const {
-    std::vector<int> result;
+  // Distinct bins i-1, i, i+1 (wrapped if periodic) into out[]; fewer when n_bins < 3 or at an
+  // end. Returns their number. No allocation: this runs for every sphere of every sub-step.
+  int neighbours(int i, int out[3]) const {
+    int count = 0;
     for (int d = -1; d <= 1; ++d) {
       int j = i + d;
       if (periodic) j = ((j % n_bins) + n_bins) % n_bins;
       else if (j < 0 || j >= n_bins) continue;
-      if (std::find(result.begin(), result.end(), j) == result.end()) result.push_back(j);
+      if (std::find(out, out + count, j) == out + count) out[count++] = j;
     }
-    return result;
+    return count;
   }
 };
 
-BinAxis make_axis(const ContactSpheres& spheres, const WallBox& box, int c, double bin_min) {
+// max_bins caps the bins per axis (wider bins stay correct, >= bin_min): a few tiny spheres spread
+// over a large box would otherwise make a mostly empty grid that costs more than it saves.
+BinAxis make_axis(const ContactSpheres& spheres, const WallBox& box, int c, double bin_min, int max_bins) {
   BinAxis axis;
   axis.periodic = box.periodic[c];
   double upper;
@@ -86,7 +95,7 @@ BinAxis make_axis(const ContactSpheres& spheres, const WallBox& box, int c, doub
     }
   }
   const double span = upper - axis.lower;
-  axis.n_bins = std::max(1, static_cast<int>(std::floor(span / bin_min)));
+  axis.n_bins = std::clamp(static_cast<int>(std::floor(span / bin_min)), 1, max_bins);
   axis.width = span > 0.0 ? span / axis.n_bins : 1.0;  // >= bin_min by the floor above
   return axis;
 }
@@ -103,25 +112,77 @@ PairSearchResult find_touching_pairs_brute_force(const ContactSpheres& spheres, 
 
 PairSearchResult find_touching_pairs_cell_list(const ContactSpheres& spheres, const WallBox& box) {
   PairSearchResult result;
-  if (spheres.n_spheres() < 2) return result;
+  const int n = spheres.n_spheres();
+  if (n < 2) return result;
   // Touching spheres are closer than 2 r_max, so they lie in the same or adjacent bins.
   const double bin_min = 2.0 * *std::max_element(spheres.radius.begin(), spheres.radius.end());
-  const BinAxis axis_x = make_axis(spheres, box, 0, bin_min);
-  const BinAxis axis_y = make_axis(spheres, box, 1, bin_min);
-  std::vector<std::vector<int>> members(static_cast<std::size_t>(axis_x.n_bins) * axis_y.n_bins);
-  std::vector<int> bin_of(spheres.n_spheres());
-  for (int s = 0; s < spheres.n_spheres(); ++s) {
+  const int max_bins = 4 * static_cast<int>(std::ceil(std::sqrt(static_cast<double>(n)))) + 1;
+  const BinAxis axis_x = make_axis(spheres, box, 0, bin_min, max_bins);
+  const BinAxis axis_y = make_axis(spheres, box, 1, bin_min, max_bins);
+  // Spheres sorted by bin (counting sort): bin b holds order[start[b] .. start[b + 1]). The work
+  // arrays are kept between calls (one search per solid sub-step).
+  thread_local std::vector<int> bin_of, start, cursor, order;
+  const int n_bins = axis_x.n_bins * axis_y.n_bins;
+  bin_of.resize(n);
+  order.resize(n);
+  start.assign(n_bins + 1, 0);
+  for (int s = 0; s < n; ++s) {
     bin_of[s] = axis_x.index(spheres.centre[s][0]) + axis_x.n_bins * axis_y.index(spheres.centre[s][1]);
-    members[bin_of[s]].push_back(s);
+    ++start[bin_of[s] + 1];
   }
-  for (int s = 0; s < spheres.n_spheres(); ++s) {
+  for (int b = 0; b < n_bins; ++b) start[b + 1] += start[b];
+  cursor.assign(start.begin(), start.end() - 1);
+  for (int s = 0; s < n; ++s) order[cursor[bin_of[s]]++] = s;
+  for (int s = 0; s < n; ++s) {
     const int i = bin_of[s] % axis_x.n_bins, j = bin_of[s] / axis_x.n_bins;
+    int near_x[3], near_y[3];
+    const int n_near_x = axis_x.neighbours(i, near_x), n_near_y = axis_y.neighbours(j, near_y);
     // Each unordered pair once: from its lower index s, over distinct neighbour bins.
-    for (int jn : axis_y.neighbours(j))
-      for (int in : axis_x.neighbours(i))
-        for (int t : members[in + axis_x.n_bins * jn])
-          if (t > s) check_pair(spheres, box, s, t, result);
+    for (int b_y = 0; b_y < n_near_y; ++b_y)
+      for (int b_x = 0; b_x < n_near_x; ++b_x) {
+        const int bin = near_x[b_x] + axis_x.n_bins * near_y[b_y];
+        for (int k = start[bin]; k < start[bin + 1]; ++k)
+          if (order[k] > s) check_pair(spheres, box, s, order[k], result);
+      }
   }
+  sort_pairs(result);
+  return result;
+}
+
+PairSearchResult find_touching_pairs_body_bounds(const ContactSpheres& spheres, const WallBox& box) {
+  if (box.periodic[0] || box.periodic[1]) return find_touching_pairs_cell_list(spheres, box);
+  PairSearchResult result;
+  const int n = spheres.n_spheres();
+  if (n < 2) return result;
+  // Spheres grouped by body (counting sort): body b holds order[start[b] .. start[b + 1]).
+  const int n_bodies = *std::max_element(spheres.body.begin(), spheres.body.end()) + 1;
+  thread_local std::vector<int> start, cursor, order;
+  thread_local std::vector<std::array<double, 4>> bounds;  // x_min, x_max, y_min, y_max of the spheres
+  start.assign(n_bodies + 1, 0);
+  order.resize(n);
+  for (int s = 0; s < n; ++s) ++start[spheres.body[s] + 1];
+  for (int b = 0; b < n_bodies; ++b) start[b + 1] += start[b];
+  cursor.assign(start.begin(), start.end() - 1);
+  for (int s = 0; s < n; ++s) order[cursor[spheres.body[s]]++] = s;
+  bounds.assign(n_bodies, {HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL});
+  for (int s = 0; s < n; ++s) {
+    auto& bb = bounds[spheres.body[s]];
+    const auto& x = spheres.centre[s];
+    const double r = spheres.radius[s];
+    bb = {std::min(bb[0], x[0] - r), std::max(bb[1], x[0] + r), std::min(bb[2], x[1] - r), std::max(bb[3], x[1] + r)};
+  }
+  for (int a = 0; a < n_bodies; ++a)
+    for (int b = a + 1; b < n_bodies; ++b) {
+      ++result.n_pair_checks;  // the broad-phase test of the two bodies' boxes
+      const auto& p = bounds[a];
+      const auto& q = bounds[b];
+      // Touching spheres lie in both boxes: disjoint boxes have no touching pair (closed intervals
+      // overlap test; a pair at exactly r_i + r_j does not touch either way).
+      if (p[1] < q[0] || q[1] < p[0] || p[3] < q[2] || q[3] < p[2]) continue;
+      for (int k = start[a]; k < start[a + 1]; ++k)
+        for (int m = start[b]; m < start[b + 1]; ++m)
+          check_pair(spheres, box, std::min(order[k], order[m]), std::max(order[k], order[m]), result);
+    }
   sort_pairs(result);
   return result;
 }

@@ -37,7 +37,7 @@ void collect_pair_contacts(const ContactModel& model, const std::vector<MassSpri
                            const WallBox& box, std::vector<ActiveContact>& contacts,
                            ContactStats& stats) {
   const ContactSpheres spheres = gather_contact_spheres(model, bodies);
-  const PairSearchResult search = find_touching_pairs_cell_list(spheres, box);
+  const PairSearchResult search = find_touching_pairs_body_bounds(spheres, box);
   stats.n_pair_checks = search.n_pair_checks;
   for (const SpherePair& pair : search.pairs) {
     const int s = pair.first, t = pair.second;

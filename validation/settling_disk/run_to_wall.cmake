@@ -1,5 +1,5 @@
 # Runs `ibms run SCENE --set ... -o OUTPUT --quiet` for a settling case. Without a contact model
-# (solver/contact is not wired yet) the disk keeps sinking until its rim reaches the bottom wall;
+# (the settling scenes set none: contact.stiffness = 0) the disk keeps sinking until its rim reaches the bottom wall;
 # the run then stops with exit code 3 and "left the box", after writing everything up to that
 # point. That end is accepted here (the check verifies touchdown was reached); any other failure
 # fails the test.  usage: cmake -DIBMS=... -DSCENE=... -DOUTPUT=... -DSETS="k=v;k=v" -P run_to_wall.cmake

@@ -1,14 +1,18 @@
 // The CDS pair search (METHOD.md §1.9): the cell list (bins >= 2 r_max) finds exactly the pairs of
-// the brute-force O(n^2) search, with and without periodic directions, and a scene with one body
+// the brute-force O(n^2) search, with and without periodic directions, so does the body-box broad
+// phase (the one the contact forces use; its speed is measured in bench/, not here); a scene with one body
 // does no pair search at all (only wall contacts). CDS radii follow the current diameter.
 #define BOOST_TEST_MODULE pair_search
 #include <boost/test/unit_test.hpp>
 
 #include <ostream>
 #include <random>
+#include <string>
+#include <utility>
 
 #include "contact/cds_pair_search.hpp"
 #include "contact/contact_forces.hpp"
+#include "solid/mass_spring_body.hpp"
 #include "wheel_collision.hpp"
 
 namespace ibms {
@@ -51,6 +55,37 @@ BOOST_AUTO_TEST_CASE(cell_list_finds_exactly_the_brute_force_pairs) {
     BOOST_TEST(brute.pairs.size() > 100u);  // a configuration with plenty of contacts
     BOOST_TEST(cells.pairs == brute.pairs, boost::test_tools::per_element());  // exact equality
     BOOST_TEST(cells.n_pair_checks < brute.n_pair_checks / 10);  // the point of the cell list
+  }
+}
+
+BOOST_AUTO_TEST_CASE(body_bounds_search_finds_exactly_the_brute_force_pairs) {
+  // Random spheres (40 bodies spread over the box: their boxes overlap), and a cavity layout:
+  // 16 wheels D = 0.15, CDS radius 0.167 D, on a lattice of spacing 0.22 (rim gap 0.07 > 2 r_c),
+  // with wheels 1 and 6 moved 0.04 towards wheels 0 and 5 (rim gap 0.03: touching).
+  const WallBox box{{0.0, 0.0}, {1.0, 1.0}, {false, false}};
+  const ContactModel model = make_contact_model(1.0, 0.167);
+  std::vector<MassSpringBody> bodies;
+  for (int j = 0; j < 4; ++j)
+    for (int i = 0; i < 4; ++i) {
+      BodySpec spec;
+      const double shift = (j * 4 + i == 1 || j * 4 + i == 6) ? -0.04 : 0.0;
+      spec.centre = {0.17 + 0.22 * i + shift, 0.17 + 0.22 * j};
+      spec.diameter = 0.15;
+      spec.n_surface_points = 21;
+      spec.density = 1.5;
+      spec.spring_stiffness = 1.0;
+      bodies.push_back(build_wheel(spec));
+    }
+  BOOST_TEST_MESSAGE("layout  pairs_bounds  pairs_brute_force  checks_bounds  checks_cell_list  checks_brute_force");
+  for (const auto& [name, spheres] : {std::pair{"random", random_spheres()},
+                                      std::pair{"lattice", gather_contact_spheres(model, bodies)}}) {
+    const PairSearchResult bounds = find_touching_pairs_body_bounds(spheres, box);
+    const PairSearchResult cells = find_touching_pairs_cell_list(spheres, box);
+    const PairSearchResult brute = find_touching_pairs_brute_force(spheres, box);
+    BOOST_TEST_MESSAGE(name << "  " << bounds.pairs.size() << "  " << brute.pairs.size() << "  " << bounds.n_pair_checks
+                            << "  " << cells.n_pair_checks << "  " << brute.n_pair_checks);
+    BOOST_TEST(brute.pairs.size() > 0u);
+    BOOST_TEST(bounds.pairs == brute.pairs, boost::test_tools::per_element());  // exact equality
   }
 }
 
