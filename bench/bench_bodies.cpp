@@ -7,7 +7,8 @@
 // solid = sub-stepped body update without contacts (springs, fluid reaction, inner-fluid inertia);
 // contacts = DEM forces and pair search inside the solid sub-steps; other = schedules,
 // diagnostics and output. Ratios are against the fluid stage of the same run.
-// Usage: bench_bodies SETTLING_SCENE [--cells 100,150,200] [--until 0.3] [EXTRA_SCENE...]
+// Usage: bench_bodies SETTLING_SCENE [--cells 100,150,200] [--until 0.3] [--set k=v]... [EXTRA_SCENE...]
+//   (--set applies to the extra scenes, e.g. --set contact.stiffness=1e7 for the paper's DEM stiffness)
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -75,16 +76,17 @@ std::vector<int> parse_list(const std::string& text) {
 
 int main(int argc, char** argv) {
   if (argc < 2) {
-    std::fprintf(stderr, "usage: bench_bodies SETTLING_SCENE [--cells 100,150,200] [--until 0.3] [SCENE...]\n");
+    std::fprintf(stderr, "usage: bench_bodies SETTLING_SCENE [--cells 100,150,200] [--until 0.3] [--set k=v]... [SCENE...]\n");
     return 2;
   }
   std::vector<int> cells{100, 150, 200};
   std::string until = "0.3";
-  std::vector<std::string> extra;
+  std::vector<std::string> extra, extra_sets;
   for (int a = 2; a < argc; ++a) {
     const std::string arg = argv[a];
     if (arg == "--cells" && a + 1 < argc) cells = parse_list(argv[++a]);
     else if (arg == "--until" && a + 1 < argc) until = argv[++a];
+    else if (arg == "--set" && a + 1 < argc) extra_sets.push_back(argv[++a]);
     else extra.push_back(arg);
   }
   try {
@@ -102,8 +104,10 @@ int main(int argc, char** argv) {
       print_row(name, f);
     }
     for (const std::string& path : extra) {
-      const Figures f = run_and_time(path, {});
-      print_row(std::filesystem::path(path).parent_path().filename().string(), f);
+      const Figures f = run_and_time(path, extra_sets);
+      print_row(std::filesystem::path(path).parent_path().filename().string().substr(0, 14) + "/" +
+                    std::filesystem::path(path).stem().string(),
+                f);
       std::printf("   %-28s wall %.1f s\n", "", f.wall);
     }
   } catch (const std::exception& error) {

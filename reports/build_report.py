@@ -165,18 +165,30 @@ def case_section(out, case, build, source, results, fig_dir):
                                "reference file and excluded from the check." if has_ref else
                                "Dotted: the finest profile mirrored through the cavity centre "
                                "($u(y)\\to -u(1-y)$), which a point-symmetric solution matches.")))
-        p, h5 = figs.snapshots(case_dir, case, os.path.join(fig_dir, stem + "_snapshots.pdf"))
-        if p:
-            made += 1
-            out.append(figure(p, "Vorticity with velocity vectors (every few cells) and body outlines "
-                                 "where present, from \\texttt{%s}." % esc(os.path.basename(h5)), height=0.34))
+        # Cases with several runs of one grid (body cavities: k = 10 / 100, swelling or not) show
+        # every run, at four times each; grid-convergence cases their finest run.
+        runs = sorted(glob.glob(os.path.join(case_dir, "*.h5"))) if case.startswith("cavity_") else [None]
+        for k, run in enumerate(runs):
+            p, h5 = figs.snapshots(case_dir, case, os.path.join(fig_dir, "%s_snapshots%d.pdf" % (stem, k)),
+                                   max_panels=4 if run else 3, path=run)
+            if p:
+                made += 1
+                out.append(figure(p, "Vorticity with velocity vectors (every few cells) and body outlines "
+                                     "where present, from \\texttt{%s}." % esc(os.path.basename(h5)), height=0.34))
+        for k, f in enumerate(sorted(glob.glob(os.path.join(case_dir, "trajectories_*.csv")))):
+            p = figs.trajectories(f, os.path.join(fig_dir, "%s_trajectories%d.pdf" % (stem, k)))
+            if p:
+                made += 1
+                out.append(figure(p, "Particle centre trajectories from \\texttt{%s} (red: last position)." %
+                                  esc(os.path.basename(f)), height=0.3))
         p, files = figs.body_histories(case_dir, os.path.join(fig_dir, stem + "_bodies.pdf"))
         if p:
             made += 1
             out.append(figure(p, "Body histories from %s." %
                               ", ".join(r"\texttt{%s}" % esc(os.path.basename(f)) for f in files)))
         others = [f for f in sorted(glob.glob(os.path.join(case_dir, "*.csv")))
-                  if "_centreline_" not in f and not f.endswith("_bodies.csv")]
+                  if "_centreline_" not in f and not f.endswith("_bodies.csv")
+                  and not os.path.basename(f).startswith("trajectories_")]
         for k, f in enumerate(others[:6]):
             p = figs.generic_csv(f, os.path.join(fig_dir, "%s_csv%d.pdf" % (stem, k)))
             if p:

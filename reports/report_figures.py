@@ -112,10 +112,10 @@ def _body_outlines(group):
     return outlines
 
 
-def snapshots(case_dir, case, out, max_panels=3):
+def snapshots(case_dir, case, out, max_panels=3, path=None):
     """Vorticity (filled contours) with velocity vectors and any body outlines, from the finest
-    run's HDF5: the last snapshot, or up to max_panels evenly spread snapshots."""
-    path = _finest_h5(case_dir, case)
+    run's HDF5 (or `path`): the last snapshot, or up to max_panels evenly spread snapshots."""
+    path = path or _finest_h5(case_dir, case)
     if path is None:
         return None, None
     import h5py
@@ -195,6 +195,30 @@ def body_histories(case_dir, out):
     fig.savefig(out)
     plt.close(fig)
     return out, files
+
+
+def trajectories(path, out):
+    """Particle centre paths (papers' Fig. 4 style) from a long-format trajectories CSV
+    (time, particle, x, y, diameter) written by a case check; dot: the last position."""
+    names, units, arr, _ = data.read_table_csv(path)
+    if arr.ndim != 2 or arr.shape[0] == 0 or names[:4] != ["time", "particle", "x", "y"]:
+        return None
+    fig, ax = plt.subplots(figsize=(3.6, 3.6))
+    for particle in np.unique(arr[:, 1]):
+        rows = arr[arr[:, 1] == particle]
+        ax.plot(rows[:, 2], rows[:, 3], lw=0.9)
+        ax.plot(rows[-1, 2], rows[-1, 3], "o", color="r", ms=3)
+    ax.set_xlim(0, 1)
+    ax.set_ylim(0, 1)
+    ax.set_aspect("equal")
+    ax.set_xlabel("x")
+    ax.set_ylabel("y")
+    ax.set_title("%.3g <= t <= %.3g" % (arr[:, 0].min(), arr[:, 0].max()))
+    ax.grid(alpha=0.3)
+    fig.tight_layout()
+    fig.savefig(out)
+    plt.close(fig)
+    return out
 
 
 def generic_csv(path, out):

@@ -89,7 +89,11 @@ int main(int argc, char** argv) {
     const std::string out_dir = argv[6];
     write_trajectories(plain, t_stop, t_end, out_dir + "/trajectories_nonswelling.csv", "non-swelling");
     write_trajectories(swell, t_stop, t_end, out_dir + "/trajectories_swelling.csv", "swelling");
-    const std::string name = "cavity_swelling_particles";
+    // Case name in results.csv: the output folder's name (cavity_swelling_particles, or
+    // cavity_swelling_particles_dem1e7 for the slow set), as the report finds its figures there.
+    std::string name = out_dir;
+    while (!name.empty() && name.back() == '/') name.pop_back();
+    name = name.substr(name.find_last_of('/') + 1);
     bool all = true;
     for (const auto& [label, s] : {std::pair{"non-swelling", &plain}, std::pair{"swelling", &swell}}) {
       const double reached = s->at("time").back();
