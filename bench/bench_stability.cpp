@@ -177,12 +177,12 @@ int main(int argc, char** argv) {
     Scene s = settling_scene(1e-3, 1e6);
     Simulation sim(s);
     sim.fixed_solid_substeps = 1;
-    const std::string path = out_dir + "/stability_demo.h5";
+    const std::string path = out_dir + "/demo_unstable_fixed_step.h5";
     try {
       run_simulation(sim, {path, /*quiet=*/true});
       std::printf("demo: the fixed-step run did not blow up\n");
     } catch (const BlowUpError& e) {
-      const validation::SeriesTable t = validation::read_series_csv(out_dir + "/stability_demo_bodies.csv");
+      const validation::SeriesTable t = validation::read_series_csv(out_dir + "/demo_unstable_fixed_step_bodies.csv");
       long non_finite = 0, values = 0;
       for (const auto& [name, column] : t)
         for (double v : column) { ++values; non_finite += !std::isfinite(v); }
