@@ -22,6 +22,7 @@ import time
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import report_data as data  # noqa: E402
 import report_figures as figs  # noqa: E402
+import report_bench as bench  # noqa: E402
 from report_latex import esc, num, status_cell, figure, longtable  # noqa: E402
 
 PREAMBLE = r"""\documentclass[10pt,a4paper]{article}
@@ -253,9 +254,14 @@ def main():
         out = [PREAMBLE % (esc(time.strftime("%Y-%m-%d %H:%M")), esc(build))]
         summary_section(out, results, tests)
         verification_section(out, conv, fig_dir)
+        bench.kernel_moment_section(out, build)
         for case in case_dirs(build, source, results):
             case_section(out, case, build, source, results, fig_dir)
+        bench.work_precision_section(out, build, fig_dir)
+        bench.stability_section(out, build, fig_dir)
+        bench.overhead_section(out, build)
         environment_section(out, build, source, tests)
+        bench.run_times_section(out, tests)
         out.append(r"\end{document}")
         fig_files = glob.glob(os.path.join(fig_dir, "*.pdf"))
         for p in fig_files:  # figures are referenced by base name from the LaTeX work directory

@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """ctest `report_builds_from_synthetic_outputs`: builds the report from a tiny synthetic build
 directory (results.csv with a rerun duplicate and LaTeX special characters, one centre-line
-profile pair, one convergence table, a ctest log) and checks that a PDF comes out.
+profile pair, one convergence table, a ctest log, a kernel-moment table, a work-precision table,
+a stability map and a stage-cost table) and checks that a PDF comes out.
 usage: test_build_report.py WORK_DIR     exit 0 pass, 1 fail, 77 skipped (no LaTeX / modules)"""
 import os
 import shutil
@@ -42,6 +43,29 @@ with open(os.path.join(work, "Testing", "Temporary", "LastTest.log"), "w") as f:
     f.write("1/1 Testing: test_x\n1/1 Test: test_x\nCommand: x\nTest time =   0.50 sec\n"
             "----------------------------------------------------------\nTest Passed.\n")
 
+# Inputs of the issue-5 sections (reports/report_bench.py): kernel moments, work-precision,
+# stability map, per-stage cost.
+with open(os.path.join(work, "verification_results", "kernel_moments.csv"), "w") as f:
+    f.write("kernel,moment,expected,max_error,min_sum,max_sum,tolerance\n")
+    f.write('roma3,"sum phi","1",2.2e-16,0.9999999999999998,1.0000000000000002,1e-14\n')
+    f.write('roma3,"sum over even j of phi","in [1/3, 2/3]",nan,0.3333333,0.6666667,1e-14\n')
+os.makedirs(os.path.join(work, "bench"))
+with open(os.path.join(work, "bench", "work_precision_mms.csv"), "w") as f:
+    f.write("# bench_work_precision mms (level quick): error = L2 norm of u_x & 50%\n")
+    f.write("N,h,steps,wall_seconds,error\n")
+    for n in (16, 32, 64, 128):
+        f.write("%d,%g,%d,%g,%g\n" % (n, 1 / n, 4 * n, 1e-6 * n ** 3, 1.0 / n ** 2))
+with open(os.path.join(work, "bench", "stability_synthetic.csv"), "w") as f:
+    f.write("# bench_stability synthetic: fluid dt [s] against spring_stiffness [-]\n")
+    f.write("mode,dt,stiffness,substeps,outcome,max_area_change,max_speed_ratio,max_contact_pairs,message\n")
+    f.write('auto,0.001,1000,12,stable,0.01,1,0,""\n')
+    f.write('fixed,0.001,1000,1,blow-up,0.01,1,0,"blow-up at step 3, t = 0.003: body 0 point 1 left the box at x = -1_0"\n')
+    f.write('fixed,0.0001,1000,1,unstable,0.6,1,0,"rim area changed by more than 50 % at step 7"\n')
+with open(os.path.join(work, "bench", "overhead.csv"), "w") as f:
+    f.write("scene,stage,seconds_per_step,calls\nfluid_only_cavity_128,simulation_step,,0.0014\n"
+            "fluid_only_cavity_128,bare_fluid_solver_step,,0.00136\nfluid_only_cavity_128,ratio,,1.03\n"
+            "fluid_only_cavity_128,predictor,0.0009,110\nfluid_only_cavity_128,pair_checks_total,,0\n")
+
 pdf = os.path.join(work, "report.pdf")
 proc = subprocess.run([sys.executable, os.path.join(here, "build_report.py"), "--build", work,
                        "--output", pdf], capture_output=True, text=True, timeout=240)
@@ -55,6 +79,12 @@ size = os.path.getsize(pdf)
 if head != b"%PDF-" or size < 10000:
     print("FAIL: %s is not a plausible PDF (%d bytes)" % (pdf, size))
     sys.exit(1)
+if shutil.which("pdftotext"):  # the issue-5 sections are filled: slope of n^-2 error against n^3 time is -2/3
+    text = subprocess.run(["pdftotext", pdf, "-"], capture_output=True, text=True).stdout
+    for expected in ("-0.667", "Stability map summary", "Kernel moments", "ratio 1.03"):
+        if expected not in text:
+            print("FAIL: '%s' not in the report text" % expected)
+            sys.exit(1)
 leftovers = [d for d in os.listdir(work) if d.startswith("report-")]
 if leftovers:
     print("FAIL: temporary directories left behind: %s" % leftovers)

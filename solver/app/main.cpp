@@ -1,5 +1,6 @@
 // ibms command line (CLI11): `ibms run SCENE [--set key=value]... [-o FILE] [--quiet]` and
-// `ibms info SCENE [--set key=value]...`. Exit codes: 0 success, 2 bad input, 3 blow-up, 1 other.
+// `ibms info SCENE [--set key=value]...`, `ibms compare CASE FILE... [--validation-dir DIR]`
+// (exit 0 pass, 1 fail, 2 bad input; docs/compare.md). Exit codes: 0 success, 2 bad input, 3 blow-up, 1 other.
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
@@ -7,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "app/compare.hpp"
 #include "app/info.hpp"
 #include "core/errors.hpp"
 #include "scene/scene_reader.hpp"
@@ -46,9 +48,22 @@ int main(int argc, char** argv) {
   info->add_option("scene", scene_path, "scene file (TOML)")->required();
   info->add_option("--set", overrides, "override a scene key: section.key=value (repeatable)");
 
+  std::string case_name, validation_dir;
+  std::vector<std::string> compare_files;
+  CLI::App* compare = app.add_subcommand("compare", "compare another code's CSV of a case's standard quantities "
+                                                    "with the case's checks and ibms's own reference (docs/compare.md)");
+  compare->add_option("case", case_name, "validation case (lid_driven_cavity_re100|re400|re1000, "
+                                         "two_sided_cavity_re100, settling_disk)")->required();
+  compare->add_option("files", compare_files, "CSV file(s): y,u and x,v profiles, or t,v[,y] history")->required();
+  compare->add_option("--validation-dir", validation_dir, "folder with <case>/reference/ (default: the source tree's "
+                                                          "validation/ or $IBMS_VALIDATION_DIR)");
+
   CLI11_PARSE(app, argc, argv);
   try {
     if (run->parsed()) return run_command(scene_path, overrides, output, quiet);
+    if (compare->parsed())
+      return ibms::compare_case(case_name, compare_files,
+                                validation_dir.empty() ? ibms::default_validation_dir() : validation_dir);
     if (info->parsed()) {
       const ibms::Scene scene = ibms::read_scene_file(scene_path, overrides);
       std::fputs(ibms::describe_scene(scene).c_str(), stdout);

@@ -28,7 +28,7 @@ int substeps_for(const std::vector<MassSpringBody>& bodies, double dt, double ma
 int advance_bodies(const SolidStepInputs& in, const std::vector<SwellingSchedule>& swelling,
                    const ContactForces& contact_forces, std::vector<BodyCoupling>& coupling,
                    std::vector<std::vector<Vec2>>& contact_work, std::vector<MassSpringBody>& bodies) {
-  const int n_sub = substeps_for(bodies, in.dt, in.max_substep);
+  const int n_sub = in.fixed_substeps > 0 ? in.fixed_substeps : substeps_for(bodies, in.dt, in.max_substep);
   const double dt_sub = in.dt / n_sub;
   contact_work.resize(bodies.size());
   for (std::size_t b = 0; b < bodies.size(); ++b) contact_work[b].resize(bodies[b].n_points());

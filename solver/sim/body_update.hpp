@@ -35,6 +35,7 @@ struct SolidStepInputs {
   double fluid_density = 0.0;        // rho_f [mass/length^3]
   Vec2 gravity{0.0, 0.0};            // g [length/time^2]
   double max_substep = HUGE_VAL;     // further sub-step bound, e.g. the contact duration / 20 [time]
+  int fixed_substeps = 0;            // > 0: exactly this many sub-steps, no stability bound (stability studies)
 };
 
 // Advances all bodies from t^n to t^n + dt; returns the number of sub-steps taken.

@@ -54,8 +54,10 @@ Simulation::Simulation(const Scene& scene)
     // The contact seam of body_update.hpp: DEM forces every sub-step, stats merged per step.
     contact_forces = [this](const std::vector<MassSpringBody>& bodies, double /*time*/,
                             std::vector<std::vector<Vec2>>& forces) {
-      auto t = timers_.time(Stage::contacts);
-      last_contact_stats.include(add_contact_forces(contact_model_, bodies, contact_box_, forces));
+      auto timer = timers_.time(Stage::contacts);
+      const ContactStats stats = add_contact_forces(contact_model_, bodies, contact_box_, forces);
+      total_pair_checks += stats.n_pair_checks;
+      last_contact_stats.include(stats);
     };
   }
   // Variant K: I_T at t = 0 (region X^0, velocity u^0), the first "previous" value.
@@ -78,6 +80,8 @@ std::vector<std::string> Simulation::stage_names() const {
                          ? "inner-fluid inertia (variant K: exact triangle-cell overlaps, Reynolds-transport form)"
                          : "inner-fluid inertia off (variant A)");
     stages.push_back("bodies (sub-stepped symplectic Euler: springs, buoyant gravity, swelling, contact hook)");
+    if (has_contacts()) stages.push_back("  contacts (DEM spring-dashpots on CDS, every sub-step; walls)");
+    if (has_pair_search()) stages.push_back("  pair search (cell list of CDS, every sub-step)");
   }
   stages.push_back("diagnostics");
   if (scene_.run.steady_tolerance > 0) stages.push_back("steady-state stop");

@@ -56,6 +56,12 @@ class Simulation {
   bool has_contacts() const { return contact_model_.enabled(); }
   const ContactModel& contact_model() const { return contact_model_; }
   ContactStats last_contact_stats;  // merged over the sub-steps of the latest step
+  long total_pair_checks = 0;       // CDS pairs examined by the pair search over the run [-]
+  // Pair search runs only with contacts and two or more bodies (DESIGN.md §3: one body, no pair search).
+  bool has_pair_search() const { return has_contacts() && bodies_.size() > 1; }
+  // > 0: the solid takes exactly this many sub-steps per fluid step, ignoring its stability bound
+  // (bench/bench_stability.cpp's fixed-step runs); 0: automatic sub-stepping (METHOD.md §5.3).
+  int fixed_solid_substeps = 0;
 
   ProjectionStats last_projection;  // diagnostics of the latest step
   int last_n_substeps = 0;          // solid sub-steps of the latest step [-]

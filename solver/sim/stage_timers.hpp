@@ -7,12 +7,12 @@
 
 namespace ibms {
 
-// `contacts` (DEM forces and pair search, every solid sub-step) runs inside `bodies`: the solid
-// stage proper is bodies - contacts. The others do not nest.
-enum class Stage { schedules, predictor, ib_forcing, projection, bodies, contacts, diagnostics, output, count };
+// `contacts` (DEM forces incl. the CDS pair search, once per solid sub-step) runs inside `bodies`,
+// so its time is also part of the bodies time.
+enum class Stage { schedules, predictor, ib_forcing, projection, bodies, diagnostics, output, contacts, count };
 
 inline constexpr std::array<std::string_view, static_cast<int>(Stage::count)> stage_names{
-    "schedules", "predictor", "ib_forcing", "projection", "bodies", "contacts", "diagnostics", "output"};
+    "schedules", "predictor", "ib_forcing", "projection", "bodies", "diagnostics", "output", "contacts"};
 
 class StageTimers {
  public:

@@ -35,7 +35,8 @@ void advance_one_step(Simulation& sim, double dt) {
                             sim.coupling());  // F_int = rho_f dI/dt (variant K) or 0 (A), §1.7
     sim.last_contact_stats = ContactStats{};
     const double contact_limit = sim.has_contacts() ? contact_substep(sim.contact_model(), sim.bodies()) : HUGE_VAL;
-    sim.last_n_substeps = advance_bodies({time_n, dt, sim.fluid_density(), sim.scene().fluid.gravity, contact_limit},
+    sim.last_n_substeps = advance_bodies({time_n, dt, sim.fluid_density(), sim.scene().fluid.gravity, contact_limit,
+                                          sim.fixed_solid_substeps},
                                          sim.swelling(), sim.contact_forces, sim.coupling(), sim.contact_work(),
                                          sim.bodies());  // n_sub symplectic Euler sub-steps, §5.3
     sim.total_substeps += sim.last_n_substeps;

@@ -1,5 +1,7 @@
 // Discrete moment conditions of the four delta kernels, METHOD.md §4 table and appendix A9:
 // sums over the integer nodes j of phi(x - j) for a sweep of 1201 marker offsets x in [0, 1].
+// Each moment's row (kernel, moment, expected, max error, range of the sum, tolerance) also goes
+// to $IBMS_RESULTS_DIR/kernel_moments.csv for the report's kernel-moment table.
 #define BOOST_TEST_MODULE delta_kernel
 #include <boost/test/unit_test.hpp>
 
@@ -10,6 +12,7 @@
 #include <string>
 
 #include "ibm/delta_kernel.hpp"
+#include "../common/results_csv.hpp"
 
 using namespace ibms;
 
@@ -47,6 +50,16 @@ Sweep sweep(KernelKind kernel, const std::function<double(double, double)>& g,
 
 const auto zero = [](double) { return 0.0; };
 
+// One row of kernel_moments.csv: kernel,moment,expected,max_error,min_sum,max_sum,tolerance.
+void record_moment(KernelKind kernel, const std::string& moment, const std::string& expected, const Sweep& s,
+                   double tolerance) {
+  using verification::csv_number;
+  verification::append_results_csv(
+      "kernel_moments.csv", "kernel,moment,expected,max_error,min_sum,max_sum,tolerance",
+      {kernel_name(kernel) + ",\"" + moment + "\",\"" + expected + "\"," + csv_number(s.max_error) + "," +
+       csv_number(s.min_sum) + "," + csv_number(s.max_sum) + "," + csv_number(tolerance)});
+}
+
 }  // namespace
 
 BOOST_AUTO_TEST_CASE(stencil_weights_equal_kernel_phi_and_cover_the_support) {
@@ -74,6 +87,7 @@ BOOST_AUTO_TEST_CASE(kernel_weights_sum_to_one) {
   for (KernelKind kernel : all_kernel_kinds) {
     const Sweep s = sweep(kernel, [](double, double p) { return p; }, [](double) { return 1.0; });
     BOOST_TEST_MESSAGE(kernel_name(kernel) << "    " << s.max_error);
+    record_moment(kernel, "sum phi", "1", s, round_off);
     BOOST_TEST(s.max_error <= round_off);
   }
 }
@@ -91,6 +105,7 @@ BOOST_AUTO_TEST_CASE(first_moment_vanishes_except_cosine_which_follows_its_close
                           is_cosine ? std::function<double(double)>(cosine_moment) : zero);
     BOOST_TEST_MESSAGE(kernel_name(kernel) << "    " << s.max_error << "    [" << s.min_sum
                                            << ", " << s.max_sum << "]");
+    record_moment(kernel, "sum (x-j) phi", is_cosine ? "closed form (A9)" : "0", s, round_off);
     BOOST_TEST(s.max_error <= round_off);
     if (is_cosine) BOOST_TEST(s.max_sum > 0.02);  // A9: "error up to +-0.021"
   }
@@ -110,6 +125,12 @@ BOOST_AUTO_TEST_CASE(even_and_odd_node_sums_are_one_half_except_roma3) {
       hi = std::max(hi, even);
     }
     BOOST_TEST_MESSAGE(kernel_name(kernel) << "    " << worst << "    [" << lo << ", " << hi << "]");
+    Sweep even_sums;
+    even_sums.max_error = kernel == KernelKind::roma3 ? NAN : worst;
+    even_sums.min_sum = lo;
+    even_sums.max_sum = hi;
+    record_moment(kernel, "sum over even j of phi", kernel == KernelKind::roma3 ? "in [1/3, 2/3]" : "1/2", even_sums,
+                  round_off);
     if (kernel == KernelKind::roma3) {
       BOOST_TEST(lo >= 1.0/3.0 - round_off);  // A9: Roma 3-point sums range over [1/3, 2/3]
       BOOST_TEST(hi <= 2.0/3.0 + round_off);
@@ -128,6 +149,11 @@ BOOST_AUTO_TEST_CASE(sum_of_squares_is_the_documented_constant) {
     BOOST_TEST_MESSAGE(kernel_name(kernel) << "    " << std::setprecision(16) << s.min_sum
                                            << "    " << s.max_sum);
     BOOST_TEST(s.max_sum - s.min_sum <= round_off);
+    const double constant = kernel == KernelKind::bkp6 ? 0.3257776154 : exact[static_cast<int>(kernel)];
+    Sweep squares = s;
+    squares.max_error = std::max(std::abs(s.max_sum - constant), std::abs(s.min_sum - constant));
+    record_moment(kernel, "sum phi^2", kernel == KernelKind::bkp6 ? "0.3257776154 (C)" : std::to_string(constant).substr(0, 5),
+                  squares, kernel == KernelKind::bkp6 ? 1e-10 : round_off);
     if (kernel == KernelKind::bkp6) BOOST_TEST(std::abs(s.max_sum - 0.3257776154) <= 1e-10);
     else BOOST_TEST(std::abs(s.max_sum - exact[static_cast<int>(kernel)]) <= round_off);
   }
@@ -140,6 +166,8 @@ BOOST_AUTO_TEST_CASE(bkp6_second_moment_is_K_and_third_moment_vanishes) {
   const Sweep third = sweep(KernelKind::bkp6, [](double r, double p) { return r*r*r*p; }, zero);
   BOOST_TEST_MESSAGE("bkp6: max|sum r^2 phi - K| = " << second.max_error
                      << ", max|sum r^3 phi| = " << third.max_error << ", K = " << K);
+  record_moment(KernelKind::bkp6, "sum (x-j)^2 phi", "K = 59/60 - sqrt(29)/20", second, round_off);
+  record_moment(KernelKind::bkp6, "sum (x-j)^3 phi", "0", third, round_off);
   BOOST_TEST(std::abs(bkp6_second_moment() - 0.7140750929766) <= 1e-13);  // 13 digits in A9
   BOOST_TEST(second.max_error <= round_off);
   BOOST_TEST(third.max_error <= round_off);

@@ -1,0 +1,201 @@
+// Work-precision (issue 5 item 3): error against wall time over at least four resolutions for
+//   mms            unsteady manufactured solution (verification/fluid/manufactured_solution.hpp) to
+//                  t = 1, dt = 0.25 h; error: L2 norm of u - u_exact over the cells;
+//   cavity_re100   lid-driven cavity Re 100 run to its steady-state criterion (the case's scene);
+//   cavity_re1000  the same at Re 1000; error of both: max |centre-line velocity - ibms 256^2
+//                  reference| (validation/<case>/reference/ibms_centreline_*.csv, the finest run,
+//                  the metric of `ibms compare`), so the finest levels also see the reference's own error;
+//   settling_disk  the settling disk to t = 0.7 s (past the maximum, before touchdown); error:
+//                  |max settling speed / ibms 400 x 1200 reference - 1| (reference/ibms_settling_history.csv).
+// Wall time is the whole run (cavity and disk through run_simulation, with its output writing).
+// Writes <out>/work_precision_<case>.csv (N,h,steps,wall_seconds,error) with the least-squares
+// slope of log(error) against log(wall time) in a comment line, and work_precision_slopes.csv.
+// usage: bench_work_precision [quick|default] [out_dir] [case...]
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "fluid/fluid_solver.hpp"
+#include "scene/scene_reader.hpp"
+#include "sim/diagnostics.hpp"
+#include "sim/run.hpp"
+#include "validation/common/profile_table.hpp"
+#include "validation/settling_disk/body_series.hpp"
+#include "verification/fluid/manufactured_solution.hpp"
+
+#ifndef IBMS_SOURCE_DIR
+#define IBMS_SOURCE_DIR "."
+#endif
+#ifndef IBMS_BENCH_OUTPUT_DIR
+#define IBMS_BENCH_OUTPUT_DIR "bench"
+#endif
+
+using namespace ibms;
+using clock_type = std::chrono::steady_clock;
+
+namespace {
+
+const std::string source_dir = IBMS_SOURCE_DIR;
+
+struct Point { int n; double h; long steps; double seconds; double error; };
+
+double seconds_since(clock_type::time_point start) {
+  return std::chrono::duration<double>(clock_type::now() - start).count();
+}
+
+// Unsteady MMS to t = 1 with dt = 0.25 h (as the convergence test), forcing at t^{n+1/2}.
+Point run_mms(int n) {
+  verification::ManufacturedSolution ms;
+  ms.steady = false;
+  const Grid g(n, n, 1.0, 1.0);
+  const double dt = 0.25 / n;
+  const auto start = clock_type::now();
+  FluidSolver solver(g, ms.viscosity, FluidBoundaries{});
+  FluidState state = solver.make_state();
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      state.velocity_x(i, j) = ms.u(g.x_centre(i), g.y_centre(j), 0.0);
+      state.velocity_y(i, j) = ms.v(g.x_centre(i), g.y_centre(j), 0.0);
+      state.pressure(i, j) = ms.p(g.x_centre(i), g.y_centre(j), -0.5 * dt);
+    }
+  solver.initialise_faces(state);
+  CellField fx(g), fy(g);
+  const long n_steps = std::lround(1.0 / dt);
+  for (long s = 0; s < n_steps; ++s) {
+    const double t_half = state.time + 0.5 * dt;
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        fx(i, j) = ms.force_x(g.x_centre(i), g.y_centre(j), t_half);
+        fy(i, j) = ms.force_y(g.x_centre(i), g.y_centre(j), t_half);
+      }
+    solver.predict_momentum(state, dt, &fx, &fy);
+    solver.project_smac(state, dt);
+  }
+  const double seconds = seconds_since(start);
+  double sum = 0.0;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const double e = state.velocity_x(i, j) - ms.u(g.x_centre(i), g.y_centre(j), state.time);
+      sum += e * e;
+    }
+  return {n, 1.0 / n, n_steps, seconds, std::sqrt(sum / (n * n))};
+}
+
+// Cavity case at n^2 to its steady-state criterion; error against the ibms 256^2 reference.
+Point run_cavity(const std::string& case_name, int n, const std::string& work_dir) {
+  const std::string dir = source_dir + "/validation/" + case_name;
+  Scene scene = read_scene_file(dir + "/scene.toml",
+                                {"domain.cells_x=" + std::to_string(n), "domain.cells_y=" + std::to_string(n)});
+  const auto start = clock_type::now();
+  Simulation sim(scene);
+  const RunSummary summary =
+      run_simulation(sim, {work_dir + "/" + case_name + "_" + std::to_string(n) + ".h5", /*quiet=*/true});
+  const double seconds = seconds_since(start);
+  const CentrelineProfiles p = centreline_profiles(sim);
+  double worst = 0.0;
+  for (int comp = 0; comp < 2; ++comp) {
+    const validation::Table ref =
+        validation::read_table(dir + "/reference/ibms_centreline_" + (comp == 0 ? "u" : "v") + ".csv");
+    const std::vector<double>& s = comp == 0 ? p.y : p.x;
+    const std::vector<double>& f = comp == 0 ? p.u : p.v;
+    for (std::size_t k = 0; k < ref.columns[0].size(); ++k)
+      worst = std::max(worst, std::abs(validation::interpolate(s, f, ref.columns[0][k]) - ref.columns[1][k]));
+  }
+  return {n, 1.0 / n, summary.steps, seconds, worst};
+}
+
+double max_settling_speed(const std::vector<double>& v) {
+  double best = 0.0;
+  for (double x : v) best = std::max(best, -x);
+  return best;
+}
+
+// Settling disk with n_x cells across the 2 cm width (n_y = 3 n_x, rim spacing ~h) to t = 0.7 s.
+Point run_settling(int n_x, const std::string& work_dir) {
+  const std::string dir = source_dir + "/validation/settling_disk";
+  const int markers = static_cast<int>(std::lround(0.4 * n_x));
+  Scene scene = read_scene_file(dir + "/scene.toml",
+                                {"domain.cells_x=" + std::to_string(n_x), "domain.cells_y=" + std::to_string(3 * n_x),
+                                 "bodies.0.n_surface_points=" + std::to_string(markers), "run.end_time=0.7"});
+  const std::string out = work_dir + "/settling_disk_" + std::to_string(n_x) + ".h5";
+  const auto start = clock_type::now();
+  Simulation sim(scene);
+  const RunSummary summary = run_simulation(sim, {out, /*quiet=*/true});
+  const double seconds = seconds_since(start);
+  const validation::SeriesTable series = validation::read_series_csv(work_dir + "/settling_disk_" + std::to_string(n_x) + "_bodies.csv");
+  const validation::SeriesTable ref = validation::read_series_csv(dir + "/reference/ibms_settling_history.csv");
+  const double speed = max_settling_speed(series.at("body_000/velocity_y"));
+  const double speed_ref = max_settling_speed(ref.at("v"));
+  return {n_x, 2.0 / n_x, summary.steps, seconds, std::abs(speed / speed_ref - 1.0)};
+}
+
+// Least-squares slope of log(error) against log(seconds) over all points.
+double work_precision_slope(const std::vector<Point>& points) {
+  double sx = 0, sy = 0, sxx = 0, sxy = 0, m = 0;
+  for (const Point& p : points) {
+    const double x = std::log(p.seconds), y = std::log(p.error);
+    sx += x; sy += y; sxx += x * x; sxy += x * y; m += 1;
+  }
+  return (m * sxy - sx * sy) / (m * sxx - sx * sx);
+}
+
+struct Case {
+  std::string name, error_definition;
+  std::vector<int> quick, standard;
+  std::function<Point(int, const std::string&)> run;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::string level = argc > 1 ? argv[1] : "default";
+  const std::string out_dir = argc > 2 ? argv[2] : IBMS_BENCH_OUTPUT_DIR;
+  std::vector<std::string> only;
+  for (int a = 3; a < argc; ++a) only.push_back(argv[a]);
+  if (level != "quick" && level != "default") {
+    std::fprintf(stderr, "usage: %s [quick|default] [out_dir] [case...]\n", argv[0]);
+    return 2;
+  }
+  const std::string work_dir = out_dir + "/work_precision_runs";
+  std::filesystem::create_directories(work_dir);
+  const std::vector<Case> cases{
+      {"mms", "L2 norm of u - u_exact at t = 1 (unsteady manufactured solution, dt = 0.25 h)",
+       {16, 32, 64, 128}, {16, 32, 64, 128, 256}, [](int n, const std::string&) { return run_mms(n); }},
+      {"cavity_re100", "max |centre-line velocity - ibms 256^2 reference| (lid speed 1), steady state",
+       {16, 32, 48, 64}, {16, 32, 64, 96, 128},
+       [](int n, const std::string& w) { return run_cavity("lid_driven_cavity_re100", n, w); }},
+      {"cavity_re1000", "max |centre-line velocity - ibms 256^2 reference| (lid speed 1), steady state",
+       {32, 48, 64, 80}, {32, 48, 64, 96, 128},
+       [](int n, const std::string& w) { return run_cavity("lid_driven_cavity_re1000", n, w); }},
+      {"settling_disk", "|max settling speed / ibms 400x1200 reference - 1| (run to t = 0.7 s)",
+       {40, 50, 60, 75}, {50, 75, 100, 150}, run_settling}};
+  std::ofstream slopes(out_dir + "/work_precision_slopes.csv");
+  slopes << "case,slope,n_points,error\n";
+  for (const Case& c : cases) {
+    if (!only.empty() && std::find(only.begin(), only.end(), c.name) == only.end()) continue;
+    std::printf("%s: %s\n  %6s %10s %8s %12s %12s\n", c.name.c_str(), c.error_definition.c_str(), "N", "h", "steps",
+                "wall [s]", "error");
+    std::vector<Point> points;
+    for (int n : level == "quick" ? c.quick : c.standard) {
+      points.push_back(c.run(n, work_dir));
+      const Point& p = points.back();
+      std::printf("  %6d %10.4g %8ld %12.4g %12.4e\n", p.n, p.h, p.steps, p.seconds, p.error);
+      std::fflush(stdout);
+    }
+    const double slope = work_precision_slope(points);
+    std::printf("  slope d log(error) / d log(wall time) = %.3f\n", slope);
+    std::ofstream csv(out_dir + "/work_precision_" + c.name + ".csv");
+    csv << "# bench_work_precision " << c.name << " (level " << level << "): error = " << c.error_definition << "\n";
+    csv << "# least-squares slope of log(error) against log(wall_seconds) over all rows: " << slope << "\n";
+    csv << "N,h,steps,wall_seconds,error\n";
+    for (const Point& p : points) csv << p.n << "," << p.h << "," << p.steps << "," << p.seconds << "," << p.error << "\n";
+    slopes << c.name << "," << slope << "," << points.size() << ",\"" << c.error_definition << "\"\n";
+  }
+  return 0;
+}

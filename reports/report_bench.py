@@ -1,0 +1,239 @@
+"""Report sections fed by bench/ and by verification tables other than convergence (issue 5):
+kernel-moment table (BUILD/verification_results/kernel_moments.csv, written by test_delta_kernel),
+work-precision plots with fitted slopes (BUILD/bench/work_precision_<case>.csv), stability maps
+(BUILD/bench/stability_<case>.csv), the cost of what a scene uses (BUILD/bench/overhead.csv) and
+run times per validation case (ctest logs). Reads files only; the one fit is the least-squares
+slope of log(error) against log(wall time), the same fit bench_work_precision prints."""
+import csv
+import glob
+import math
+import os
+import re
+from collections import OrderedDict
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+from report_latex import esc, num, figure, longtable  # noqa: E402
+
+
+def _rows(path):
+    """Data rows of a CSV with '#' comment lines and one header line, as dicts (None if absent)."""
+    if not os.path.isfile(path):
+        return None
+    with open(path, encoding="utf-8", errors="replace") as f:
+        lines = [line for line in f if line.strip() and not line.startswith("#")]
+    return list(csv.DictReader(lines))
+
+
+def _comments(path):
+    with open(path, encoding="utf-8", errors="replace") as f:
+        return [line[1:].strip() for line in f if line.startswith("#")]
+
+
+def _float(text):
+    try:
+        return float(text)
+    except (TypeError, ValueError):
+        return math.nan
+
+
+def _plain(text):
+    """A number as %.8g, plain text (ranges in a narrow column)."""
+    value = _float(text)
+    return "nan" if math.isnan(value) else ("%.8g" % value).replace("-", "$-$")
+
+
+def log_log_slope(x, y):
+    """Least-squares slope of log y against log x."""
+    lx, ly = [math.log(v) for v in x], [math.log(v) for v in y]
+    n = len(lx)
+    mx, my = sum(lx) / n, sum(ly) / n
+    sxx = sum((a - mx) ** 2 for a in lx)
+    return sum((a - mx) * (b - my) for a, b in zip(lx, ly)) / sxx if sxx > 0 else math.nan
+
+
+def kernel_moment_section(out, build):
+    out.append(r"\section{Kernel moments}")
+    path = os.path.join(build, "verification_results", "kernel_moments.csv")
+    rows = _rows(path)
+    if not rows:
+        out.append(r"\emph{Not run: \texttt{verification\_results/kernel\_moments.csv} not found "
+                   r"(written by \texttt{test\_delta\_kernel} under ctest).}" + "\n")
+        return
+    last = OrderedDict()
+    for r in rows:  # a rerun appends again: the last row per kernel and moment wins
+        last[(r["kernel"], r["moment"])] = r
+    out.append("Discrete moment sums of the four regularised delta kernels over 1201 marker offsets "
+               "in $[0,1]$ (\\texttt{verification/ibm/test\\_delta\\_kernel.cpp}, METHOD.md \\S4 and "
+               "A9): the largest deviation from the expected value and the range of the sum.\n")
+    table = [[r"\texttt{%s}" % esc(k), esc(m), esc(r["expected"]), num(r["max_error"], 3),
+              "[%s, %s]" % (_plain(r["min_sum"]), _plain(r["max_sum"])), num(r["tolerance"], 2)]
+             for (k, m), r in last.items()]
+    out.append(longtable(r"lp{3.4cm}p{3.2cm}rp{3.6cm}r",
+                         ["kernel", "moment", "expected", "max error", "range of the sum", "tolerance"],
+                         table, caption="Kernel moments (from \\texttt{kernel\\_moments.csv}; nan: "
+                                        "a range claim, no single expected value)."))
+
+
+def work_precision_section(out, build, fig_dir):
+    out.append(r"\section{Work-precision: error against run time}")
+    files = sorted(glob.glob(os.path.join(build, "bench", "work_precision_*.csv")))
+    files = [f for f in files if not f.endswith("_slopes.csv")]
+    if not files:
+        out.append(r"\emph{Not run: no \texttt{bench/work\_precision\_*.csv} (run "
+                   r"\texttt{bench/bench\_work\_precision}).}" + "\n")
+        return
+    out.append("From \\texttt{bench/bench\\_work\\_precision}: each case at four or more "
+               "resolutions, error against the wall time of the whole run on this machine "
+               "(shared, so times carry some noise). The slope is the least-squares fit of "
+               "$\\log(\\mathrm{error})$ against $\\log(\\mathrm{time})$ over all points; for a "
+               "second-order method with $\\Delta t \\propto h$ in 2D the ideal is $-2/3$.\n")
+    cases, table = [], []
+    for f in files:
+        rows = _rows(f)
+        pts = [(_float(r["wall_seconds"]), _float(r["error"]), r["N"]) for r in rows or []]
+        pts = [p for p in pts if p[0] > 0 and p[1] > 0]
+        if len(pts) < 2:
+            continue
+        name = os.path.basename(f)[len("work_precision_"):-len(".csv")]
+        slope = log_log_slope([p[0] for p in pts], [p[1] for p in pts])
+        definition = next((c.split("error = ", 1)[1] for c in _comments(f) if "error = " in c), "")
+        cases.append((name, pts, slope))
+        table.append([r"\texttt{%s}" % esc(name), ", ".join(p[2] for p in pts), num(slope, 3),
+                      num(pts[-1][1], 3), num(pts[-1][0], 3), esc(definition)])
+    if not cases:
+        out.append(r"\emph{No usable rows in the work-precision files.}" + "\n")
+        return
+    out.append(longtable(r"lp{2.4cm}rrrp{6.2cm}", ["case", "N", "slope", "finest error",
+                                                   "its time [s]", "error measured"], table,
+                         caption="Work-precision slopes."))
+    fig, axes = plt.subplots(1, len(cases), figsize=(3.0 * len(cases), 2.8), squeeze=False)
+    for ax, (name, pts, slope) in zip(axes[0], cases):
+        t, e = [p[0] for p in pts], [p[1] for p in pts]
+        ax.loglog(t, e, "o-", ms=4)
+        for p in pts:
+            ax.annotate(p[2], (p[0], p[1]), fontsize=6, xytext=(3, 3), textcoords="offset points")
+        lt, le = [math.log(v) for v in t], [math.log(v) for v in e]
+        mx, my = sum(lt) / len(lt), sum(le) / len(le)
+        ax.loglog(t, [math.exp(my + slope * (math.log(v) - mx)) for v in t], "k--", lw=0.8,
+                  label="slope %.2f" % slope)
+        ax.set_title(name)
+        ax.set_xlabel("wall time [s]")
+        ax.set_ylabel("error")
+        ax.legend()
+    path = os.path.join(fig_dir, "work_precision.pdf")
+    fig.tight_layout()
+    fig.savefig(path)
+    plt.close(fig)
+    out.append(figure(path, "Error against wall time; labels: grid N; dashed: least-squares fit."))
+
+
+_SYMBOL = {"stable": ("o", "tab:green"), "unstable": ("^", "tab:orange"), "blow-up": ("x", "tab:red")}
+
+
+def stability_section(out, build, fig_dir):
+    out.append(r"\section{Stability maps}")
+    files = sorted(glob.glob(os.path.join(build, "bench", "stability_*.csv")))
+    if not files:
+        out.append(r"\emph{Not run: no \texttt{bench/stability\_*.csv} (run "
+                   r"\texttt{bench/bench\_stability}).}" + "\n")
+        return
+    out.append("From \\texttt{bench/bench\\_stability}: fluid time step against spring or DEM "
+               "stiffness, with the solid sub-stepped automatically (METHOD.md \\S5.3) or advanced "
+               "once per fluid step (fixed). Circles: stable; triangles: unstable (rim area changed "
+               "by more than 50\\,\\%, or a body point faster than twice the initial approach speed); "
+               "crosses: stopped by the solver's blow-up check with its message. The bench's source "
+               "states each scene.\n")
+    table = []
+    for f in files:
+        rows = _rows(f) or []
+        name = os.path.basename(f)[len("stability_"):-len(".csv")]
+        if not rows:
+            continue
+        fig, axes = plt.subplots(1, 2, figsize=(6.4, 2.6), sharey=True)
+        for ax, mode in zip(axes, ("auto", "fixed")):
+            for kind, (marker, colour) in _SYMBOL.items():
+                pts = [(_float(r["dt"]), _float(r["stiffness"])) for r in rows
+                       if r["mode"] == mode and r["outcome"] == kind]
+                if pts:
+                    ax.loglog([p[0] for p in pts], [p[1] for p in pts], marker, color=colour,
+                              ms=6, ls="none", label=kind)
+            ax.set_title("%s: %s solid steps" % (name, mode))
+            ax.set_xlabel("fluid dt [s]")
+            ax.legend(fontsize=6)
+        quantity = next((m.group(1) for c in _comments(f) for m in [re.search(r"against (\w+)", c)] if m),
+                        "stiffness")
+        axes[0].set_ylabel(quantity.replace("_", " "))
+        path = os.path.join(fig_dir, "stability_%s.pdf" % name)
+        fig.tight_layout()
+        fig.savefig(path)
+        plt.close(fig)
+        out.append(figure(path, "Stability map \\texttt{%s} (\\texttt{bench/stability\\_%s.csv})." %
+                          (esc(name), esc(name)), height=0.3))
+        for mode in ("auto", "fixed"):
+            sel = [r for r in rows if r["mode"] == mode]
+            count = lambda k: sum(r["outcome"] == k for r in sel)  # noqa: E731
+            subs = [int(_float(r["substeps"])) for r in sel if not math.isnan(_float(r["substeps"]))]
+            table.append([r"\texttt{%s}" % esc(name), mode, str(len(sel)), str(count("stable")),
+                          str(count("unstable")), str(count("blow-up")), str(max(subs)) if subs else "--"])
+        blow = next((r["message"] for r in rows if r["outcome"] == "blow-up" and r["message"]), None)
+        if blow:
+            out.append(r"\noindent Example stop message: \texttt{%s}" % esc(blow[:220]) + "\n")
+    out.append(longtable(r"llrrrrr", ["map", "solid steps", "runs", "stable", "unstable", "blow-up",
+                                      "max sub-steps"], table, caption="Stability map summary."))
+
+
+def overhead_section(out, build):
+    out.append(r"\section{A scene pays only for what it uses}")
+    rows = _rows(os.path.join(build, "bench", "overhead.csv"))
+    if not rows:
+        out.append(r"\emph{Not run: no \texttt{bench/overhead.csv} (run \texttt{bench/bench\_overhead}).}" + "\n")
+        return
+    get = {(r["scene"], r["stage"]): r for r in rows}
+    ratio = get.get(("fluid_only_cavity_128", "ratio"))
+    if ratio:
+        sim = get[("fluid_only_cavity_128", "simulation_step")]["calls"]
+        bare = get[("fluid_only_cavity_128", "bare_fluid_solver_step")]["calls"]
+        out.append("Fluid-only lid-driven cavity ($128^2$, same $\\Delta t$): %s s per step through "
+                   "the Simulation pipeline, %s s with the bare FluidSolver (predictor and projection), "
+                   "ratio %s (best of five interleaved repeats; \\texttt{bench/bench\\_overhead}).\n" %
+                   (num(sim), num(bare), num(ratio["calls"], 3)))
+    scenes = OrderedDict()
+    for r in rows:
+        if r["seconds_per_step"]:
+            scenes.setdefault(r["scene"], []).append(r)
+    table = []
+    for scene, rs in scenes.items():
+        checks = get.get((scene, "pair_checks_total"), {}).get("calls", "--")
+        table.append([r"\texttt{%s}" % esc(scene)] +
+                     ["%s (%s)" % (num(r["seconds_per_step"], 2), r["calls"]) for r in rs] + [checks])
+    stages = [r["stage"] for r in next(iter(scenes.values()))] if scenes else []
+    out.append(longtable("l" + "r" * (len(stages) + 1), ["scene"] + [esc(s) for s in stages] +
+                         ["pair checks"], table,
+                         caption="Seconds per step by stage (calls) from the solver's stage timers; "
+                                 "\\emph{contacts} runs inside \\emph{bodies}, once per sub-step. "
+                                 "The one-body scene evaluates wall contacts but examines no CDS pair."))
+
+
+def run_times_section(out, tests):
+    """Wall time per validation case: the sum of its ctest runs and check."""
+    cases = OrderedDict()
+    for t in tests:
+        m = re.match(r"(.+?)_(run_\w+|check\w*)$", t["name"])
+        if not m or math.isnan(t["seconds"]):
+            continue
+        c = cases.setdefault(m.group(1), [0.0, 0, True])
+        c[0] += t["seconds"]
+        c[1] += 1
+        c[2] = c[2] and t["status"] == "pass"
+    out.append(r"\subsection{Run time per validation case}")
+    if not cases:
+        out.append(r"\emph{No validation runs in the ctest logs.}" + "\n")
+        return
+    rows = [[r"\texttt{%s}" % esc(k), str(v[1]), num(v[0], 3), "all pass" if v[2] else "not all pass"]
+            for k, v in cases.items()]
+    out.append(longtable("lrrl", ["case", "ctest runs + check", "sum of times [s]", "status"], rows,
+                         caption="Per-case sums of ctest wall times (runs of one case may run in parallel)."))

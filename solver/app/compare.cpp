@@ -1,0 +1,264 @@
+// `ibms compare` (compare.hpp). The metrics and tolerances are those of the case checks:
+// validation/common/cavity_check.cpp (max |centre-line velocity - Ghia| over the unflagged Ghia
+// points, tolerances of validation/CMakeLists.txt) and validation/settling_disk/check.cpp (maximum
+// settling speed within 3 % of 5.5 cm/s); the same metric is also taken against ibms's own finest
+// run (validation/<case>/reference/ibms_*.csv, see each reference/README_ibms.md).
+#include "app/compare.hpp"
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+
+#include "app/compare_input.hpp"
+#include "core/errors.hpp"
+#include "validation/common/profile_table.hpp"
+#include "validation/settling_disk/body_series.hpp"
+
+#ifndef IBMS_VALIDATION_DIR
+#define IBMS_VALIDATION_DIR ""
+#endif
+
+namespace ibms {
+namespace {
+
+using validation::interpolate;
+using validation::profile_extremum;
+
+struct CavityCase {
+  std::string name;
+  double tolerance;         // [lid speed]; validation/CMakeLists.txt (ibms_add_cavity_case)
+  std::string ghia_u, ghia_v;  // empty: no published profile (two-sided cavity)
+};
+
+// Tolerances: issue 2 / DESIGN.md §7 (0.01 at Re 100 and 400, 0.02 at Re 1000, the level Ghia's own
+// 129^2/257^2 solution allows). The two-sided cavity has no published profile; its ibms-reference
+// deviation uses the Re 100 tolerance, 0.01 of the lid speed.
+const std::vector<CavityCase>& cavity_cases() {
+  static const std::vector<CavityCase> cases{
+      {"lid_driven_cavity_re100", 0.01, "ghia_u_re100.csv", "ghia_v_re100.csv"},
+      {"lid_driven_cavity_re400", 0.01, "ghia_u_re400.csv", "ghia_v_re400.csv"},
+      {"lid_driven_cavity_re1000", 0.02, "ghia_u_re1000.csv", "ghia_v_re1000.csv"},
+      {"two_sided_cavity_re100", 0.01, "", ""}};
+  return cases;
+}
+const std::string settling_case = "settling_disk";
+constexpr double settling_tolerance = 0.03;  // relative; validation/settling_disk/README.md (issue 3 §5)
+
+struct Profile { std::vector<double> s, value; };  // s: coordinate along the line [length]
+
+struct Verdict {
+  bool pass = true;
+  void line(const std::string& metric, double tolerance, double measured) {
+    const bool ok = measured <= tolerance;
+    pass = pass && ok;
+    std::printf("  %-62s %10.4g %12.5g   %s\n", metric.c_str(), tolerance, measured, ok ? "pass" : "FAIL");
+  }
+  static void info(const std::string& metric, double submitted, double reference) {
+    std::printf("  %-62s submitted %.6g, reference %.6g   info\n", metric.c_str(), submitted, reference);
+  }
+};
+
+void require_rows(const CompareTable& t, std::size_t n, const std::string& what) {
+  if (t.lines.size() < n)
+    throw InputError(t.path + ":" + std::to_string(t.header_line) + ": " + what + " needs at least " +
+                     std::to_string(n) + " rows, got " + std::to_string(t.lines.size()));
+}
+
+// A (coordinate, value) profile from the columns named in `coordinate` and `value` aliases.
+bool take_profile(const CompareTable& t, const std::vector<std::string>& coordinate,
+                  const std::vector<std::string>& value, Profile& out) {
+  const int c = t.find(coordinate), v = t.find(value);
+  if (c < 0 || v < 0) return false;
+  require_rows(t, 4, "a centre-line profile (4-point interpolation)");
+  require_increasing(t, c);
+  for (std::size_t k = 0; k < t.lines.size(); ++k)
+    if (t.columns[c][k] < -1e-9 || t.columns[c][k] > 1 + 1e-9)
+      throw InputError(t.path + ":" + std::to_string(t.lines[k]) + ": coordinate " + std::to_string(t.columns[c][k]) +
+                       " outside the cavity [0, 1]");
+  out = {t.columns[c], t.columns[v]};
+  return true;
+}
+
+Profile reference_profile(const std::string& path) {
+  const validation::Table t = validation::read_table(path);
+  return {t.columns[0], t.columns[1]};
+}
+
+// max |submitted - reference| at the reference points inside the submitted range; n_used counts them.
+double max_deviation(const Profile& submitted, const std::vector<double>& s, const std::vector<double>& value,
+                     const std::vector<std::string>* flags, int& n_used) {
+  double worst = 0.0;
+  n_used = 0;
+  for (std::size_t k = 0; k < s.size(); ++k) {
+    if (flags != nullptr && !(*flags)[k].empty()) continue;  // flagged Ghia points are excluded, as in the check
+    if (s[k] < submitted.s.front() - 1e-12 || s[k] > submitted.s.back() + 1e-12) continue;
+    worst = std::max(worst, std::abs(interpolate(submitted.s, submitted.value, s[k]) - value[k]));
+    ++n_used;
+  }
+  return worst;
+}
+
+void require_coverage(const Profile& p, const std::string& files, const std::string& what) {
+  if (p.s.front() > 0.05 || p.s.back() < 0.95)
+    throw InputError(files + ": the " + what + " profile covers [" + std::to_string(p.s.front()) + ", " +
+                     std::to_string(p.s.back()) + "]; it must span at least [0.05, 0.95] of the line");
+}
+
+int compare_cavity(const CavityCase& c, const std::vector<std::string>& files, const std::string& ref_dir) {
+  Profile u, v;
+  bool have_u = false, have_v = false;
+  for (const std::string& f : files) {
+    const CompareTable t = read_compare_csv(f);
+    bool used = false;
+    if (take_profile(t, {"y"}, {"u"}, u)) { have_u = used = true; }
+    if (take_profile(t, {"x"}, {"v"}, v)) { have_v = used = true; }
+    if (!used)
+      throw InputError(f + ":" + std::to_string(t.header_line) +
+                       ": header names neither the columns y,u (u along x = 0.5) nor x,v (v along y = 0.5)");
+  }
+  std::string all_files;
+  for (const std::string& f : files) all_files += (all_files.empty() ? "" : ", ") + f;
+  if (!have_u) throw InputError(all_files + ": no u profile (columns y,u) for " + c.name);
+  if (!have_v) throw InputError(all_files + ": no v profile (columns x,v) for " + c.name);
+  require_coverage(u, all_files, "u(0.5, y)");
+  require_coverage(v, all_files, "v(x, 0.5)");
+
+  const std::string dir = ref_dir + "/" + c.name + "/reference/";
+  const Profile ref_u = reference_profile(dir + "ibms_centreline_u.csv");
+  const Profile ref_v = reference_profile(dir + "ibms_centreline_v.csv");
+  std::printf("ibms compare %s: %s\n", c.name.c_str(), all_files.c_str());
+  std::printf("  %-62s %10s %12s   %s\n", "metric", "tolerance", "measured", "result");
+  Verdict verdict;
+  int n_u = 0, n_v = 0;
+  if (!c.ghia_u.empty()) {
+    const validation::Table gu = validation::read_table(dir + c.ghia_u), gv = validation::read_table(dir + c.ghia_v);
+    const double du = max_deviation(u, gu.columns[0], gu.columns[1], &gu.flags, n_u);
+    const double dv = max_deviation(v, gv.columns[0], gv.columns[1], &gv.flags, n_v);
+    verdict.line(fmt::format("max |centre-line velocity - Ghia| (lid speed 1; {}+{} points)", n_u, n_v),
+                 c.tolerance, std::max(du, dv));
+  }
+  const double du = max_deviation(u, ref_u.s, ref_u.value, nullptr, n_u);
+  const double dv = max_deviation(v, ref_v.s, ref_v.value, nullptr, n_v);
+  verdict.line(fmt::format("max |centre-line velocity - ibms reference| ({}+{} points)", n_u, n_v), c.tolerance,
+               std::max(du, dv));
+  // The extrema the checks' grid-convergence study uses, and the symmetry defect of the two-sided
+  // case (exact in a symmetric scheme; reported, not gated, for another code).
+  Verdict::info("min u on x = 0.5", profile_extremum(u.s, u.value, false), profile_extremum(ref_u.s, ref_u.value, false));
+  Verdict::info("max v on y = 0.5", profile_extremum(v.s, v.value, true), profile_extremum(ref_v.s, ref_v.value, true));
+  Verdict::info("min v on y = 0.5", profile_extremum(v.s, v.value, false), profile_extremum(ref_v.s, ref_v.value, false));
+  if (c.ghia_u.empty()) {
+    double defect = 0.0;
+    for (const double s : {0.125, 0.25, 0.375, 0.5})
+      defect = std::max({defect, std::abs(interpolate(u.s, u.value, s) + interpolate(u.s, u.value, 1 - s)),
+                         std::abs(interpolate(v.s, v.value, s) + interpolate(v.s, v.value, 1 - s))});
+    Verdict::info("point-symmetry defect |f(s) + f(1-s)|, s = 1/8..1/2", defect, 0.0);
+  }
+  std::printf("%s: %s\n", c.name.c_str(), verdict.pass ? "pass" : "FAIL");
+  return verdict.pass ? 0 : 1;
+}
+
+// Settling history: t [s], v [cm/s] (vertical centre-of-mass velocity, negative downwards),
+// optional y [cm] (centre height). Accepts ibms's own <stem>_bodies.csv by its column names.
+struct History { std::vector<double> t, v, y; };
+
+History take_history(const CompareTable& t) {
+  const int ct = t.find({"t", "time"});
+  const int cv = t.find({"v", "velocity_y", "body_000/velocity_y"});
+  const int cy = t.find({"y", "centroid_y", "body_000/centroid_y"});
+  if (ct < 0 || cv < 0)
+    throw InputError(t.path + ":" + std::to_string(t.header_line) + ": header needs the columns t and v (settling history)");
+  require_rows(t, 2, "a settling history");
+  require_increasing(t, ct);
+  return {t.columns[ct], t.columns[cv], cy >= 0 ? t.columns[cy] : std::vector<double>{}};
+}
+
+double max_speed(const History& h, double& at) {
+  std::size_t k_max = 0;
+  for (std::size_t k = 0; k < h.v.size(); ++k)
+    if (-h.v[k] > -h.v[k_max]) k_max = k;
+  at = h.t[k_max];
+  return -h.v[k_max];
+}
+
+double linear(const std::vector<double>& x, const std::vector<double>& f, double xq) {
+  const std::size_t k = std::clamp<std::size_t>(std::upper_bound(x.begin(), x.end(), xq) - x.begin(), 1, x.size() - 1);
+  const double w = (xq - x[k - 1]) / (x[k] - x[k - 1]);
+  return (1 - w) * f[k - 1] + w * f[k];
+}
+
+double touchdown(const History& h, double level) {
+  for (std::size_t k = 1; k < h.y.size(); ++k)
+    if (h.y[k] <= level && h.y[k - 1] > level)
+      return h.t[k - 1] + (h.y[k - 1] - level) / (h.y[k - 1] - h.y[k]) * (h.t[k] - h.t[k - 1]);
+  return NAN;
+}
+
+int compare_settling(const std::vector<std::string>& files, const std::string& ref_dir) {
+  if (files.size() != 1) throw InputError("settling_disk: give exactly one CSV file (columns t,v[,y])");
+  const History h = take_history(read_compare_csv(files[0]));
+  const std::string dir = ref_dir + "/" + settling_case + "/reference/";
+  const History ref = take_history(read_compare_csv(dir + "ibms_settling_history.csv"));
+  // Published values (reference/settling_disk_rho1.25.csv): max settling speed 5.5 cm/s, touchdown 0.80 s.
+  const double published = validation::reference_value(dir + "settling_disk_rho1.25.csv", "max_settling_speed");
+  const double touchdown_level = 0.14;  // cm: centre height of the touchdown time (the reference's definition)
+  std::printf("ibms compare %s: %s\n", settling_case.c_str(), files[0].c_str());
+  std::printf("  %-62s %10s %12s   %s\n", "metric", "tolerance", "measured", "result");
+  double t_max = 0, t_max_ref = 0;
+  const double speed = max_speed(h, t_max), speed_ref = max_speed(ref, t_max_ref);
+  Verdict verdict;
+  verdict.line(fmt::format("|max settling speed / {:.4g} cm/s (published) - 1|", published), settling_tolerance,
+               std::abs(speed / published - 1));
+  verdict.line(fmt::format("|max settling speed / {:.4g} cm/s (ibms reference) - 1|", speed_ref), settling_tolerance,
+               std::abs(speed / speed_ref - 1));
+  Verdict::info("max settling speed [cm/s]", speed, speed_ref);
+  Verdict::info("time of the max settling speed [s]", t_max, t_max_ref);
+  // v(t) against the reference over the common time range before the reference touches down.
+  const double t_end = std::min({h.t.back(), ref.t.back(), ref.y.empty() ? HUGE_VAL : touchdown(ref, touchdown_level)});
+  double worst = 0.0;
+  for (std::size_t k = 0; k < h.t.size() && h.t[k] <= t_end; ++k)
+    worst = std::max(worst, std::abs(h.v[k] - linear(ref.t, ref.v, h.t[k])));
+  Verdict::info(fmt::format("max |v(t) - v_ref(t)| / v_ref,max for t <= {:.3g} s", t_end), worst / speed_ref, 0.0);
+  if (!h.y.empty()) Verdict::info("touchdown time (centre at y = 0.14 cm) [s]", touchdown(h, touchdown_level),
+                                  touchdown(ref, touchdown_level));
+  std::printf("%s: %s\n", settling_case.c_str(), verdict.pass ? "pass" : "FAIL");
+  return verdict.pass ? 0 : 1;
+}
+
+}  // namespace
+
+std::vector<std::string> compare_case_names() {
+  std::vector<std::string> names;
+  for (const CavityCase& c : cavity_cases()) names.push_back(c.name);
+  names.push_back(settling_case);
+  return names;
+}
+
+std::string default_validation_dir() {
+  if (const char* env = std::getenv("IBMS_VALIDATION_DIR"); env != nullptr && *env != '\0') return env;
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (fs::is_directory(IBMS_VALIDATION_DIR, ec)) return IBMS_VALIDATION_DIR;
+  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  return (exe.parent_path().parent_path() / "share/ibms/validation").string();
+}
+
+int compare_case(const std::string& case_name, const std::vector<std::string>& files, const std::string& validation_dir) {
+  if (files.empty()) throw InputError("ibms compare: no input file");
+  const std::vector<std::string> names = compare_case_names();
+  if (std::find(names.begin(), names.end(), case_name) != names.end() &&
+      !std::filesystem::is_directory(validation_dir + "/" + case_name + "/reference"))
+    throw InputError(validation_dir + "/" + case_name + "/reference: not found (set --validation-dir)");
+  for (const CavityCase& c : cavity_cases())
+    if (c.name == case_name) return compare_cavity(c, files, validation_dir);
+  if (case_name == settling_case) return compare_settling(files, validation_dir);
+  std::string known;
+  for (const std::string& n : names) known += (known.empty() ? "" : ", ") + n;
+  throw InputError("ibms compare: unknown case '" + case_name + "' (known: " + known + ")");
+}
+
+}  // namespace ibms

@@ -1,0 +1,135 @@
+// Time-step limits of a scene (time_step_limits.hpp).
+#include "app/time_step_limits.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "sim/body_update.hpp"
+#include "sim/diagnostics.hpp"
+#include "solid/spring_dashpot.hpp"
+#include "solid/stable_substep.hpp"
+
+namespace ibms {
+namespace {
+
+double grid_spacing(const Scene& scene) {
+  return std::min(scene.domain.length_x / scene.domain.cells_x, scene.domain.length_y / scene.domain.cells_y);
+}
+
+// Largest speed known before the run: moving walls and initial body velocities [length/time].
+double initial_speed_scale(const Scene& scene) {
+  const WallsSpec& w = scene.walls;
+  double speed = std::max({std::abs(w.left.speed), std::abs(w.right.speed), std::abs(w.bottom.speed), std::abs(w.top.speed)});
+  for (const BodySpec& b : scene.bodies) speed = std::max(speed, std::hypot(b.velocity[0], b.velocity[1]));
+  return speed;
+}
+
+double initial_body_speed(const Scene& scene) {
+  double speed = 0.0;
+  for (const BodySpec& b : scene.bodies) speed = std::max(speed, std::hypot(b.velocity[0], b.velocity[1]));
+  return speed;
+}
+
+}  // namespace
+
+double planned_time_step(const Scene& scene) {
+  if (scene.run.time_step > 0) return scene.run.time_step;
+  const double speed = initial_speed_scale(scene), h = grid_spacing(scene);
+  return std::min(speed > 0 ? scene.run.cfl * h / speed : HUGE_VAL, scene.run.max_time_step);
+}
+
+std::vector<TimeStepLimit> time_step_limits(const Scene& scene, const Simulation& sim) {
+  std::vector<TimeStepLimit> limits;
+  const double h = grid_spacing(scene), speed = initial_speed_scale(scene);
+  // Advective: dt max(|u|/dx + |v|/dy) <= 1 is the run's blow-up guard (run.max_cfl); the adaptive
+  // step targets run.cfl of it, METHOD.md §2.3.
+  limits.push_back({"CFL (advective, |u| dt / h <= 1)", speed > 0 ? h / speed : HUGE_VAL, scene.run.cfl, false,
+                    speed > 0 ? fmt::format("h / U with U = {:.4g} (walls, initial bodies)", speed)
+                              : "no velocity scale before the run (fluid at rest): checked every step"});
+  const double nu = scene.fluid.kinematic_viscosity;
+  limits.push_back({"viscous (explicit bound h^2 / (4 nu))", nu > 0 ? h * h / (4 * nu) : HUGE_VAL, HUGE_VAL, false,
+                    "not binding: Crank-Nicolson diffusion"});
+  if (!sim.has_bodies()) return limits;
+  const double body_speed = initial_body_speed(scene);
+  limits.push_back({"marker travel (h / max|U_body|)", body_speed > 0 ? h / body_speed : HUGE_VAL,
+                    max_marker_travel_cells, false,
+                    body_speed > 0 ? fmt::format("initial body speed {:.4g}; adaptive runs check it every step", body_speed)
+                                   : "bodies start at rest: checked every step by the adaptive step"});
+  for (std::size_t b = 0; b < sim.bodies().size(); ++b) {
+    const MassSpringBody& body = sim.bodies()[b];
+    const SpectralBounds bounds = spectral_bounds(body);
+    const double omega = std::sqrt(bounds.omega_squared_max), gamma = bounds.damping_rate_max;
+    // Symplectic Euler, METHOD.md §5.1: undamped dt <= 2 / omega_max (period 2 pi / omega_max),
+    // pure dashpot dt <= 2 / gamma_max; together 4 / (gamma + sqrt(gamma^2 + 4 omega^2)), safety 0.5.
+    limits.push_back({fmt::format("body {} spring period (2 / omega_max)", b), omega > 0 ? 2 / omega : HUGE_VAL, 0.5,
+                      true, fmt::format("omega_max <= {:.4g} [1/time], period 2 pi / omega_max = {:.4g}", omega,
+                                        omega > 0 ? 2 * M_PI / omega : HUGE_VAL)});
+    limits.push_back({fmt::format("body {} damping (2 / gamma_max)", b), gamma > 0 ? 2 / gamma : HUGE_VAL, 0.5, true,
+                      fmt::format("gamma_max <= {:.4g} [1/time]", gamma)});
+    limits.push_back({fmt::format("body {} springs + dashpots together", b), stable_substep(body, /*safety=*/1.0), 0.5,
+                      true, "4 / (gamma + sqrt(gamma^2 + 4 omega^2))"});
+  }
+  if (sim.has_contacts()) {
+    const ContactModel& model = sim.contact_model();
+    double lightest = HUGE_VAL;
+    for (const MassSpringBody& body : sim.bodies())
+      for (int k = 0; k < body.n_surface; ++k) lightest = std::min(lightest, body.mass[k]);
+    const double m_eff = sim.bodies().size() > 1 ? 0.5 * lightest : lightest;  // as contact_substep (A8)
+    const double duration = contact_duration(m_eff, model.active_pairs_safety * model.stiffness, /*damping=*/0.0);
+    limits.push_back({"contact duration t_c (DEM)", duration, 1.0 / model.steps_per_contact, true,
+                      fmt::format("lightest CDS point, {} x k_Dn; the sub-step is also kept below half the dashpot "
+                                  "limit: {:.4g}", model.active_pairs_safety, contact_substep(model, sim.bodies()))});
+  }
+  return limits;
+}
+
+std::string describe_time_step_limits(const Scene& scene, const Simulation& sim) {
+  const std::vector<TimeStepLimit> limits = time_step_limits(scene, sim);
+  const double dt = planned_time_step(scene);
+  const bool fixed = scene.run.time_step > 0;
+  std::string text = "# time-step limits [time] (stability bound; safe fraction the run keeps to)\n";
+  for (const TimeStepLimit& l : limits) {
+    text += fmt::format("  {:<44} {:>11}  safe fraction {:<6} {}{}\n", l.name,
+                        std::isfinite(l.limit) ? fmt::format("{:.4g}", l.limit) : "none",
+                        std::isfinite(l.safe_fraction) ? fmt::format("{:.3g}", l.safe_fraction) : "-",
+                        l.sub_stepped ? "(solid sub-step) " : "", l.note);
+  }
+  text += "\n# time step\n";
+  if (fixed) text += fmt::format("fixed dt = {:.4g}\n", dt);
+  else {
+    text += fmt::format("adaptive: dt = cfl / max(|u|/dx + |v|/dy), cfl = {:.3g}, capped at {:.4g}{}\n", scene.run.cfl,
+                        scene.run.max_time_step, sim.has_bodies() ? ", marker travel <= 0.5 h" : "");
+    if (std::isfinite(dt)) text += fmt::format("  first step estimate: dt = {:.4g}\n", dt);
+  }
+  const double h = grid_spacing(scene);
+  if (std::isfinite(dt))
+    text += fmt::format("  viscous number nu dt / h^2 = {:.3g} (Crank-Nicolson: no limit)\n",
+                        scene.fluid.kinematic_viscosity * dt / (h * h));
+  if (sim.has_bodies()) {
+    double solid_substep = HUGE_VAL;
+    for (const MassSpringBody& body : sim.bodies()) solid_substep = std::min(solid_substep, stable_substep(body, 0.5));
+    const double contact_limit = sim.has_contacts() ? contact_substep(sim.contact_model(), sim.bodies()) : HUGE_VAL;
+    text += fmt::format("solid sub-step: springs {:.4g}{}\n", solid_substep,
+                        sim.has_contacts() ? fmt::format(", contacts {:.4g}", contact_limit) : "");
+    if (std::isfinite(dt) && dt > 0)
+      text += fmt::format("sub-steps per fluid step at dt = {:.4g}: {} (automatic)\n", dt,
+                          substeps_for(sim.bodies(), dt, contact_limit));
+  }
+  // A fixed step above the safe fraction of a limit the fluid step itself must respect is a warning;
+  // limits handled by sub-stepping are reported with the sub-steps that handle them.
+  if (fixed)
+    for (const TimeStepLimit& l : limits) {
+      if (!std::isfinite(l.limit) || !std::isfinite(l.safe_fraction) || dt <= l.safe_fraction * l.limit) continue;
+      if (l.sub_stepped)
+        text += fmt::format("note: fixed dt = {:.4g} is {:.3g} x the {} limit: the solid sub-steps it\n", dt,
+                            dt / l.limit, l.name);
+      else
+        text += fmt::format("WARNING: fixed dt = {:.4g} is {:.3g} x the {} limit {:.4g}, above the safe fraction {:.3g}\n",
+                            dt, dt / l.limit, l.name, l.limit, l.safe_fraction);
+    }
+  return text;
+}
+
+}  // namespace ibms

@@ -1,0 +1,33 @@
+// Every time-step limit of a scene for `ibms info` (issue 5 item 4; METHOD.md §5 and §7): the
+// advective CFL limit, the explicit viscous bound (not binding: Crank-Nicolson), marker travel,
+// per body the spring period and the damping limit of symplectic Euler, the DEM contact duration;
+// the sub-steps the solid will take, and a WARNING line wherever a fixed time step exceeds the
+// safe fraction of a limit that is not sub-stepped.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "scene/scene.hpp"
+#include "sim/simulation.hpp"
+
+namespace ibms {
+
+struct TimeStepLimit {
+  std::string name;        // e.g. "CFL (advective)"
+  double limit = 0.0;      // stability bound [time]; inf when there is none (or no scale yet)
+  double safe_fraction;    // the run keeps dt (or the sub-step) below safe_fraction * limit [-]
+  bool sub_stepped;        // handled by solid sub-stepping inside a fluid step
+  std::string note;        // how it was computed
+};
+
+// The limits at the initial state of `sim` (built from `scene`).
+std::vector<TimeStepLimit> time_step_limits(const Scene& scene, const Simulation& sim);
+
+// The fluid time step at the start: the fixed run.time_step, or the adaptive estimate with the
+// largest wall or initial body speed as velocity scale (inf when there is none).
+double planned_time_step(const Scene& scene);
+
+// The text block of `ibms info`: limits table, time step, sub-steps and warnings.
+std::string describe_time_step_limits(const Scene& scene, const Simulation& sim);
+
+}  // namespace ibms
