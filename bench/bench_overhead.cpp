@@ -17,12 +17,7 @@
 #include "scene/scene_reader.hpp"
 #include "sim/simulation.hpp"
 
-#ifndef IBMS_SOURCE_DIR
-#define IBMS_SOURCE_DIR "."
-#endif
-#ifndef IBMS_BENCH_OUTPUT_DIR
-#define IBMS_BENCH_OUTPUT_DIR "bench"
-#endif
+#include "bench_paths.hpp"
 
 using namespace ibms;
 using clock_type = std::chrono::steady_clock;

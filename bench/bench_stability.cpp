@@ -35,12 +35,7 @@
 #include "solid/mass_spring_body.hpp"
 #include "validation/settling_disk/body_series.hpp"
 
-#ifndef IBMS_SOURCE_DIR
-#define IBMS_SOURCE_DIR "."
-#endif
-#ifndef IBMS_BENCH_OUTPUT_DIR
-#define IBMS_BENCH_OUTPUT_DIR "bench"
-#endif
+#include "bench_paths.hpp"
 
 using namespace ibms;
 

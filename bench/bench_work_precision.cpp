@@ -29,12 +29,7 @@
 #include "validation/settling_disk/body_series.hpp"
 #include "verification/fluid/manufactured_solution.hpp"
 
-#ifndef IBMS_SOURCE_DIR
-#define IBMS_SOURCE_DIR "."
-#endif
-#ifndef IBMS_BENCH_OUTPUT_DIR
-#define IBMS_BENCH_OUTPUT_DIR "bench"
-#endif
+#include "bench_paths.hpp"
 
 using namespace ibms;
 using clock_type = std::chrono::steady_clock;

@@ -15,27 +15,10 @@
 #include "sim_scenes.hpp"
 
 using namespace ibms;
+using test::body_momentum;
+using test::fluid_momentum;
 
 namespace {
-
-Vec2 fluid_momentum(const Simulation& sim) {
-  Vec2 p{0.0, 0.0};
-  const Grid& g = sim.grid();
-  for (int j = 0; j < g.ny; ++j)
-    for (int i = 0; i < g.nx; ++i) {
-      p[0] += sim.fluid_density() * sim.fluid().velocity_x(i, j) * g.cell_area();
-      p[1] += sim.fluid_density() * sim.fluid().velocity_y(i, j) * g.cell_area();
-    }
-  return p;
-}
-
-Vec2 body_momentum(const Simulation& sim) {
-  Vec2 p{0.0, 0.0};
-  for (const MassSpringBody& body : sim.bodies())
-    for (int k = 0; k < body.n_points(); ++k)
-      for (int d = 0; d < 2; ++d) p[d] += body.mass[k] * body.velocity[k][d];
-  return p;
-}
 
 struct Drift { double conserved, plain, initial; };
 

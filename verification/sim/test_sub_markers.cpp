@@ -148,17 +148,8 @@ BOOST_AUTO_TEST_CASE(sub_markers_close_the_gaps_between_rim_points) {
 BOOST_AUTO_TEST_CASE(momentum_is_conserved_with_sub_markers) {
   Simulation sim(coarse_scene(true));
   auto total = [&] {
-    Vec2 p{0.0, 0.0};
-    const Grid& g = sim.grid();
-    for (int j = 0; j < g.ny; ++j)
-      for (int i = 0; i < g.nx; ++i) {
-        p[0] += sim.fluid_density() * sim.fluid().velocity_x(i, j) * g.cell_area();
-        p[1] += sim.fluid_density() * sim.fluid().velocity_y(i, j) * g.cell_area();
-      }
-    for (const MassSpringBody& body : sim.bodies())
-      for (int k = 0; k < body.n_points(); ++k)
-        for (int d = 0; d < 2; ++d) p[d] += body.mass[k] * body.velocity[k][d];
-    return p;
+    const Vec2 pf = test::fluid_momentum(sim), pb = test::body_momentum(sim);
+    return Vec2{pf[0] + pb[0], pf[1] + pb[1]};
   };
   const Vec2 start = total();
   double drift = 0.0;
