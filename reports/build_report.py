@@ -175,7 +175,8 @@ def case_section(out, case, build, source, results, fig_dir):
             if p:
                 made += 1
                 out.append(figure(p, "Vorticity with velocity vectors (every few cells) and body outlines "
-                                     "where present, from \\texttt{%s}." % esc(os.path.basename(h5)), height=0.34))
+                                     "where present, from \\texttt{%s}." % esc(os.path.basename(h5)),
+                                  height=0.6 if run else 0.34))
         for k, f in enumerate(sorted(glob.glob(os.path.join(case_dir, "trajectories_*.csv")))):
             p = figs.trajectories(f, os.path.join(fig_dir, "%s_trajectories%d.pdf" % (stem, k)))
             if p:

@@ -119,7 +119,11 @@ def snapshots(case_dir, case, out, max_panels=3, path=None):
     if path is None:
         return None, None
     import h5py
-    with h5py.File(path, "r") as f:
+    try:
+        f = h5py.File(path, "r")
+    except OSError:  # a run still writing it (locked) or a truncated file: no figure from it
+        return None, None
+    with f:
         if "snapshots" not in f or "grid" not in f:
             return None, None
         steps = sorted(f["snapshots"].keys())
@@ -131,12 +135,15 @@ def snapshots(case_dir, case, out, max_panels=3, path=None):
         xc, yc = np.asarray(f["grid/x_centres"]), np.asarray(f["grid/y_centres"])
         lx = float(np.ptp(xc)) or 1.0
         ly = float(np.ptp(yc)) or 1.0
-        ncol = len(steps)
+        nrow = 1 if len(steps) <= 3 else 2  # four panels: 2 x 2, readable on a page
+        ncol = -(-len(steps) // nrow)
         panel_w = min(3.4, 7.0 / ncol)
         panel_h = min(panel_w * ly / lx, 8.0)
-        fig, axes = plt.subplots(1, ncol, figsize=(panel_w * ncol + 0.6, panel_h + 0.6),
+        fig, axes = plt.subplots(nrow, ncol, figsize=(panel_w * ncol + 0.6, (panel_h + 0.6) * nrow),
                                  squeeze=False)
-        for ax, step in zip(axes[0], steps):
+        for ax in axes.flat[len(steps):]:
+            ax.set_visible(False)
+        for ax, step in zip(axes.flat, steps):
             g = f["snapshots"][step]
             if "vorticity" not in g:
                 continue
