@@ -8,9 +8,10 @@ import os
 import shutil
 import subprocess
 import sys
+import tempfile
 
 here = os.path.dirname(os.path.abspath(__file__))
-work = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else "synthetic")
+work = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else tempfile.mkdtemp(prefix="ibms_synthetic_"))
 if shutil.which("latexmk") is None or shutil.which("pdflatex") is None:
     print("skipped: latexmk/pdflatex not installed (scripts/install-deps.sh --report)")
     sys.exit(77)
