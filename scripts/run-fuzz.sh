@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer scene target with Debian's clang (ASan + UBSan + fuzzer coverage) and runs it
-# on a copy of the committed corpus, then merges what it found back into verification/fuzz/corpus
-# (minimised: only inputs that add coverage). A crash input is left in the work directory as
+# on the seeds (verification/fuzz/seeds: the validation scenes and two test scenes) and a copy of
+# the committed corpus, then replaces verification/fuzz/corpus with the minimised merge of the old
+# corpus and what it found (only inputs that add coverage). A crash input is left in the work directory as
 # crash-* and must become a file in verification/fuzz/regressions/ (test_fuzz_corpus reads it).
 # Usage: scripts/run-fuzz.sh [seconds=600] [build-dir=build-fuzz]
 set -euo pipefail
@@ -14,7 +15,8 @@ cmake --build "$build" --target fuzz_scene -j1
 fuzzer=$(cd "$build" && pwd)/verification/fuzz/fuzz_scene
 work="$build/fuzz-work"
 mkdir -p "$work/corpus" "$work/artifacts"
-cp verification/fuzz/corpus/* "$work/corpus/"
+cp verification/fuzz/seeds/* "$work/corpus/"
+cp verification/fuzz/corpus/* "$work/corpus/" 2>/dev/null || true
 # Output paths in fuzzed scenes are only checked (exists, writable), never created; run inside
 # the work directory so relative ones point there.
 (cd "$work" && "$fuzzer" -max_total_time="$seconds" -max_len=8192 \
@@ -24,5 +26,7 @@ cp verification/fuzz/corpus/* "$work/corpus/"
 mkdir -p "$work/merged"
 rm -f "$work/merged"/*
 (cd "$work" && "$fuzzer" -merge=1 merged "$root/verification/fuzz/corpus" corpus >merge.log 2>&1)
+rm -f verification/fuzz/corpus/*
+cp "$work/merged"/* verification/fuzz/corpus/
 echo "run-fuzz: merged corpus $(ls "$work/merged" | wc -l) files, $(du -sh "$work/merged" | cut -f1);"\
      "crashes: $(ls "$work/artifacts" | wc -l) (in $work/artifacts)"
