@@ -5,6 +5,7 @@
 # corpus and what it found (only inputs that add coverage). A crash input is left in the work directory as
 # crash-* and must become a file in verification/fuzz/regressions/ (test_fuzz_corpus reads it).
 # Usage: scripts/run-fuzz.sh [seconds=600] [build-dir=build-fuzz]
+# Needs clang-14 and libclang-rt-14-dev (scripts/install-deps.sh --checkers).
 set -euo pipefail
 seconds=${1:-600}
 build=${2:-build-fuzz}

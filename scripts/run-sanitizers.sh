@@ -4,6 +4,7 @@
 # included), then a valgrind memcheck of a short `ibms run` of a scene with two bodies, swelling
 # and contacts on the ordinary build (any error or definite/indirect leak fails).
 # Usage: scripts/run-sanitizers.sh [asan-build-dir=build-asan] [build-dir=build]
+# Needs valgrind (scripts/install-deps.sh --checkers).
 set -euo pipefail
 asan=${1:-build-asan}
 build=${2:-build}

@@ -37,10 +37,10 @@ void install_stop_handlers() {
 
 int run_command(const std::string& scene_path, const std::vector<std::string>& overrides,
                 const std::string& output, const std::string& restart, bool quiet) {
+  install_stop_handlers();  // first: a signal while the scene is read stops the run at step 0
   ibms::Scene scene = ibms::read_scene_file(scene_path, overrides);
   if (!output.empty()) scene.output.file = output;
   ibms::Simulation sim(scene);
-  install_stop_handlers();
   const ibms::RunSummary summary = ibms::run_simulation(sim, {scene.output.file, quiet, restart, &stop_signal});
   if (summary.interrupted) {
     std::fprintf(stderr, "ibms: %s at step %ld, t = %.6g; checkpoint written to %s (continue with --restart %s)\n",
