@@ -115,7 +115,7 @@ BOOST_AUTO_TEST_CASE(restarted_run_ends_bit_identical_with_bodies_swelling_and_c
 // of the restored state, so the restarted run takes the same steps.
 BOOST_AUTO_TEST_CASE(restarted_run_with_adaptive_time_step_ends_bit_identical) {
   const TempDir dir;
-  const std::vector<std::string> adaptive{"run.time_step=0", "run.cfl=0.4"};
+  const std::vector<std::string> adaptive{"run.time_step=0", "run.cfl=0.1"};
   const ibms::RunSummary whole = run(scene_for(dir.file("whole.h5"), adaptive));
   std::vector<std::string> stopped = adaptive;
   stopped.push_back("run.max_steps=" + std::to_string(whole.steps / 2));
