@@ -1,11 +1,16 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages ibms needs that are not yet on this machine (run as root).
-# Usage: scripts/install-deps.sh [--report]   (--report adds LaTeX for the PDF report)
+# Usage: scripts/install-deps.sh [--report | --checkers]
+#   --report adds LaTeX for the PDF report; --checkers adds valgrind and Debian's clang with
+#   libFuzzer (scripts/run-sanitizers.sh, scripts/run-fuzz.sh)
 set -euo pipefail
 packages=(build-essential cmake pkg-config git
           libeigen3-dev libgsl-dev libboost-test-dev libhdf5-dev libfftw3-dev
           libtomlplusplus-dev libcli11-dev libfmt-dev numdiff
           python3 python3-matplotlib python3-numpy python3-h5py)
+if [[ "${1:-}" == "--checkers" ]]; then
+  packages+=(valgrind clang-14 libclang-rt-14-dev)
+fi
 if [[ "${1:-}" == "--report" ]]; then
   packages+=(latexmk texlive-latex-base texlive-latex-recommended texlive-latex-extra
              texlive-fonts-recommended lmodern)

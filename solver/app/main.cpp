@@ -1,9 +1,11 @@
-// ibms command line (CLI11): `ibms run SCENE [--set key=value]... [-o FILE] [--quiet]` and
+// ibms command line (CLI11): `ibms run SCENE [--set key=value]... [-o FILE] [--restart FILE] [--quiet]`,
 // `ibms info SCENE [--set key=value]...`, `ibms compare CASE FILE... [--validation-dir DIR]`
-// (exit 0 pass, 1 fail, 2 bad input; docs/compare.md). Exit codes: 0 success, 2 bad input, 3 blow-up, 1 other.
+// (exit 0 pass, 1 fail, 2 bad input; docs/compare.md). Exit codes: 0 success, 2 bad input,
+// 3 blow-up, 4 interrupted by SIGINT/SIGTERM (checkpoint written; continue with --restart), 1 other.
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <csignal>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -17,12 +19,37 @@
 
 namespace {
 
+constexpr int exit_interrupted = 4;
+
+// Set by the SIGINT/SIGTERM handler to the signal number; the run loop checks it between steps,
+// writes a checkpoint and stops. A second signal while stopping gets the default action
+// (SA_RESETHAND); SA_RESTART keeps an HDF5 write in progress from failing with EINTR.
+volatile std::sig_atomic_t stop_signal = 0;
+
+extern "C" void request_stop(int signal_number) { stop_signal = signal_number; }
+
+void install_stop_handlers() {
+  struct sigaction action {};
+  action.sa_handler = request_stop;
+  sigemptyset(&action.sa_mask);
+  action.sa_flags = SA_RESETHAND | SA_RESTART;
+  sigaction(SIGINT, &action, nullptr);
+  sigaction(SIGTERM, &action, nullptr);
+}
+
 int run_command(const std::string& scene_path, const std::vector<std::string>& overrides,
-                const std::string& output, bool quiet) {
+                const std::string& output, const std::string& restart, bool quiet) {
+  install_stop_handlers();  // first: a signal while the scene is read stops the run at step 0
   ibms::Scene scene = ibms::read_scene_file(scene_path, overrides);
   if (!output.empty()) scene.output.file = output;
   ibms::Simulation sim(scene);
-  const ibms::RunSummary summary = ibms::run_simulation(sim, {scene.output.file, quiet});
+  const ibms::RunSummary summary = ibms::run_simulation(sim, {scene.output.file, quiet, restart, &stop_signal});
+  if (summary.interrupted) {
+    std::fprintf(stderr, "ibms: %s at step %ld, t = %.6g; checkpoint written to %s (continue with --restart %s)\n",
+                 summary.stop_reason.c_str(), summary.steps, summary.time, summary.output_path.c_str(),
+                 summary.output_path.c_str());
+    return exit_interrupted;
+  }
   if (!quiet)
     std::fprintf(stderr, "ibms: %ld steps to t = %.6g (%s) in %.2f s; output %s\n", summary.steps, summary.time,
                  summary.stop_reason.c_str(), summary.wall_seconds, summary.output_path.c_str());
@@ -34,7 +61,7 @@ int run_command(const std::string& scene_path, const std::vector<std::string>& o
 int main(int argc, char** argv) {
   CLI::App app{"ibms: 2D incompressible flow with immersed deformable, swelling bodies"};
   app.require_subcommand(1);
-  std::string scene_path, output;
+  std::string scene_path, output, restart;
   std::vector<std::string> overrides;
   bool quiet = false;
 
@@ -42,6 +69,9 @@ int main(int argc, char** argv) {
   run->add_option("scene", scene_path, "scene file (TOML)")->required();
   run->add_option("--set", overrides, "override a scene key: section.key=value (repeatable)");
   run->add_option("-o,--output", output, "HDF5 output file (default: output.file of the scene)");
+  run->add_option("--restart", restart,
+                  "continue from the /checkpoint of this ibms output file (same scene; [run] and [output] may "
+                  "change); the output goes to a new file");
   run->add_flag("-q,--quiet", quiet, "no progress line");
 
   CLI::App* info = app.add_subcommand("info", "print the resolved scene, grid, stages and time-step limits");
@@ -60,7 +90,7 @@ int main(int argc, char** argv) {
 
   CLI11_PARSE(app, argc, argv);
   try {
-    if (run->parsed()) return run_command(scene_path, overrides, output, quiet);
+    if (run->parsed()) return run_command(scene_path, overrides, output, restart, quiet);
     if (compare->parsed())
       return ibms::compare_case(case_name, compare_files,
                                 validation_dir.empty() ? ibms::default_validation_dir() : validation_dir);

@@ -48,12 +48,21 @@ Checkpoint read_checkpoint(const std::string& h5_path) {
   }
   const Hdf5Handle file = checked_handle(H5Fopen(h5_path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose, h5_path,
                                          "cannot open checkpoint file");
-  if (!link_exists(file.get(), "/checkpoint")) {
-    throw InputError(fmt::format("{}: no /checkpoint group (the run wrote no checkpoint)", h5_path));
-  }
-  const Hdf5Handle group = checked_handle(H5Gopen2(file.get(), "/checkpoint", H5P_DEFAULT), H5Gclose, h5_path,
-                                          "cannot open /checkpoint");
-  if (!has_attribute(group.get(), "complete") || read_double_attribute(group.get(), "complete", h5_path) != 1.0) {
+  // /checkpoint, or /checkpoint_next when the run was killed while replacing /checkpoint with it.
+  const auto complete_group = [&](const char* name) {
+    Hdf5Handle group;
+    if (!link_exists(file.get(), name)) return group;
+    group = checked_handle(H5Gopen2(file.get(), name, H5P_DEFAULT), H5Gclose, h5_path,
+                           fmt::format("cannot open {}", name));
+    if (!has_attribute(group.get(), "complete") || read_double_attribute(group.get(), "complete", h5_path) != 1.0)
+      group.reset();
+    return group;
+  };
+  Hdf5Handle group = complete_group("/checkpoint");
+  if (!group.valid()) group = complete_group("/checkpoint_next");
+  if (!group.valid()) {
+    if (!link_exists(file.get(), "/checkpoint") && !link_exists(file.get(), "/checkpoint_next"))
+      throw InputError(fmt::format("{}: no /checkpoint group (the run wrote no checkpoint)", h5_path));
     throw InputError(fmt::format("{}: /checkpoint is incomplete (the run stopped while writing it)", h5_path));
   }
   Checkpoint checkpoint;

@@ -193,13 +193,14 @@ void OutputFile::write_checkpoint(const std::map<std::string, std::vector<double
       throw InputError(fmt::format("{}: {}: scalar name '{}' is reserved", path_, what, name));
     }
   }
-  // Drop the old checkpoint and write the new one; complete = 0 until everything is on disk,
-  // so a run killed in between leaves a checkpoint that read_checkpoint refuses.
-  if (link_exists(file_.get(), "/checkpoint")) {
-    check_hdf5(H5Ldelete(file_.get(), "/checkpoint", H5P_DEFAULT), path_, what);
+  // The new checkpoint goes to /checkpoint_next (complete = 0 until everything is on disk), then
+  // replaces /checkpoint. A run killed at any moment leaves a complete checkpoint under one of the
+  // two names (read_checkpoint takes /checkpoint, else a complete /checkpoint_next).
+  if (link_exists(file_.get(), "/checkpoint_next")) {
+    check_hdf5(H5Ldelete(file_.get(), "/checkpoint_next", H5P_DEFAULT), path_, what);
   }
-  const Hdf5Handle group = checked_handle(H5Gcreate2(file_.get(), "/checkpoint", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
-                                          H5Gclose, path_, what);
+  Hdf5Handle group = checked_handle(H5Gcreate2(file_.get(), "/checkpoint_next", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+                                    H5Gclose, path_, what);
   write_integer_attribute(group.get(), "complete", 0, path_);
   flush();
   write_integer_attribute(group.get(), "format_version", format_version, path_);
@@ -212,6 +213,14 @@ void OutputFile::write_checkpoint(const std::map<std::string, std::vector<double
   }
   flush();
   write_integer_attribute(group.get(), "complete", 1, path_);
+  group.reset();
+  flush();
+  if (link_exists(file_.get(), "/checkpoint")) {
+    check_hdf5(H5Ldelete(file_.get(), "/checkpoint", H5P_DEFAULT), path_, what);
+    flush();
+  }
+  check_hdf5(H5Lmove(file_.get(), "/checkpoint_next", file_.get(), "/checkpoint", H5P_DEFAULT, H5P_DEFAULT), path_,
+             what);
   flush();
 }
 

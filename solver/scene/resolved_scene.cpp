@@ -127,6 +127,7 @@ std::string resolved_scene_toml(const Scene& scene) {
   out += fmt::format("snapshot_interval = {}\n", toml_float(output.snapshot_interval));
   out += fmt::format("centreline_profiles = {}\n", toml_bool(output.centreline_profiles));
   out += fmt::format("progress = {}\n", toml_bool(output.progress));
+  out += fmt::format("checkpoint_every = {}\n", output.checkpoint_every);
   return out;
 }
 

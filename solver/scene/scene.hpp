@@ -84,6 +84,8 @@ struct OutputSpec {
   double snapshot_interval = 0.0;    // time between snapshots [time]; 0 = only the final state
   bool centreline_profiles = true;   // write <file stem>_centreline_u.csv / _v.csv at the end
   bool progress = true;              // progress line on stderr
+  long checkpoint_every = 0;         // write /checkpoint every k steps [-]; 0 = only at the end
+                                     // (and on SIGINT/SIGTERM); `ibms run --restart` reads it
 };
 
 struct Scene {

@@ -185,6 +185,7 @@ Scene scene_from_table(const toml::table& root, SceneDiagnostics& diagnostics) {
   output.read_real("snapshot_interval", scene.output.snapshot_interval, Need::optional, non_negative);
   output.read_bool("centreline_profiles", scene.output.centreline_profiles);
   output.read_bool("progress", scene.output.progress);
+  output.read_integer("checkpoint_every", scene.output.checkpoint_every, Need::optional, /*lower=*/0);
   return scene;
 }
 

@@ -29,7 +29,7 @@ inline constexpr std::string_view swelling_keys[] = {"onset_time", "rate", "max_
 inline constexpr std::string_view contact_keys[] = {"stiffness", "restitution_coefficient",
                                                     "cds_radius", "cds_radius_fraction", "walls"};
 inline constexpr std::string_view output_keys[] = {"file", "series_every", "snapshot_interval",
-                                                   "centreline_profiles", "progress"};
+                                                   "centreline_profiles", "progress", "checkpoint_every"};
 
 inline constexpr std::string_view kernel_choices[] = {"roma3", "peskin4", "cosine4", "bkp6"};
 inline constexpr std::string_view inner_fluid_inertia_choices[] = {"kempe", "none"};

@@ -13,8 +13,10 @@
 #include "fluid/boundary_conditions.hpp"
 #include "fluid/operators.hpp"
 #include "io/csv_table.hpp"
+#include "io/checkpoint.hpp"
 #include "io/output_file.hpp"
 #include "sim/diagnostics.hpp"
+#include "sim/simulation_checkpoint.hpp"
 #include "solid/body_geometry.hpp"
 #include "solid/spring_forces.hpp"
 
@@ -191,12 +193,19 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& options) {
   const RunSpec& run = scene.run;
   RunSummary summary;
   summary.output_path = options.output_path.empty() ? scene.output.file : options.output_path;
+  double next_snapshot = scene.output.snapshot_interval > 0 ? sim.fluid().time : HUGE_VAL;
+  if (!options.restart_file.empty()) {  // before the output file exists: a bad restart writes nothing
+    std::error_code error;
+    if (std::filesystem::equivalent(options.restart_file, summary.output_path, error))
+      throw InputError(options.restart_file + ": --restart: the output file would overwrite the checkpoint "
+                       "being restarted from; give another output file with -o");
+    next_snapshot = restore_simulation(read_checkpoint(options.restart_file), options.restart_file, sim);
+  }
   OutputFile out(summary.output_path, scene.resolved_text, sim.grid(), IBMS_VERSION, IBMS_GIT_COMMIT);
 
   const auto start = clock::now();
   auto last_progress = start;
   const bool progress = scene.output.progress && !options.quiet;
-  double next_snapshot = scene.output.snapshot_interval > 0 ? sim.fluid().time : HUGE_VAL;
   FluidState& f = sim.fluid();
   BodyTable body_table;
   VelocityScan scan = scan_velocity(sim.grid(), f);
@@ -208,6 +217,11 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& options) {
                        "(fluid at rest, no moving wall): set run.max_time_step or run.time_step");
     while (f.time < run.end_time - time_tolerance) {
       if (run.max_steps > 0 && f.step >= run.max_steps) { summary.stop_reason = "max_steps"; break; }
+      if (options.stop_requested != nullptr && *options.stop_requested != 0) {
+        summary.interrupted = true;
+        summary.stop_reason = fmt::format("interrupted by signal {}", static_cast<int>(*options.stop_requested));
+        break;
+      }
       if (f.time >= next_snapshot - time_tolerance) {
         auto t = sim.timers().time(Stage::output);
         write_snapshot(out, sim);
@@ -225,6 +239,10 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& options) {
       if (f.step % scene.output.series_every == 0) {
         auto t = sim.timers().time(Stage::output);
         write_series(out, sim, dt, dt * scan.max_rate, steady_residual, body_table);
+      }
+      if (scene.output.checkpoint_every > 0 && f.step % scene.output.checkpoint_every == 0) {
+        auto t = sim.timers().time(Stage::output);
+        write_simulation_checkpoint(out, sim, next_snapshot);
       }
       if (run.steady_tolerance > 0 && steady_residual < run.steady_tolerance) {
         summary.reached_steady_state = true;
@@ -248,6 +266,8 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& options) {
   }
   {
     auto t = sim.timers().time(Stage::output);
+    // The checkpoint first: write_snapshot refills the velocity ghost layers.
+    write_simulation_checkpoint(out, sim, next_snapshot);
     write_snapshot(out, sim);
     if (scene.output.centreline_profiles) write_profiles(summary.output_path, sim);
     write_body_table(summary.output_path, sim, body_table);

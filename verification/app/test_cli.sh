@@ -3,7 +3,7 @@
 # file and the key, and creates no output file; (2) a run that blows up exits with code 3, the
 # message names step, time and place, and the HDF5 output written so far is readable.
 set -u
-ibms=$1; good_scene=$2
+ibms=$1; good_scene=$2; body_scene=${3:-}
 work=$(mktemp -d); trap 'rm -rf "$work"' EXIT
 cd "$work"
 failures=0
@@ -34,6 +34,23 @@ check_bad "missing scene file" "no_such_scene.toml" no_such_scene.toml
 check_bad "override of an unknown key" "fluid.nonsense" good.toml --set fluid.nonsense=1
 check_bad "override with a non-physical value" "run.time_step" good.toml --set run.time_step=-1
 check_bad "unwritable output directory" "no_such_dir" good.toml --set output.file=no_such_dir/x.h5
+check_bad "negative end time" "run.end_time" good.toml --set run.end_time=-1
+check_bad "zero fluid density" "fluid.density" good.toml --set fluid.density=0
+if [[ -n $body_scene ]]; then  # a scene with two bodies (one swelling) and contacts
+  cp "$body_scene" bodies.toml
+  check_bad "body outside the box" "bodies.0.centre" bodies.toml --set "bodies.0.centre=[1.5, 0.5]"
+  check_bad "body overlapping a wall" "bodies.0.centre" bodies.toml --set "bodies.0.centre=[0.5, 0.05]"
+  check_bad "body overlapping another" "bodies.1.centre" bodies.toml --set "bodies.1.centre=[0.5, 0.2]"
+  check_bad "fewer than 3 surface points" "bodies.0.n_surface_points" bodies.toml --set bodies.0.n_surface_points=2
+  check_bad "restitution above 1" "bodies.1.restitution_coefficient" bodies.toml --set bodies.1.restitution_coefficient=1.2
+  check_bad "contact restitution 0" "contact.restitution_coefficient" bodies.toml --set contact.restitution_coefficient=0
+  check_bad "swelling maximum below the diameter" "bodies.1.swelling.max_diameter" bodies.toml \
+    --set bodies.1.swelling.max_diameter=0.1
+  check_bad "override of a key of a missing body" "bodies.7" bodies.toml --set bodies.7.diameter=0.1
+  check_bad "negative time step" "run.time_step" bodies.toml --set run.time_step=-0.1
+  check_bad "restart file missing" "no_such_checkpoint.h5" bodies.toml --restart no_such_checkpoint.h5
+  check_bad "restart file not HDF5" "bodies.toml" bodies.toml --restart bodies.toml
+fi
 
 # Blow-up: a fixed time step far beyond the CFL limit on a coarse cavity.
 rm -f blow.h5

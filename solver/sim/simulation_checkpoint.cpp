@@ -1,0 +1,172 @@
+// Writing and restoring the restart state of a Simulation (simulation_checkpoint.hpp).
+#include "sim/simulation_checkpoint.hpp"
+
+#include <fmt/format.h>
+
+#include <map>
+#include <sstream>
+#include <vector>
+
+#include "core/errors.hpp"
+
+namespace ibms {
+namespace {
+
+using Arrays = std::map<std::string, std::vector<double>>;
+using Scalars = std::map<std::string, double>;
+
+std::string body_prefix(std::size_t b) { return fmt::format("body_{:03d}_", b); }
+
+std::vector<double> cell_values(const CellField& field) {  // ghost layers included
+  const double* data = field.data();
+  return std::vector<double>(data, data + static_cast<std::size_t>(field.stride()) * (field.ny() + 2));
+}
+
+std::vector<double> interleaved(const std::vector<Vec2>& points) {
+  std::vector<double> values;
+  values.reserve(2 * points.size());
+  for (const Vec2& p : points) values.insert(values.end(), {p[0], p[1]});
+  return values;
+}
+
+// Reads named arrays and scalars, each failure an InputError naming the checkpoint and the name.
+class CheckpointReader {
+ public:
+  CheckpointReader(const Checkpoint& checkpoint, const std::string& path) : cp_(checkpoint), path_(path) {}
+
+  [[noreturn]] void fail(const std::string& name, const std::string& reason) const {
+    throw InputError(fmt::format("{}: /checkpoint/{}: {}", path_, name, reason));
+  }
+  double scalar(const std::string& name) const {
+    const auto found = cp_.scalars.find(name);
+    if (found == cp_.scalars.end()) fail(name, "missing");
+    return found->second;
+  }
+  const std::vector<double>& array(const std::string& name, std::size_t expected_size) const {
+    const auto found = cp_.arrays.find(name);
+    if (found == cp_.arrays.end()) fail(name, "missing");
+    if (found->second.size() != expected_size) {
+      fail(name, fmt::format("has {} values, this scene needs {}", found->second.size(), expected_size));
+    }
+    return found->second;
+  }
+  void into(const std::string& name, CellField& field) const {
+    const std::vector<double>& values = array(name, static_cast<std::size_t>(field.stride()) * (field.ny() + 2));
+    std::copy(values.begin(), values.end(), field.data());
+  }
+  void into(const std::string& name, FaceField& field) const {
+    const std::vector<double>& values = array(name, field.values().size());
+    std::copy(values.begin(), values.end(), field.values().begin());
+  }
+  void into(const std::string& name, std::vector<Vec2>& points) const {
+    const std::vector<double>& values = array(name, 2 * points.size());
+    for (std::size_t k = 0; k < points.size(); ++k) points[k] = {values[2 * k], values[2 * k + 1]};
+  }
+  void into(const std::string& name, std::vector<double>& values) const {
+    values = array(name, values.size());
+  }
+
+ private:
+  const Checkpoint& cp_;
+  const std::string& path_;
+};
+
+// First line where two texts differ, for the message.
+std::string first_difference(const std::string& a, const std::string& b) {
+  std::istringstream sa(a), sb(b);
+  std::string la, lb;
+  while (true) {
+    const bool more_a = static_cast<bool>(std::getline(sa, la));
+    const bool more_b = static_cast<bool>(std::getline(sb, lb));
+    if (!more_a && !more_b) return "";
+    if (!more_a) la = "(end)";
+    if (!more_b) lb = "(end)";
+    if (la != lb) return fmt::format("checkpoint has '{}', this scene '{}'", la, lb);
+  }
+}
+
+}  // namespace
+
+std::string restart_relevant_scene(const std::string& resolved_scene) {
+  std::istringstream in(resolved_scene);
+  std::string line, kept;
+  bool skipping = false;
+  while (std::getline(in, line)) {
+    if (!line.empty() && line[0] == '[') skipping = line == "[run]" || line == "[output]";
+    if (!skipping) kept += line + "\n";
+  }
+  return kept;
+}
+
+void write_simulation_checkpoint(OutputFile& out, const Simulation& sim, double next_snapshot_time) {
+  const FluidState& f = sim.fluid();
+  Arrays arrays{
+      {"fluid_velocity_x", cell_values(f.velocity_x)},
+      {"fluid_velocity_y", cell_values(f.velocity_y)},
+      {"fluid_pressure", cell_values(f.pressure)},
+      {"fluid_convection_x_prev", cell_values(f.convection_x_prev)},
+      {"fluid_convection_y_prev", cell_values(f.convection_y_prev)},
+      {"fluid_velocity_face_x", f.velocity_face_x.values()},
+      {"fluid_velocity_face_y", f.velocity_face_y.values()},
+  };
+  Scalars scalars{
+      {"time", f.time},
+      {"step", static_cast<double>(f.step)},
+      {"time_step_prev", f.time_step_prev},
+      {"has_convection_prev", f.has_convection_prev ? 1.0 : 0.0},
+      {"next_snapshot_time", next_snapshot_time},
+      {"nx", static_cast<double>(sim.grid().nx)},
+      {"ny", static_cast<double>(sim.grid().ny)},
+      {"n_bodies", static_cast<double>(sim.bodies().size())},
+  };
+  for (std::size_t b = 0; b < sim.bodies().size(); ++b) {
+    const MassSpringBody& body = sim.bodies()[b];
+    const std::string prefix = body_prefix(b);
+    arrays[prefix + "position"] = interleaved(body.position);
+    arrays[prefix + "velocity"] = interleaved(body.velocity);
+    arrays[prefix + "mass"] = body.mass;
+    arrays[prefix + "diameter"] = {body.diameter};
+    arrays[prefix + "triangle_momentum"] = interleaved(sim.coupling()[b].triangle_momentum);
+  }
+  out.write_checkpoint(arrays, scalars, checkpoint_format_version);
+}
+
+double restore_simulation(const Checkpoint& checkpoint, const std::string& path, Simulation& sim) {
+  if (checkpoint.format_version != checkpoint_format_version) {
+    throw InputError(fmt::format("{}: /checkpoint format_version {}: this ibms reads format_version {} only",
+                                 path, checkpoint.format_version, checkpoint_format_version));
+  }
+  const std::string difference = first_difference(restart_relevant_scene(checkpoint.scene),
+                                                  restart_relevant_scene(sim.scene().resolved_text));
+  if (!difference.empty()) {
+    throw InputError(fmt::format("{}: scene: the checkpoint was written for a different scene (only [run] and "
+                                 "[output] may change on restart): {}", path, difference));
+  }
+  const CheckpointReader read(checkpoint, path);
+  if (read.scalar("nx") != sim.grid().nx || read.scalar("ny") != sim.grid().ny) read.fail("nx", "grid size differs");
+  if (read.scalar("n_bodies") != static_cast<double>(sim.bodies().size())) read.fail("n_bodies", "body count differs");
+  FluidState& f = sim.fluid();
+  f.time = read.scalar("time");
+  f.step = static_cast<long>(read.scalar("step"));
+  f.time_step_prev = read.scalar("time_step_prev");
+  f.has_convection_prev = read.scalar("has_convection_prev") != 0.0;
+  read.into("fluid_velocity_x", f.velocity_x);
+  read.into("fluid_velocity_y", f.velocity_y);
+  read.into("fluid_pressure", f.pressure);
+  read.into("fluid_convection_x_prev", f.convection_x_prev);
+  read.into("fluid_convection_y_prev", f.convection_y_prev);
+  read.into("fluid_velocity_face_x", f.velocity_face_x);
+  read.into("fluid_velocity_face_y", f.velocity_face_y);
+  for (std::size_t b = 0; b < sim.bodies().size(); ++b) {
+    MassSpringBody& body = sim.bodies()[b];
+    const std::string prefix = body_prefix(b);
+    read.into(prefix + "position", body.position);
+    read.into(prefix + "velocity", body.velocity);
+    read.into(prefix + "mass", body.mass);
+    body.diameter = read.array(prefix + "diameter", 1)[0];
+    read.into(prefix + "triangle_momentum", sim.coupling()[b].triangle_momentum);
+  }
+  return read.scalar("next_snapshot_time");
+}
+
+}  // namespace ibms

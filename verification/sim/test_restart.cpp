@@ -1,0 +1,194 @@
+// Restart (issue 6 item 3): a run stopped at step M and continued with --restart from its
+// /checkpoint ends bit-identical to the run that never stopped, with bodies, swelling and DEM
+// contacts active; the checkpoint's format version, scene and sizes are checked by the reader.
+#define BOOST_TEST_MODULE restart
+#include <boost/test/unit_test.hpp>
+
+#include <hdf5.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <string>
+
+#include "core/errors.hpp"
+#include "io/checkpoint.hpp"
+#include "io/output_file.hpp"
+#include "scene/scene_reader.hpp"
+#include "sim/run.hpp"
+#include "sim/simulation_checkpoint.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct TempDir {
+  fs::path path;
+  TempDir() : path(fs::temp_directory_path() / ("ibms_restart_" + std::to_string(::getpid()))) {
+    fs::create_directories(path);
+  }
+  ~TempDir() { fs::remove_all(path); }
+  std::string file(const std::string& name) const { return (path / name).string(); }
+};
+
+// verification/sim/restart_scene.toml with its output in `output` and further overrides.
+ibms::Scene scene_for(const std::string& output, std::vector<std::string> overrides = {}) {
+  overrides.insert(overrides.begin(), "output.file=" + output);
+  return ibms::read_scene_file(IBMS_RESTART_SCENE, overrides);
+}
+
+ibms::RunSummary run(const ibms::Scene& scene, const std::string& restart = "") {
+  ibms::Simulation sim(scene);
+  return ibms::run_simulation(sim, {scene.output.file, /*quiet=*/true, restart, nullptr});
+}
+
+// Bitwise equality of two doubles (NaN payloads and signed zeros included).
+bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+// The finite values of /series/<name> in an output file.
+std::vector<double> series(const std::string& file, const std::string& name) {
+  const hid_t f = H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  const hid_t d = H5Dopen2(f, ("/series/" + name).c_str(), H5P_DEFAULT);
+  const hid_t s = H5Dget_space(d);
+  hsize_t n = 0;
+  H5Sget_simple_extent_dims(s, &n, nullptr);
+  std::vector<double> values(n);
+  H5Dread(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data());
+  H5Sclose(s);
+  H5Dclose(d);
+  H5Fclose(f);
+  values.erase(std::remove_if(values.begin(), values.end(), [](double v) { return !std::isfinite(v); }),
+               values.end());
+  return values;
+}
+
+// Largest value of /series/<name> (to show a mechanism was active); -inf if none.
+double series_max(const std::string& file, const std::string& name) {
+  const std::vector<double> values = series(file, name);
+  return values.empty() ? -HUGE_VAL : *std::max_element(values.begin(), values.end());
+}
+
+}  // namespace
+
+// Number of values (arrays and scalars) of the two files' checkpoints that differ in any bit.
+std::size_t n_different_values(const std::string& file_a, const std::string& file_b) {
+  const ibms::Checkpoint a = ibms::read_checkpoint(file_a);
+  const ibms::Checkpoint b = ibms::read_checkpoint(file_b);
+  BOOST_REQUIRE(a.arrays.size() == b.arrays.size());
+  BOOST_REQUIRE(a.scalars.size() == b.scalars.size());
+  std::size_t n_values = 0, n_different = 0;
+  for (const auto& [name, values] : a.arrays) {
+    const std::vector<double>& other = b.arrays.at(name);
+    BOOST_REQUIRE_MESSAGE(values.size() == other.size(), name);
+    for (std::size_t k = 0; k < values.size(); ++k) n_different += same_bits(values[k], other[k]) ? 0 : 1;
+    n_values += values.size();
+  }
+  for (const auto& [name, value] : a.scalars) {
+    n_different += same_bits(value, b.scalars.at(name)) ? 0 : 1;
+    n_values += 1;
+  }
+  BOOST_TEST_MESSAGE("compared " << n_values << " state values bit by bit: " << n_different << " differ");
+  return n_different;
+}
+
+BOOST_AUTO_TEST_CASE(restarted_run_ends_bit_identical_with_bodies_swelling_and_contacts) {
+  const TempDir dir;
+  const ibms::RunSummary whole = run(scene_for(dir.file("whole.h5")));
+  const ibms::RunSummary first = run(scene_for(dir.file("first.h5"), {"run.max_steps=137"}));
+  BOOST_TEST(first.steps == 137);
+  const ibms::RunSummary rest = run(scene_for(dir.file("rest.h5")), dir.file("first.h5"));
+  BOOST_TEST(rest.steps == whole.steps);
+  BOOST_TEST(whole.steps == 300);
+
+  // The mechanisms the claim is about were active in the second half (after the restart).
+  BOOST_TEST(series_max(dir.file("rest.h5"), "contact/n_wall_contacts") > 0.0);
+  BOOST_TEST(series_max(dir.file("rest.h5"), "contact/n_active_pairs") > 0.0);
+  BOOST_TEST(series_max(dir.file("rest.h5"), "body_001/diameter") > 0.2 + 0.05 * 0.6);
+
+  BOOST_TEST(ibms::read_checkpoint(dir.file("whole.h5")).arrays.size() == 7u + 2u * 5u);
+  BOOST_TEST(n_different_values(dir.file("whole.h5"), dir.file("rest.h5")) == 0u);
+}
+
+// The adaptive time step (CFL and marker-travel limits) keeps no state of its own: it is a function
+// of the restored state, so the restarted run takes the same steps.
+BOOST_AUTO_TEST_CASE(restarted_run_with_adaptive_time_step_ends_bit_identical) {
+  const TempDir dir;
+  const std::vector<std::string> adaptive{"run.time_step=0", "run.cfl=0.1"};
+  const ibms::RunSummary whole = run(scene_for(dir.file("whole.h5"), adaptive));
+  std::vector<std::string> stopped = adaptive;
+  stopped.push_back("run.max_steps=" + std::to_string(whole.steps / 2));
+  run(scene_for(dir.file("first.h5"), stopped));
+  run(scene_for(dir.file("rest.h5"), adaptive), dir.file("first.h5"));
+  // The steps really varied (else this case would repeat the fixed-step one).
+  const std::vector<double> dt = series(dir.file("whole.h5"), "dt");
+  BOOST_TEST_MESSAGE(whole.steps << " adaptive steps, dt from " << *std::min_element(dt.begin(), dt.end())
+                                 << " to " << *std::max_element(dt.begin(), dt.end()));
+  BOOST_TEST(*std::max_element(dt.begin(), dt.end()) > 1.5 * *std::min_element(dt.begin(), dt.end()));
+  BOOST_TEST(n_different_values(dir.file("whole.h5"), dir.file("rest.h5")) == 0u);
+}
+
+BOOST_AUTO_TEST_CASE(checkpoint_of_another_format_version_is_refused) {
+  const TempDir dir;
+  run(scene_for(dir.file("first.h5"), {"run.max_steps=3"}));
+  ibms::Checkpoint checkpoint = ibms::read_checkpoint(dir.file("first.h5"));
+  checkpoint.format_version = ibms::checkpoint_format_version + 1;
+  ibms::Simulation sim(scene_for(dir.file("x.h5")));
+  try {
+    ibms::restore_simulation(checkpoint, "first.h5", sim);
+    BOOST_FAIL("no InputError");
+  } catch (const ibms::InputError& error) {
+    BOOST_TEST_MESSAGE(error.what());
+    BOOST_TEST(std::string(error.what()).find("first.h5: /checkpoint format_version 2") == 0u, error.what());
+  }
+}
+
+BOOST_AUTO_TEST_CASE(restart_with_a_different_scene_or_size_is_refused_and_writes_nothing) {
+  const TempDir dir;
+  run(scene_for(dir.file("first.h5"), {"run.max_steps=3"}));
+  const auto refused = [&](const std::vector<std::string>& overrides, const std::string& expected) {
+    const ibms::Scene scene = scene_for(dir.file("second.h5"), overrides);
+    try {
+      run(scene, dir.file("first.h5"));
+      BOOST_ERROR("no InputError for " << expected);
+    } catch (const ibms::InputError& error) {
+      BOOST_TEST_MESSAGE(error.what());
+      BOOST_TEST(std::string(error.what()).find(expected) != std::string::npos, error.what());
+      BOOST_TEST(std::string(error.what()).find('\n') == std::string::npos);
+    }
+    BOOST_TEST(!fs::exists(dir.file("second.h5")));
+  };
+  refused({"domain.cells_x=16", "domain.cells_y=16"}, "different scene");
+  refused({"fluid.kinematic_viscosity=0.03"}, "kinematic_viscosity");
+  // [run] and [output] may change: a longer end time is accepted.
+  run(scene_for(dir.file("longer.h5"), {"run.end_time=0.02"}), dir.file("first.h5"));
+  BOOST_TEST(fs::exists(dir.file("longer.h5")));
+}
+
+BOOST_AUTO_TEST_CASE(restart_refuses_to_overwrite_its_own_checkpoint_file) {
+  const TempDir dir;
+  run(scene_for(dir.file("first.h5"), {"run.max_steps=3"}));
+  BOOST_CHECK_THROW(run(scene_for(dir.file("first.h5")), dir.file("first.h5")), ibms::InputError);
+  BOOST_TEST(ibms::read_checkpoint(dir.file("first.h5")).scalars.at("step") == 3.0);  // untouched
+}
+
+BOOST_AUTO_TEST_CASE(incomplete_or_missing_checkpoint_is_refused) {
+  const TempDir dir;
+  BOOST_CHECK_THROW(ibms::read_checkpoint(dir.file("none.h5")), ibms::InputError);
+  run(scene_for(dir.file("first.h5"), {"run.max_steps=3"}));
+  // Mark it incomplete, as a run killed while writing it leaves it.
+  const hid_t f = H5Fopen(dir.file("first.h5").c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+  const hid_t g = H5Gopen2(f, "/checkpoint", H5P_DEFAULT);
+  const hid_t attribute = H5Aopen(g, "complete", H5P_DEFAULT);
+  const hid_t type = H5Aget_type(attribute);
+  const long long zero = 0;
+  const double zero_double = 0.0;
+  if (H5Tget_class(type) == H5T_FLOAT) H5Awrite(attribute, H5T_NATIVE_DOUBLE, &zero_double);
+  else H5Awrite(attribute, H5T_NATIVE_LLONG, &zero);
+  H5Tclose(type);
+  H5Aclose(attribute);
+  H5Gclose(g);
+  H5Fclose(f);
+  BOOST_CHECK_THROW(ibms::read_checkpoint(dir.file("first.h5")), ibms::InputError);
+}
