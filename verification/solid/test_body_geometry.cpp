@@ -1,0 +1,69 @@
+// The geometric diagnostics the cavity checks rely on (solid/body_geometry.hpp), each against a
+// configuration with a known answer:
+//   - deformation parameter: 0 for the regular wheel, (a - b)/(a + b) for rim points on an
+//     ellipse with semi-axes a, b (N divisible by 4, so both axes carry points), at any rotation;
+//   - separation: two wheels D = 0.2 whose centres are 0.25 apart along x, rim point 0 of each on
+//     the joining line, are 0.05 apart; no point is inside the other; the wall distance is the
+//     smallest of the rim extents to the box; rim points inside the other body are counted.
+#define BOOST_TEST_MODULE body_geometry
+#include <boost/test/unit_test.hpp>
+
+#include <cmath>
+
+#include "solid/body_geometry.hpp"
+#include "solid/mass_spring_body.hpp"
+
+using namespace ibms;
+
+namespace {
+
+MassSpringBody wheel(std::array<double, 2> centre, double diameter, int n) {
+  BodySpec spec;
+  spec.centre = centre;
+  spec.diameter = diameter;
+  spec.n_surface_points = n;
+  spec.density = 1.0;
+  spec.spring_stiffness = 1.0;
+  return build_wheel(spec);
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(deformation_parameter_of_circle_and_ellipse) {
+  MassSpringBody body = wheel({0.3, 0.7}, 0.2, 24);
+  BOOST_TEST(deformation_parameter(body) < 1e-14);
+  const double a = 0.13, b = 0.07;
+  for (double angle : {0.0, 0.4, 1.3}) {
+    for (int l = 0; l < body.n_surface; ++l) {
+      const double phi = 2 * M_PI * l / body.n_surface;
+      const double x = a * std::cos(phi), y = b * std::sin(phi);
+      body.position[l] = {0.3 + std::cos(angle) * x - std::sin(angle) * y,
+                          0.7 + std::sin(angle) * x + std::cos(angle) * y};
+    }
+    BOOST_TEST(deformation_parameter(body) == (a - b) / (a + b), boost::test_tools::tolerance(1e-12));
+  }
+}
+
+BOOST_AUTO_TEST_CASE(separation_between_bodies_and_from_walls) {
+  // Point 0 of build_wheel sits at angle 0 (on +x from the centre): check, then mirror body B so
+  // that its point n/2 faces body A.
+  std::vector<MassSpringBody> bodies{wheel({0.3, 0.5}, 0.2, 20), wheel({0.55, 0.5}, 0.2, 20)};
+  BOOST_TEST(bodies[0].position[0][0] == 0.4, boost::test_tools::tolerance(1e-14));
+  BOOST_TEST(bodies[0].position[0][1] == 0.5, boost::test_tools::tolerance(1e-14));
+  const BodySeparation s = body_separation(bodies, {0.0, 0.0}, {1.0, 1.0}, {false, false});
+  BOOST_TEST(s.min_rim_distance == 0.05, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(s.n_points_inside_others == 0);
+  BOOST_TEST(s.min_wall_distance == 0.2, boost::test_tools::tolerance(1e-12));  // body A's left point x = 0.2
+  // Periodic in x: only the y walls count (rims reach y = 0.4 and 0.6).
+  BOOST_TEST(body_separation(bodies, {0.0, 0.0}, {1.0, 1.0}, {true, false}).min_wall_distance == 0.4,
+             boost::test_tools::tolerance(1e-12));
+  // Push A's point 0 to (0.5, 0.5), inside B: it is counted, and so is B's point facing A,
+  // (0.45, 0.5), now inside A's spike; the rim distance shrinks.
+  bodies[0].position[0] = {0.5, 0.5};
+  const BodySeparation pushed = body_separation(bodies, {0.0, 0.0}, {1.0, 1.0}, {false, false});
+  BOOST_TEST(pushed.n_points_inside_others == 2);
+  BOOST_TEST(pushed.min_rim_distance < 0.05);
+  // A point outside the box has a negative wall distance.
+  bodies[1].position[0] = {1.01, 0.5};
+  BOOST_TEST(body_separation(bodies, {0.0, 0.0}, {1.0, 1.0}, {false, false}).min_wall_distance < 0.0);
+}
