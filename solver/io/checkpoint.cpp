@@ -3,6 +3,8 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
+
 #include "core/errors.hpp"
 #include "io/hdf5_handle.hpp"
 #include "io/hdf5_objects.hpp"
@@ -66,7 +68,10 @@ Checkpoint read_checkpoint(const std::string& h5_path) {
     throw InputError(fmt::format("{}: /checkpoint is incomplete (the run stopped while writing it)", h5_path));
   }
   Checkpoint checkpoint;
-  checkpoint.format_version = static_cast<int>(read_double_attribute(group.get(), "format_version", h5_path));
+  const double version = read_double_attribute(group.get(), "format_version", h5_path);
+  if (!(version >= 0.0 && version <= 1e6 && version == std::floor(version)))  // no UB in the cast below
+    throw InputError(fmt::format("{}: /checkpoint format_version {} is not a version number", h5_path, version));
+  checkpoint.format_version = static_cast<int>(version);
   if (has_attribute(file.get(), "scene")) checkpoint.scene = read_string_attribute(file.get(), "scene", h5_path);
 
   std::vector<std::string> attribute_names;

@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <map>
 #include <sstream>
 #include <vector>
@@ -41,6 +42,19 @@ class CheckpointReader {
     const auto found = cp_.scalars.find(name);
     if (found == cp_.scalars.end()) fail(name, "missing");
     return found->second;
+  }
+  // A scalar that must be finite and >= 0 (time, dt^{n-1}).
+  double non_negative(const std::string& name) const {
+    const double value = scalar(name);
+    if (!(std::isfinite(value) && value >= 0.0)) fail(name, fmt::format("must be finite and >= 0, got {}", value));
+    return value;
+  }
+  // A count stored as a double: a whole number in [0, 2^53] (exact in a double; no overflow on the cast).
+  long count(const std::string& name) const {
+    const double value = scalar(name);
+    if (!(value >= 0.0 && value <= 9007199254740992.0 && value == std::floor(value)))
+      fail(name, fmt::format("must be a whole number >= 0, got {}", value));
+    return static_cast<long>(value);
   }
   const std::vector<double>& array(const std::string& name, std::size_t expected_size) const {
     const auto found = cp_.arrays.find(name);
@@ -143,12 +157,14 @@ double restore_simulation(const Checkpoint& checkpoint, const std::string& path,
                                  "[output] may change on restart): {}", path, difference));
   }
   const CheckpointReader read(checkpoint, path);
-  if (read.scalar("nx") != sim.grid().nx || read.scalar("ny") != sim.grid().ny) read.fail("nx", "grid size differs");
-  if (read.scalar("n_bodies") != static_cast<double>(sim.bodies().size())) read.fail("n_bodies", "body count differs");
+  if (read.count("nx") != sim.grid().nx || read.count("ny") != sim.grid().ny) read.fail("nx", "grid size differs");
+  if (read.count("n_bodies") != static_cast<long>(sim.bodies().size())) read.fail("n_bodies", "body count differs");
+  const double next_snapshot_time = read.scalar("next_snapshot_time");  // +inf without snapshots
+  if (std::isnan(next_snapshot_time)) read.fail("next_snapshot_time", "is NaN");
   FluidState& f = sim.fluid();
-  f.time = read.scalar("time");
-  f.step = static_cast<long>(read.scalar("step"));
-  f.time_step_prev = read.scalar("time_step_prev");
+  f.time = read.non_negative("time");
+  f.step = read.count("step");
+  f.time_step_prev = read.non_negative("time_step_prev");
   f.has_convection_prev = read.scalar("has_convection_prev") != 0.0;
   read.into("fluid_velocity_x", f.velocity_x);
   read.into("fluid_velocity_y", f.velocity_y);
@@ -166,7 +182,7 @@ double restore_simulation(const Checkpoint& checkpoint, const std::string& path,
     body.diameter = read.array(prefix + "diameter", 1)[0];
     read.into(prefix + "triangle_momentum", sim.coupling()[b].triangle_momentum);
   }
-  return read.scalar("next_snapshot_time");
+  return next_snapshot_time;
 }
 
 }  // namespace ibms

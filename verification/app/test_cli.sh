@@ -9,11 +9,12 @@ cd "$work"
 failures=0
 check_bad() {  # name, expected key, ibms arguments...
   local name=$1 key=$2; shift 2
-  rm -f out.h5 out.xmf
+  rm -f out.h5 out.xmf out_*.csv
   "$ibms" run "$@" -o out.h5 --quiet 2> err.txt; local code=$?
   local lines; lines=$(wc -l < err.txt)
-  if [[ $code -ne 2 || $lines -ne 1 ]] || ! grep -q -- "$key" err.txt || [[ -e out.h5 ]]; then
-    echo "FAIL $name: exit $code, $lines line(s), output file $( [[ -e out.h5 ]] && echo written || echo absent ):"; cat err.txt
+  local written; written=$(ls out.h5 out.xmf out_*.csv 2>/dev/null)  # no partial output of any kind
+  if [[ $code -ne 2 || $lines -ne 1 || -n $written ]] || ! grep -q -- "$key" err.txt; then
+    echo "FAIL $name: exit $code, $lines line(s), output files written: '${written}':"; cat err.txt
     failures=$((failures + 1))
   else
     echo "ok   $name: $(cat err.txt)"

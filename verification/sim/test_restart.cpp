@@ -11,6 +11,8 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <limits>
+#include <utility>
 #include <string>
 
 #include "core/errors.hpp"
@@ -144,6 +146,39 @@ BOOST_AUTO_TEST_CASE(checkpoint_of_another_format_version_is_refused) {
   }
 }
 
+BOOST_AUTO_TEST_CASE(corrupted_checkpoint_scalars_and_sizes_are_refused) {
+  const TempDir dir;
+  run(scene_for(dir.file("first.h5"), {"run.max_steps=3"}));
+  const ibms::Checkpoint good = ibms::read_checkpoint(dir.file("first.h5"));
+  const auto refused = [&](const ibms::Checkpoint& bad, const std::string& expected) {
+    ibms::Simulation sim(scene_for(dir.file("x.h5")));
+    try {
+      ibms::restore_simulation(bad, "first.h5", sim);
+      BOOST_ERROR("no InputError for " << expected);
+    } catch (const ibms::InputError& error) {
+      BOOST_TEST_MESSAGE(error.what());
+      BOOST_TEST(std::string(error.what()).find("first.h5: /checkpoint/" + expected) == 0u, error.what());
+    }
+  };
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (const auto& [name, value] : std::vector<std::pair<std::string, double>>{
+           {"step", nan}, {"step", 1e300}, {"step", -1.0}, {"step", 2.5}, {"time", -1.0}, {"time", HUGE_VAL},
+           {"time_step_prev", nan}, {"next_snapshot_time", nan}, {"nx", 1e19}}) {
+    ibms::Checkpoint bad = good;
+    bad.scalars[name] = value;
+    refused(bad, name);
+  }
+  ibms::Checkpoint missing = good;
+  missing.scalars.erase("time");
+  refused(missing, "time");
+  ibms::Checkpoint short_array = good;
+  short_array.arrays["fluid_pressure"].pop_back();
+  refused(short_array, "fluid_pressure");
+  ibms::Checkpoint short_body = good;
+  short_body.arrays["body_001_position"].resize(4);
+  refused(short_body, "body_001_position");
+}
+
 BOOST_AUTO_TEST_CASE(restart_with_a_different_scene_or_size_is_refused_and_writes_nothing) {
   const TempDir dir;
   run(scene_for(dir.file("first.h5"), {"run.max_steps=3"}));
@@ -171,6 +206,26 @@ BOOST_AUTO_TEST_CASE(restart_refuses_to_overwrite_its_own_checkpoint_file) {
   run(scene_for(dir.file("first.h5"), {"run.max_steps=3"}));
   BOOST_CHECK_THROW(run(scene_for(dir.file("first.h5")), dir.file("first.h5")), ibms::InputError);
   BOOST_TEST(ibms::read_checkpoint(dir.file("first.h5")).scalars.at("step") == 3.0);  // untouched
+}
+
+BOOST_AUTO_TEST_CASE(checkpoint_with_an_out_of_range_format_version_is_refused) {
+  const TempDir dir;
+  run(scene_for(dir.file("first.h5"), {"run.max_steps=3"}));
+  const hid_t f = H5Fopen(dir.file("first.h5").c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+  const hid_t g = H5Gopen2(f, "/checkpoint", H5P_DEFAULT);
+  const hid_t attribute = H5Aopen(g, "format_version", H5P_DEFAULT);
+  const long long huge = 1LL << 40;  // beyond int: the reader must not cast it
+  const double huge_double = static_cast<double>(huge);
+  const hid_t type = H5Aget_type(attribute);
+  if (H5Tget_class(type) == H5T_FLOAT) H5Awrite(attribute, H5T_NATIVE_DOUBLE, &huge_double);
+  else H5Awrite(attribute, H5T_NATIVE_LLONG, &huge);
+  H5Tclose(type);
+  H5Aclose(attribute);
+  H5Gclose(g);
+  H5Fclose(f);
+  BOOST_CHECK_EXCEPTION(ibms::read_checkpoint(dir.file("first.h5")), ibms::InputError, [](const ibms::InputError& e) {
+    return std::string(e.what()).find("format_version 1099511627776 is not a version number") != std::string::npos;
+  });
 }
 
 BOOST_AUTO_TEST_CASE(incomplete_or_missing_checkpoint_is_refused) {
