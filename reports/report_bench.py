@@ -144,8 +144,9 @@ def stability_section(out, build, fig_dir):
     out.append("From \\texttt{bench/bench\\_stability}: fluid time step against spring or DEM "
                "stiffness, with the solid sub-stepped automatically (METHOD.md \\S5.3) or advanced "
                "once per fluid step (fixed). Circles: stable; triangles: unstable (rim area changed "
-               "by more than 50\\,\\%, or a body point faster than twice the initial approach speed); "
-               "crosses: stopped by the solver's blow-up check with its message. The bench's source "
+               "by more than 50\\,\\%, or a body point faster than twice the initial approach speed, "
+               "and the run reached its end: the solver did not stop it); "
+               "crosses: stopped by the solver's blow-up check with its message (after crossing a bound, if it did). The bench's source "
                "states each scene.\n")
     table = []
     for f in files:
