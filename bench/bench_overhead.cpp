@@ -61,7 +61,7 @@ void write_stages(std::ofstream& csv, const std::string& scene, Simulation& sim,
 
 int main(int argc, char** argv) {
   const std::string out_dir = argc > 1 ? argv[1] : IBMS_BENCH_OUTPUT_DIR;
-  const int steps = argc > 2 ? std::atoi(argv[2]) : 100;
+  const int steps = argc > 2 ? std::atoi(argv[2]) : 500;
   std::filesystem::create_directories(out_dir);
   std::ofstream csv(out_dir + "/overhead.csv");
   csv << "# bench_overhead: per-step cost of what a scene uses (issue 5 item 3)\n";

@@ -144,8 +144,9 @@ def stability_section(out, build, fig_dir):
     out.append("From \\texttt{bench/bench\\_stability}: fluid time step against spring or DEM "
                "stiffness, with the solid sub-stepped automatically (METHOD.md \\S5.3) or advanced "
                "once per fluid step (fixed). Circles: stable; triangles: unstable (rim area changed "
-               "by more than 50\\,\\%, or a body point faster than twice the initial approach speed); "
-               "crosses: stopped by the solver's blow-up check with its message. The bench's source "
+               "by more than 50\\,\\%, or a body point faster than twice the initial approach speed, "
+               "and the run reached its end: the solver did not stop it); "
+               "crosses: stopped by the solver's blow-up check with its message (after crossing a bound, if it did). The bench's source "
                "states each scene.\n")
     table = []
     for f in files:
@@ -204,15 +205,21 @@ def overhead_section(out, build):
     scenes = OrderedDict()
     for r in rows:
         if r["seconds_per_step"]:
-            scenes.setdefault(r["scene"], []).append(r)
+            scenes.setdefault(r["scene"], OrderedDict())[r["stage"]] = r
+    if not scenes:
+        return
+    stages = list(next(iter(scenes.values())))
     table = []
-    for scene, rs in scenes.items():
-        checks = get.get((scene, "pair_checks_total"), {}).get("calls", "--")
-        table.append([r"\texttt{%s}" % esc(scene)] +
-                     ["%s (%s)" % (num(r["seconds_per_step"], 2), r["calls"]) for r in rs] + [checks])
-    stages = [r["stage"] for r in next(iter(scenes.values()))] if scenes else []
-    out.append(longtable("l" + "r" * (len(stages) + 1), ["scene"] + [esc(s) for s in stages] +
-                         ["pair checks"], table,
+    for stage in stages:  # one row per stage, one column per scene: stays narrow
+        cells = []
+        for per_stage in scenes.values():
+            r = per_stage.get(stage)
+            cells.append("%s (%s)" % (num(r["seconds_per_step"], 2), r["calls"]) if r else "--")
+        table.append([esc(stage)] + cells)
+    table.append(["CDS pair checks (run)"] +
+                 [get.get((scene, "pair_checks_total"), {}).get("calls", "--") for scene in scenes])
+    out.append(longtable("l" + "p{3.3cm}" * len(scenes), ["stage"] + [esc(s.replace("_", " ")) for s in scenes],
+                         table,
                          caption="Seconds per step by stage (calls) from the solver's stage timers; "
                                  "\\emph{contacts} runs inside \\emph{bodies}, once per sub-step. "
                                  "The one-body scene evaluates wall contacts but examines no CDS pair."))
@@ -222,7 +229,7 @@ def run_times_section(out, tests):
     """Wall time per validation case: the sum of its ctest runs and check."""
     cases = OrderedDict()
     for t in tests:
-        m = re.match(r"(.+?)_(run_\w+|check\w*)$", t["name"])
+        m = re.match(r"(.+?)_(run(_\w+)?|check(_\w+)?)$", t["name"])
         if not m or math.isnan(t["seconds"]):
             continue
         c = cases.setdefault(m.group(1), [0.0, 0, True])
