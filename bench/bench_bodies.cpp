@@ -3,12 +3,15 @@
 //   - the settling disk (validation/settling_disk) at D/h = 12.5, 18.75, 25 (and more on request),
 //     first 0.3 s of settling (the run's own adaptive time step);
 //   - any further scene given on the command line, run to its end time (cavity cases with bodies).
-// Columns: fluid = predictor + projection; IB = direct forcing (interpolate + spread, all passes);
+// Columns: fluid = predictor + projection; IB = direct forcing (interpolate + spread, all passes;
+// marker preparation, incl. sub-markers, is timed with the schedules under "other");
 // solid = sub-stepped body update without contacts (springs, fluid reaction, inner-fluid inertia);
 // contacts = DEM forces and pair search inside the solid sub-steps; other = schedules,
 // diagnostics and output. Ratios are against the fluid stage of the same run.
 // Usage: bench_bodies SETTLING_SCENE [--cells 100,150,200] [--until 0.3] [--set k=v]... [EXTRA_SCENE...]
 //   (--set applies to the extra scenes, e.g. --set contact.stiffness=1e7 for the paper's DEM stiffness)
+#include <unistd.h>
+
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -33,11 +36,15 @@ struct Figures {
 Figures run_and_time(const std::string& scene_path, const std::vector<std::string>& overrides) {
   const Scene scene = read_scene_file(scene_path, overrides);
   Simulation sim(scene);
-  const std::string out = (std::filesystem::temp_directory_path() / "ibms_bench_bodies.h5").string();
-  const RunSummary summary = run_simulation(sim, {out, /*quiet=*/true});
-  std::filesystem::remove(out);
-  for (const char* suffix : {".xmf", "_bodies.csv", "_centreline_u.csv", "_centreline_v.csv"})
-    std::filesystem::remove((std::filesystem::temp_directory_path() / "ibms_bench_bodies").string() + suffix);
+  // A private scratch folder (concurrent benches do not collide), removed also on an exception.
+  const std::filesystem::path scratch =
+      std::filesystem::temp_directory_path() / ("ibms_bench_bodies_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(scratch);
+  struct Cleanup {
+    std::filesystem::path path;
+    ~Cleanup() { std::filesystem::remove_all(path); }
+  } cleanup{scratch};
+  const RunSummary summary = run_simulation(sim, {(scratch / "run.h5").string(), /*quiet=*/true});
   const StageTimers& t = sim.timers();
   Figures f;
   f.steps = summary.steps;
@@ -59,6 +66,10 @@ void print_header() {
 }
 
 void print_row(const std::string& name, const Figures& f) {
+  if (f.steps == 0) {
+    std::printf("   %-28s no steps run\n", name.c_str());
+    return;
+  }
   const double per = 1e3 / static_cast<double>(f.steps);
   std::printf("   %-28s %7ld %9.3f %9.3f %9.3f %9.3f %9.3f %7.3f %7.3f %7.3f %8.1f\n", name.c_str(), f.steps,
               f.fluid * per, f.ib * per, f.solid * per, f.contacts * per, f.other * per, f.ib / f.fluid,

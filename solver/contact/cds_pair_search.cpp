@@ -1,4 +1,5 @@
-// CDS pair search, METHOD.md §1.9: cell list with bins >= 2 r_max, and brute force for reference.
+// CDS pair search, METHOD.md §1.9: body-box broad phase (walled boxes), cell list with bins
+// >= 2 r_max (periodic boxes), and brute force for reference.
 #include "contact/cds_pair_search.hpp"
 
 #include <algorithm>
@@ -95,7 +96,8 @@ BinAxis make_axis(const ContactSpheres& spheres, const WallBox& box, int c, doub
     }
   }
   const double span = upper - axis.lower;
-  axis.n_bins = std::clamp(static_cast<int>(std::floor(span / bin_min)), 1, max_bins);
+  // Clamp in floating point first: span / bin_min can exceed INT_MAX for tiny spheres.
+  axis.n_bins = static_cast<int>(std::clamp(std::floor(span / bin_min), 1.0, static_cast<double>(max_bins)));
   axis.width = span > 0.0 ? span / axis.n_bins : 1.0;  // >= bin_min by the floor above
   return axis;
 }

@@ -35,7 +35,8 @@ struct SpherePair {
 
 struct PairSearchResult {
   std::vector<SpherePair> pairs;  // sorted by (first, second)
-  long n_pair_checks = 0;         // candidate pairs whose distance was examined [-]
+  long n_pair_checks = 0;         // candidate sphere pairs whose distance was examined, plus the
+                                  // body-box tests of the body-bounds search [-]
 };
 
 PairSearchResult find_touching_pairs_cell_list(const ContactSpheres& spheres, const WallBox& box);

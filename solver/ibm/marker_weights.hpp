@@ -11,5 +11,7 @@ namespace ibms {
 // h: grid spacing [length]. Returns dV_l [length^2 per unit depth].
 std::vector<double> marker_weights(const std::vector<std::array<double, 2>>& closed_ring,
                                    double h);
+// The same into `volume` (resized to the ring; no allocation within its capacity).
+void marker_weights(const std::vector<std::array<double, 2>>& closed_ring, double h, std::vector<double>& volume);
 
 }  // namespace ibms

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/errors.hpp"
 #include "ibm/direct_forcing.hpp"
 #include "ibm/marker_weights.hpp"
 
@@ -65,11 +66,18 @@ void prepare_markers(const std::vector<MassSpringBody>& bodies,
       for (int l = 0; l < n_rim; ++l) c.marker[l] = body.position[l];
     } else {
       // METHOD.md §3.6: split each rim edge into ceil(|e|/h) pieces, so marker spacing <= h.
+      // An edge longer than the reserved capacity allows (8 x the nominal swollen edge) means the
+      // body has exploded (in a periodic box nothing else catches it before the size overflows).
+      const double max_pieces = 8.0 * static_cast<double>(c.marker.capacity()) / n_rim;
       std::size_t n_markers = 0;
       for (int e = 0; e < n_rim; ++e) {
         const Vec2& a = body.position[e];
         const Vec2& z = body.position[(e + 1) % n_rim];
-        n_markers += static_cast<std::size_t>(std::max(1.0, std::ceil(std::hypot(z[0] - a[0], z[1] - a[1]) / h)));
+        const double pieces = std::ceil(std::hypot(z[0] - a[0], z[1] - a[1]) / h);
+        if (!(pieces <= max_pieces))
+          throw BlowUpError("body " + std::to_string(b) + ": rim edge " + std::to_string(e) + " stretched to " +
+                            std::to_string(pieces) + " cells (sub-markers; more than 8x its swollen length)");
+        n_markers += static_cast<std::size_t>(std::max(1.0, pieces));
       }
       resize_markers(c, n_markers);
       std::size_t m = 0;
@@ -85,7 +93,7 @@ void prepare_markers(const std::vector<MassSpringBody>& bodies,
         }
       }
     }
-    c.marker_volume = marker_weights(c.marker, h);  // dV_l = h s_l, METHOD.md §3.6
+    marker_weights(c.marker, h, c.marker_volume);  // dV_l = h s_l, METHOD.md §3.6 (in place)
     // METHOD.md §1.8: the fluid is forced towards the marker velocity minus the swelling
     // part (s'/s)(X_l - X_c), so a swelling body absorbs fluid instead of pushing it away.
     // s'/s [1/time] over the step that produced U^n: the marker velocities at t^n are the end of

@@ -46,8 +46,8 @@ struct BodyCoupling {
   std::vector<std::vector<CellOverlap>> triangle_cells;
   std::vector<Vec2> triangle_momentum;     // [length^3/time per unit depth]
 
-  // max_markers: capacity reserved once, so that sub-markers added as the body swells reallocate
-  // nothing within the step loop.
+  // max_markers: capacity reserved once for the marker arrays, so that sub-markers added as the
+  // body swells (up to 1.5x the nominal swollen edge) do not reallocate them within the step loop.
   BodyCoupling(const MassSpringBody& body, std::size_t max_markers);
 };
 

@@ -115,10 +115,11 @@ std::vector<SeriesValue> body_series(const Simulation& sim) {
     const BodySeparation sep = body_separation(sim.bodies(), {g.origin_x, g.origin_y},
                                                {g.origin_x + g.length_x, g.origin_y + g.length_y},
                                                {g.periodic_x, g.periodic_y});
-    row.push_back({"bodies/min_wall_distance", "length", sep.min_wall_distance});
+    if (!(g.periodic_x && g.periodic_y)) row.push_back({"bodies/min_wall_distance", "length", sep.min_wall_distance});
     if (sim.bodies().size() > 1) {
       row.push_back({"bodies/min_rim_distance", "length", sep.min_rim_distance});
       row.push_back({"bodies/n_points_inside_others", "-", static_cast<double>(sep.n_points_inside_others)});
+      row.push_back({"bodies/n_edge_crossings", "-", static_cast<double>(sep.n_edge_crossings)});
     }
   }
   if (sim.has_contacts()) {  // merged over the sub-steps of the step

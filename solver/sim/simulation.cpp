@@ -81,7 +81,7 @@ std::vector<std::string> Simulation::stage_names() const {
                          : "inner-fluid inertia off (variant A)");
     stages.push_back("bodies (sub-stepped symplectic Euler: springs, buoyant gravity, swelling, contact hook)");
     if (has_contacts()) stages.push_back("  contacts (DEM spring-dashpots on CDS, every sub-step; walls)");
-    if (has_pair_search()) stages.push_back("  pair search (cell list of CDS, every sub-step)");
+    if (has_pair_search()) stages.push_back("  pair search (CDS: body-box broad phase, cell list in periodic boxes; every sub-step)");
   }
   stages.push_back("diagnostics");
   if (scene_.run.steady_tolerance > 0) stages.push_back("steady-state stop");

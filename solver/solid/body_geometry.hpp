@@ -17,12 +17,14 @@ double deformation_parameter(const MassSpringBody& body);
 struct BodySeparation {
   double min_rim_distance = 0.0;  // smallest distance between rim points of different bodies [length]
   int n_points_inside_others = 0; // rim points of one body inside another's rim polygon [-]
+  int n_edge_crossings = 0;       // pairs of rim edges of different bodies that cross [-]
   double min_wall_distance = 0.0; // smallest distance from any rim point to a wall [length]
 };
 
 // Walls at x = lower[0], upper[0] (unless periodic[0]) and y = lower[1], upper[1] (unless
-// periodic[1]). A rim point outside the box has a negative wall distance. With one body
-// min_rim_distance is +infinity. O((sum N_l)^2): a diagnostic, evaluated when series are written.
+// periodic[1]); periodic directions use the minimum image between bodies. A rim point outside
+// the box has a negative wall distance; without walls (fully periodic) and with one body the
+// respective minimum is +infinity. O((sum N_l)^2): a diagnostic, evaluated when series are written.
 BodySeparation body_separation(const std::vector<MassSpringBody>& bodies, std::array<double, 2> lower,
                                std::array<double, 2> upper, std::array<bool, 2> periodic);
 

@@ -1,16 +1,18 @@
 // Check of the one-sided cavity with deformable objects (README.md; issue 4 §3): reads the body
 // series of the k = 10 and k = 100 runs and verifies, for each run,
 //   1. it reached end_time (no blow-up: no point left the box, nothing non-finite);
-//   2. no body leaves the box: the smallest rim-point distance to a wall stays > 0;
-//   3. no two bodies interpenetrate: no rim point inside another body's rim polygon, and the
-//      smallest rim-point distance between different bodies stays > 0;
+//   2. the wall contacts keep the bodies in the box: the smallest rim-point distance to a wall
+//      stays >= r_c / 2 (r_c = 0.04, the CDS radius: contact starts at r_c);
+//   3. the body contacts keep the bodies apart: the smallest rim-point distance between different
+//      bodies stays >= r_c (contact starts at 2 r_c), no rim point inside another body's rim
+//      polygon and no crossing rim edges (sampled at every output step);
 //   4. areas stay bounded: every body's rim-polygon area stays within [0.5, 1.5] A0 (the wheel
 //      has no area constraint; outside that band it has collapsed or blown up);
 // and across the runs
 //   5. the deformation measure is clearly larger for k = 10: the mean over bodies and output
 //      times of the deformation parameter (r_max - r_min)/(r_max + r_min) of the rim radii
 //      (solid/body_geometry.hpp) is at least twice that of k = 100.
-// usage: cavity_objects_check <end_time> <base_k10> <base_k100>
+// usage: cavity_objects_check <end_time> <cds_radius> <base_k10> <base_k100>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -25,7 +27,7 @@ using namespace ibms::validation;
 namespace {
 
 struct RunFigures {
-  double end_time = 0, min_wall = INFINITY, min_rim = INFINITY, max_inside = 0;
+  double end_time = 0, min_wall = INFINITY, min_rim = INFINITY, max_inside = 0, max_crossings = 0;
   double area_min = INFINITY, area_max = 0, mean_deformation = 0, max_deformation = 0;
 };
 
@@ -36,6 +38,7 @@ RunFigures measure(const std::string& base) {
   for (double v : s.at("bodies/min_wall_distance")) f.min_wall = std::min(f.min_wall, v);
   for (double v : s.at("bodies/min_rim_distance")) f.min_rim = std::min(f.min_rim, v);
   for (double v : s.at("bodies/n_points_inside_others")) f.max_inside = std::max(f.max_inside, v);
+  for (double v : s.at("bodies/n_edge_crossings")) f.max_crossings = std::max(f.max_crossings, v);
   double sum = 0;
   long count = 0;
   for (int b = 0;; ++b) {
@@ -60,32 +63,35 @@ RunFigures measure(const std::string& base) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 4) {
-    std::fprintf(stderr, "usage: %s <end_time> <base_k10> <base_k100>\n", argv[0]);
+  if (argc != 5) {
+    std::fprintf(stderr, "usage: %s <end_time> <cds_radius> <base_k10> <base_k100>\n", argv[0]);
     return 2;
   }
   try {
     const double end_time = std::atof(argv[1]);
-    const RunFigures k10 = measure(argv[2]), k100 = measure(argv[3]);
+    const double r_c = std::atof(argv[2]);
+    const RunFigures k10 = measure(argv[3]), k100 = measure(argv[4]);
     bool all = true;
     const std::string name = "cavity_deformable_objects";
     for (const auto& [label, f] : {std::pair{"k = 10", k10}, std::pair{"k = 100", k100}}) {
       const bool reached = f.end_time >= end_time * (1 - 1e-9);
-      const bool inside_box = f.min_wall > 0;
-      const bool apart = f.max_inside == 0 && f.min_rim > 0;
+      const bool inside_box = f.min_wall >= 0.5 * r_c;
+      const bool apart = f.max_inside == 0 && f.max_crossings == 0 && f.min_rim >= r_c;
       const bool bounded = f.area_min >= 0.5 && f.area_max <= 1.5;
       std::printf("%s %s: 1. reached t = %.4g (end %.4g)\n", reached ? "PASS" : "FAIL", label, f.end_time, end_time);
-      std::printf("%s %s: 2. min rim-point distance to a wall %.4g (> 0)\n", inside_box ? "PASS" : "FAIL", label,
-                  f.min_wall);
-      std::printf("%s %s: 3. min rim distance between bodies %.4g (> 0), rim points inside another body %g\n",
-                  apart ? "PASS" : "FAIL", label, f.min_rim, f.max_inside);
+      std::printf("%s %s: 2. min rim-point distance to a wall %.4g (>= %.4g)\n", inside_box ? "PASS" : "FAIL", label,
+                  f.min_wall, 0.5 * r_c);
+      std::printf("%s %s: 3. min rim distance between bodies %.4g (>= %.4g), rim points inside another body %g, "
+                  "crossing edges %g\n",
+                  apart ? "PASS" : "FAIL", label, f.min_rim, r_c, f.max_inside, f.max_crossings);
       std::printf("%s %s: 4. area / A0 in [%.4f, %.4f] (band [0.5, 1.5])\n", bounded ? "PASS" : "FAIL", label,
                   f.area_min, f.area_max);
       std::printf("     %s: deformation parameter mean %.4f, max %.4f\n", label, f.mean_deformation, f.max_deformation);
       const std::string l = label;
       record(name, l + ": reached end time (measured: t_end)", end_time, f.end_time, reached);
-      record(name, l + ": min rim-point distance to a wall (> 0)", 0.0, f.min_wall, inside_box);
-      record(name, l + ": min rim-point distance between bodies (> 0, none inside another)", 0.0, f.min_rim, apart);
+      record(name, l + ": min rim-point distance to a wall (>= r_c / 2)", 0.5 * r_c, f.min_wall, inside_box);
+      record(name, l + ": min rim-point distance between bodies (>= r_c, none inside another, no crossing edges)", r_c,
+             f.min_rim, apart);
       record(name, l + ": min area / A0 (>= 0.5)", 0.5, f.area_min, f.area_min >= 0.5);
       record(name, l + ": max area / A0 (<= 1.5)", 1.5, f.area_max, f.area_max <= 1.5);
       record_info(name, l + ": mean deformation parameter", f.mean_deformation);

@@ -2,13 +2,18 @@
 // of the non-swelling and the swelling run, writes the centre trajectories for
 // t_stop <= t <= t_end as CSV (long format: time, particle, x, y, diameter), and verifies
 //   1. both runs reach t_end (stable: no blow-up);
-//   2. no particle leaves the box and no two interpenetrate, in both runs;
+//   2. the contacts keep the particles apart and inside the box, in both runs: the smallest
+//      rim-point distance between particles stays >= min_gap and to a wall >= min_gap / 2
+//      (thresholds from the CDS radius, README.md), no rim point inside another particle and no
+//      crossing rim edges (sampled at every output step);
 //   3. after the lids stop, the non-swelling particles travel further on average: the mean over
-//      particles of the centroid path length over [t_stop, t_end] is larger without swelling;
-//   4. swelling particles keep moving as they push each other: over the late window
-//      [t_late, t_end] the swelling run has active particle-particle contacts and its particles'
-//      mean path length exceeds that of the non-swelling particles over the same window.
-// usage: cavity_particles_check <t_stop> <t_late> <t_end> <base_nonswelling> <base_swelling> <out_dir>
+//      particles of the centre-of-mass path length, integral of |V_com| dt over [t_stop, t_end]
+//      (internal rim oscillations do not move the centre of mass), is larger without swelling;
+//   4. swelling particles keep moving as they push each other: over [t_late, t_end] the swelling
+//      run has more touching CDS pairs on average than the non-swelling run, and its particles'
+//      mean path length is larger.
+// usage: cavity_particles_check <t_stop> <t_late> <t_end> <min_gap> <case_name> <base_nonswelling>
+//        <base_swelling> <out_dir>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -36,27 +41,33 @@ int count_bodies(const SeriesTable& s) {
   return n;
 }
 
-// Mean over particles of the centroid path length over [t0, t1].
+// Mean over particles of the centre-of-mass path length over [t0, t1]: trapezoidal integral of
+// |V_com| over the output times.
 double mean_path_length(const SeriesTable& s, double t0, double t1) {
   const auto& t = s.at("time");
   const int n = count_bodies(s);
   double total = 0;
   for (int b = 0; b < n; ++b) {
-    const auto& x = s.at(body(b, "centroid_x"));
-    const auto& y = s.at(body(b, "centroid_y"));
+    const auto& u = s.at(body(b, "velocity_x"));
+    const auto& v = s.at(body(b, "velocity_y"));
     for (std::size_t k = 1; k < t.size(); ++k)
-      if (t[k - 1] >= t0 && t[k] <= t1) total += std::hypot(x[k] - x[k - 1], y[k] - y[k - 1]);
+      if (t[k - 1] >= t0 && t[k] <= t1)
+        total += 0.5 * (std::hypot(u[k - 1], v[k - 1]) + std::hypot(u[k], v[k])) * (t[k] - t[k - 1]);
   }
   return total / n;
 }
 
-double max_in_window(const SeriesTable& s, const std::string& column, double t0, double t1) {
+double mean_in_window(const SeriesTable& s, const std::string& column, double t0, double t1) {
   const auto& t = s.at("time");
   const auto& v = s.at(column);
-  double m = 0;
+  double sum = 0;
+  int count = 0;
   for (std::size_t k = 0; k < t.size(); ++k)
-    if (t[k] >= t0 && t[k] <= t1) m = std::max(m, v[k]);
-  return m;
+    if (t[k] >= t0 && t[k] <= t1) {
+      sum += v[k];
+      ++count;
+    }
+  return count ? sum / count : 0.0;
 }
 
 void write_trajectories(const SeriesTable& s, double t0, double t1, const std::string& path, const std::string& run) {
@@ -78,59 +89,67 @@ void write_trajectories(const SeriesTable& s, double t0, double t1, const std::s
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 7) {
-    std::fprintf(stderr, "usage: %s <t_stop> <t_late> <t_end> <base_nonswelling> <base_swelling> <out_dir>\n", argv[0]);
+  if (argc != 9) {
+    std::fprintf(stderr,
+                 "usage: %s <t_stop> <t_late> <t_end> <min_gap> <case_name> <base_nonswelling> <base_swelling> <out_dir>\n",
+                 argv[0]);
     return 2;
   }
   try {
     const double t_stop = std::atof(argv[1]), t_late = std::atof(argv[2]), t_end = std::atof(argv[3]);
-    const SeriesTable plain = read_series_csv(std::string(argv[4]) + "_bodies.csv");
-    const SeriesTable swell = read_series_csv(std::string(argv[5]) + "_bodies.csv");
-    const std::string out_dir = argv[6];
+    const double min_gap = std::atof(argv[4]);
+    const std::string name = argv[5];  // the case folder's name; the slow set prefixes its metrics
+    const SeriesTable plain = read_series_csv(std::string(argv[6]) + "_bodies.csv");
+    const SeriesTable swell = read_series_csv(std::string(argv[7]) + "_bodies.csv");
+    const std::string out_dir = argv[8];
     write_trajectories(plain, t_stop, t_end, out_dir + "/trajectories_nonswelling.csv", "non-swelling");
     write_trajectories(swell, t_stop, t_end, out_dir + "/trajectories_swelling.csv", "swelling");
-    // Case name in results.csv: the output folder's name (cavity_swelling_particles, or
-    // cavity_swelling_particles_dem1e7 for the slow set), as the report finds its figures there.
-    std::string name = out_dir;
-    while (!name.empty() && name.back() == '/') name.pop_back();
-    name = name.substr(name.find_last_of('/') + 1);
+    const std::string prefix = out_dir.find("dem1e7") != std::string::npos ? "DEM 1e7: " : "";
     bool all = true;
     for (const auto& [label, s] : {std::pair{"non-swelling", &plain}, std::pair{"swelling", &swell}}) {
       const double reached = s->at("time").back();
-      double min_wall = INFINITY, min_rim = INFINITY, inside = 0;
+      double min_wall = INFINITY, min_rim = INFINITY, inside = 0, crossings = 0;
       for (double v : s->at("bodies/min_wall_distance")) min_wall = std::min(min_wall, v);
       for (double v : s->at("bodies/min_rim_distance")) min_rim = std::min(min_rim, v);
       for (double v : s->at("bodies/n_points_inside_others")) inside = std::max(inside, v);
+      for (double v : s->at("bodies/n_edge_crossings")) crossings = std::max(crossings, v);
       const bool stable = reached >= t_end * (1 - 1e-9);
-      const bool contained = min_wall > 0 && min_rim > 0 && inside == 0;
+      const bool walls_ok = min_wall >= 0.5 * min_gap;
+      const bool apart = min_rim >= min_gap && inside == 0 && crossings == 0;
       std::printf("%s %s: 1. reached t = %.4g (end %.4g)\n", stable ? "PASS" : "FAIL", label, reached, t_end);
-      std::printf("%s %s: 2. min rim distance to a wall %.4g, between particles %.4g, points inside others %g\n",
-                  contained ? "PASS" : "FAIL", label, min_wall, min_rim, inside);
-      const std::string l = label;
+      std::printf("%s %s: 2a. min rim distance to a wall %.4g (>= %.4g)\n", walls_ok ? "PASS" : "FAIL", label,
+                  min_wall, 0.5 * min_gap);
+      std::printf("%s %s: 2b. min rim distance between particles %.4g (>= %.4g), points inside others %g, "
+                  "crossing edges %g\n",
+                  apart ? "PASS" : "FAIL", label, min_rim, min_gap, inside, crossings);
+      const std::string l = prefix + label;
       record(name, l + ": reached t_end (stable; measured: t)", t_end, reached, stable);
-      record(name, l + ": min rim distance to walls (> 0)", 0.0, min_wall, min_wall > 0);
-      record(name, l + ": min rim distance between particles (> 0, none inside another)", 0.0, min_rim,
-             min_rim > 0 && inside == 0);
-      all = all && stable && contained;
+      record(name, l + ": min rim distance to walls", 0.5 * min_gap, min_wall, walls_ok);
+      record(name, l + ": min rim distance between particles (none inside another, no crossing edges)", min_gap,
+             min_rim, apart);
+      all = all && stable && walls_ok && apart;
     }
     const double path_plain = mean_path_length(plain, t_stop, t_end);
     const double path_swell = mean_path_length(swell, t_stop, t_end);
     const bool further = path_plain > path_swell;
-    std::printf("%s 3. mean path length %g <= t <= %g: non-swelling %.5f > swelling %.5f\n", further ? "PASS" : "FAIL",
-                t_stop, t_end, path_plain, path_swell);
-    record(name, "mean path length after the lids stop: non-swelling - swelling (> 0)", 0.0, path_plain - path_swell,
-           further);
-    record_info(name, "mean path length after the lids stop, non-swelling", path_plain);
-    record_info(name, "mean path length after the lids stop, swelling", path_swell);
+    std::printf("%s 3. mean centre-of-mass path %g <= t <= %g: non-swelling %.5f > swelling %.5f\n",
+                further ? "PASS" : "FAIL", t_stop, t_end, path_plain, path_swell);
+    record(name, prefix + "mean path length after the lids stop: non-swelling - swelling (> 0)", 0.0,
+           path_plain - path_swell, further);
+    record_info(name, prefix + "mean path length after the lids stop, non-swelling", path_plain);
+    record_info(name, prefix + "mean path length after the lids stop, swelling", path_swell);
     const double late_plain = mean_path_length(plain, t_late, t_end);
     const double late_swell = mean_path_length(swell, t_late, t_end);
-    const double late_pairs = max_in_window(swell, "contact/n_active_pairs", t_late, t_end);
-    const bool pushing = late_pairs > 0 && late_swell > late_plain;
-    std::printf("%s 4. %g <= t <= %g: swelling run has up to %g active contact pairs; mean path length swelling "
-                "%.5f > non-swelling %.5f\n",
-                pushing ? "PASS" : "FAIL", t_late, t_end, late_pairs, late_swell, late_plain);
-    record(name, "late window: swelling - non-swelling mean path length (> 0, with contacts)", 0.0,
+    const double pairs_plain = mean_in_window(plain, "contact/n_active_pairs", t_late, t_end);
+    const double pairs_swell = mean_in_window(swell, "contact/n_active_pairs", t_late, t_end);
+    const bool pushing = pairs_swell > pairs_plain && late_swell > late_plain;
+    std::printf("%s 4. %g <= t <= %g: mean touching CDS pairs swelling %.3g > non-swelling %.3g; mean path "
+                "swelling %.5f > non-swelling %.5f\n",
+                pushing ? "PASS" : "FAIL", t_late, t_end, pairs_swell, pairs_plain, late_swell, late_plain);
+    record(name, prefix + "late window: swelling - non-swelling mean path length (> 0, with more contacts)", 0.0,
            late_swell - late_plain, pushing);
+    record_info(name, prefix + "late window: mean touching CDS pairs, swelling", pairs_swell);
+    record_info(name, prefix + "late window: mean touching CDS pairs, non-swelling", pairs_plain);
     return all && further && pushing ? 0 : 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "cavity_particles_check: %s\n", e.what());

@@ -96,11 +96,14 @@ int main(int argc, char** argv) {
                 pass2 ? "PASS" : "FAIL", time_after, wall_effect_time, 100 * metric_after);
     std::printf("%s 3. bottom arrival (gap %.3f cm): D=0.30 %.4f s < swelling %.4f s < D=0.25 %.4f s\n",
                 pass3 ? "PASS" : "FAIL", gap, t_30, t_sw, t_25);
+    // Case name = the folder name (the report and run-main.sh group lines by it); the grid goes
+    // into the metric text: "n_x = 100: ...".
     const std::string base_swelling = argv[3];  // .../swelling_<cells_x>
-    const std::string name = "swelling_sedimentation_" + base_swelling.substr(base_swelling.rfind('_') + 1);
-    record(name, "before onset: max|v_sw - v_0.25| / max|v_0.25|", 0.01, metric_before, pass1);
-    record(name, "after swelling, before wall effects: |v_sw - v_0.30| / |v_0.30|", 0.03, metric_after, pass2);
-    record(name, "arrival order t_0.30 < t_sw < t_0.25 (measured: t_sw [s])", NAN, t_sw, pass3);
+    const std::string grid = "n_x = " + base_swelling.substr(base_swelling.rfind('_') + 1) + ": ";
+    const std::string name = "swelling_sedimentation";
+    record(name, grid + "before onset: max|v_sw - v_0.25| / max|v_0.25|", 0.01, metric_before, pass1);
+    record(name, grid + "after swelling, before wall effects: |v_sw - v_0.30| / |v_0.30|", 0.03, metric_after, pass2);
+    record(name, grid + "arrival order t_0.30 < t_sw < t_0.25 (measured: t_sw [s])", NAN, t_sw, pass3);
     return pass1 && pass2 && pass3 ? 0 : 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "swelling_sedimentation_check: %s\n", e.what());

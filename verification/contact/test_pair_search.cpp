@@ -86,7 +86,46 @@ BOOST_AUTO_TEST_CASE(body_bounds_search_finds_exactly_the_brute_force_pairs) {
                             << "  " << cells.n_pair_checks << "  " << brute.n_pair_checks);
     BOOST_TEST(brute.pairs.size() > 0u);
     BOOST_TEST(bounds.pairs == brute.pairs, boost::test_tools::per_element());  // exact equality
+    // On the lattice most body boxes are disjoint: the broad phase must cull most sphere pairs.
+    if (std::string(name) == "lattice") BOOST_TEST(bounds.n_pair_checks < brute.n_pair_checks / 10);
   }
+}
+
+BOOST_AUTO_TEST_CASE(cell_list_with_capped_and_few_bins_finds_the_brute_force_pairs) {
+  // Tiny spheres spread over the box: floor(span / 2 r_max) = 5000 bins per axis exceeds the cap
+  // (4 sqrt(n) + 1), so bins are wider than 2 r_max; and a periodic box of span 2.5 r_max: two bins,
+  // where the i-1 and i+1 neighbours coincide.
+  std::mt19937 generator(/*seed=*/7);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  ContactSpheres tiny, crowded;
+  for (int s = 0; s < 400; ++s) {
+    tiny.centre.push_back({unit(generator), unit(generator)});
+    tiny.radius.push_back(1e-4);
+    tiny.body.push_back(s % 7);
+    tiny.point.push_back(s);
+    crowded.centre.push_back({0.25 * unit(generator), 0.25 * unit(generator)});
+    crowded.radius.push_back(0.05);
+    crowded.body.push_back(s % 7);
+    crowded.point.push_back(s);
+  }
+  // A few touching tiny pairs: copies shifted by 1e-4.
+  for (int s = 0; s < 20; ++s) {
+    tiny.centre.push_back({tiny.centre[s][0] + 1e-4, tiny.centre[s][1]});
+    tiny.radius.push_back(1e-4);
+    tiny.body.push_back((s + 1) % 7);
+    tiny.point.push_back(400 + s);
+  }
+  const WallBox walled{{0.0, 0.0}, {1.0, 1.0}, {false, false}};
+  const WallBox periodic{{0.0, 0.0}, {0.25, 0.25}, {true, true}};
+  const PairSearchResult a = find_touching_pairs_cell_list(tiny, walled);
+  const PairSearchResult b = find_touching_pairs_brute_force(tiny, walled);
+  const PairSearchResult c = find_touching_pairs_cell_list(crowded, periodic);
+  const PairSearchResult d = find_touching_pairs_brute_force(crowded, periodic);
+  BOOST_TEST_MESSAGE("tiny: " << a.pairs.size() << " pairs; periodic two bins: " << c.pairs.size() << " pairs");
+  BOOST_TEST(b.pairs.size() >= 20u);
+  BOOST_TEST(a.pairs == b.pairs, boost::test_tools::per_element());
+  BOOST_TEST(d.pairs.size() > 100u);
+  BOOST_TEST(c.pairs == d.pairs, boost::test_tools::per_element());
 }
 
 BOOST_AUTO_TEST_CASE(single_body_scene_does_no_pair_search) {

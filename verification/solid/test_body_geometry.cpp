@@ -4,7 +4,8 @@
 //     ellipse with semi-axes a, b (N divisible by 4, so both axes carry points), at any rotation;
 //   - separation: two wheels D = 0.2 whose centres are 0.25 apart along x, rim point 0 of each on
 //     the joining line, are 0.05 apart; no point is inside the other; the wall distance is the
-//     smallest of the rim extents to the box; rim points inside the other body are counted.
+//     smallest of the rim extents to the box; rim points inside the other body and crossing rim
+//     edges are counted; periodic directions use the minimum image (bodies across the seam).
 #define BOOST_TEST_MODULE body_geometry
 #include <boost/test/unit_test.hpp>
 
@@ -63,7 +64,27 @@ BOOST_AUTO_TEST_CASE(separation_between_bodies_and_from_walls) {
   const BodySeparation pushed = body_separation(bodies, {0.0, 0.0}, {1.0, 1.0}, {false, false});
   BOOST_TEST(pushed.n_points_inside_others == 2);
   BOOST_TEST(pushed.min_rim_distance < 0.05);
+  BOOST_TEST(s.n_edge_crossings == 0);
+  BOOST_TEST(pushed.n_edge_crossings > 0);  // A's spike crosses B's rim
   // A point outside the box has a negative wall distance.
   bodies[1].position[0] = {1.01, 0.5};
   BOOST_TEST(body_separation(bodies, {0.0, 0.0}, {1.0, 1.0}, {false, false}).min_wall_distance < 0.0);
+}
+
+BOOST_AUTO_TEST_CASE(separation_uses_the_minimum_image_in_periodic_directions) {
+  // Wheels at x = 0.05 and 0.90 (D = 0.1) in a box periodic in x: 0.05 apart across the seam
+  // (rims at x = 0.0 and 0.95 -> 0.05 through x = 1 = 0), 0.75 apart without the image.
+  std::vector<MassSpringBody> bodies{wheel({0.05, 0.5}, 0.1, 20), wheel({0.90, 0.5}, 0.1, 20)};
+  const BodySeparation periodic = body_separation(bodies, {0.0, 0.0}, {1.0, 1.0}, {true, false});
+  const BodySeparation walled = body_separation(bodies, {-1.0, 0.0}, {2.0, 1.0}, {false, false});
+  BOOST_TEST(periodic.min_rim_distance == 0.05, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(walled.min_rim_distance == 0.75, boost::test_tools::tolerance(1e-12));
+  // Overlap across the seam: move the second wheel to x = 0.97 (0.08 from the first's centre
+  // through the seam, rims overlapping by 0.02): points inside and edges crossing are found.
+  for (auto& x : bodies[1].position) x[0] += 0.07;
+  const BodySeparation overlap = body_separation(bodies, {0.0, 0.0}, {1.0, 1.0}, {true, false});
+  BOOST_TEST(overlap.n_points_inside_others > 0);
+  BOOST_TEST(overlap.n_edge_crossings > 0);
+  // Fully periodic: no walls.
+  BOOST_TEST(std::isinf(body_separation(bodies, {0.0, 0.0}, {1.0, 1.0}, {true, true}).min_wall_distance));
 }
