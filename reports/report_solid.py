@@ -9,12 +9,14 @@ plot. The tests append; a rerun's rows replace the earlier ones (see each reader
 import csv
 import math
 import os
+import textwrap
 from collections import OrderedDict
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+import matplotlib.ticker  # noqa: E402
 
 from report_latex import esc, num, figure, longtable  # noqa: E402
 
@@ -120,6 +122,8 @@ def energy_subsection(out, results, fig_dir):
             ax.axhline(b, color=colour, ls=":", lw=0.9)
     ax.set_xlabel("time / T (periods)")
     ax.set_ylabel(r"max $|E - E_0|/E_0$ over each period")
+    ax.yaxis.set_minor_formatter(matplotlib.ticker.FuncFormatter(_minor_label))
+    ax.tick_params(axis="y", which="minor", labelsize=6)
     ax.grid(alpha=0.3, which="both")
     ax.legend(loc="center right", fontsize=7)
     path = os.path.join(fig_dir, "wheel_energy.pdf")
@@ -172,7 +176,7 @@ def restitution_subsection(out, results, fig_dir):
             pts = sorted((_float(r["e_target"]), _float(r["e_measured"])) for (c, _), r in last.items() if c == case)
             et, em = [p[0] for p in pts], [p[1] for p in pts]
             m = markers[k % len(markers)]
-            axes[0].plot(et, em, m, ms=5, mfc="none", label=_short(case))
+            axes[0].plot(et, em, m, ms=5, mfc="none", label=_wrap(case, 34))
             axes[1].plot([x + 0.012 * (k - (len(cases) - 1) / 2) for x in et],
                          [100 * (b - a) / a for a, b in zip(et, em)], m, ms=5, mfc="none")
         axes[0].set_xlim(lo, hi)
@@ -214,7 +218,7 @@ def contact_history_subsection(out, results, fig_dir):
     series = _series(rows, lambda r: (r["case"], r["e_target"]), "t_over_contact_time")
     cases = sorted({c for c, _ in series})
     ncol = min(len(cases), 4)
-    fig, axes = plt.subplots(2, ncol, figsize=(1.8 * ncol + 0.8, 4.4), squeeze=False, sharex=True)
+    fig, axes = plt.subplots(2, ncol, figsize=(1.7 * ncol + 0.6, 4.6), squeeze=False, sharex=True)
     for j, case in enumerate(cases[:ncol]):
         keys = sorted((k for k in series if k[0] == case), key=lambda k: _float(k[1]))
         for k, key in enumerate(keys):
@@ -226,7 +230,7 @@ def contact_history_subsection(out, results, fig_dir):
                             color=colour, label="e = %.3g" % e)
             axes[0][j].axhline(e, color=colour, ls=":", lw=0.8)
             axes[1][j].plot(t, [100 * _float(r["overlap_over_diameter"]) for r in rs], lw=1, color=colour)
-        axes[0][j].set_title(_short(case, 30), fontsize=7)
+        axes[0][j].set_title(_wrap(case, 26), fontsize=7)
         axes[1][j].set_xlabel("time / contact duration")
         for ax in (axes[0][j], axes[1][j]):
             ax.axvline(1.0, color="0.5", lw=0.6, ls="--")
@@ -246,8 +250,19 @@ def contact_history_subsection(out, results, fig_dir):
                             "to $e$ after (dotted: the target $e$); bottom, the overlap (largest "
                             "one for the wheels). Time from the first contact over the contact "
                             "duration (dashed: its end); the wheel runs continue for as long again "
-                            "to show that no second contact follows." % extra, height=0.5))
+                            "to show that no second contact follows. Near the end of a contact the "
+                            "dashpot term outweighs the spring and the linear force, not clipped to "
+                            "stay repulsive (as the tests' headers note, METHOD.md A8), pulls, so the velocity overshoots $e$ before it settles." % extra,
+                      height=0.5))
 
 
-def _short(text, width=40):
-    return text if len(text) <= width else text[:width - 3] + "..."
+def _minor_label(value, _pos):
+    """Minor log-axis labels at 2 and 5 times a power of ten only (readable)."""
+    if value <= 0:
+        return ""
+    mantissa = value / 10 ** math.floor(math.log10(value) + 1e-9)
+    return "%.2g" % value if min(abs(mantissa - 2), abs(mantissa - 5)) < 1e-6 else ""
+
+
+def _wrap(text, width):
+    return "\n".join(textwrap.wrap(text, width)) or text
