@@ -21,13 +21,17 @@ import matplotlib.ticker  # noqa: E402
 from report_latex import esc, num, figure, longtable  # noqa: E402
 
 
-def _rows(path):
-    """Data rows of a CSV with one header line, as dicts (None if the file is absent)."""
+def _rows(path, required):
+    """Data rows of a CSV with one header line, as dicts; None if the file is absent or its header
+    lacks one of the required columns (another version's file)."""
     if not os.path.isfile(path):
         return None
     with open(path, newline="", encoding="utf-8", errors="replace") as f:
         lines = [line for line in f if line.strip() and not line.startswith("#")]
-    return list(csv.DictReader(lines))
+    reader = csv.DictReader(lines)
+    if not set(required) <= set(reader.fieldnames or []):
+        return None
+    return list(reader)
 
 
 def _float(text):
@@ -43,6 +47,8 @@ def _series(rows, key, x):
     out = OrderedDict()
     for r in rows:
         k, v = key(r), _float(r.get(x))
+        if not math.isfinite(v):
+            continue
         s = out.get(k)
         if s is None or not s or not v > _float(s[-1].get(x)):
             out.pop(k, None)
@@ -52,8 +58,9 @@ def _series(rows, key, x):
 
 
 def _not_run(out, files, writer):
-    out.append(r"\emph{Not run: %s not found in \texttt{verification\_results/} (written by %s "
-               r"under ctest, which sets \texttt{IBMS\_RESULTS\_DIR}).}" %
+    out.append(r"{\sloppy\emph{Not run: %s not found in \texttt{verification\_results/} (or "
+               r"without the expected columns; written by %s under ctest, which sets "
+               r"\texttt{IBMS\_RESULTS\_DIR}).}\par}" %
                (", ".join(r"\texttt{%s}" % esc(f) for f in files), writer) + "\n")
 
 
@@ -77,8 +84,11 @@ def _energy_table(rows):
 
 def energy_subsection(out, results, fig_dir):
     out.append(r"\subsection{Undamped wheel: energy error over 1000 periods}")
-    table_rows = _rows(os.path.join(results, "wheel_energy.csv"))
-    hist_rows = _rows(os.path.join(results, "wheel_energy_history.csv"))
+    table_rows = _rows(os.path.join(results, "wheel_energy.csv"),
+                       ["dt", "steps_per_period", "omega_max_dt", "max_rel_error", "first_100T_max",
+                        "last_100T_max", "bound", "order"])
+    hist_rows = _rows(os.path.join(results, "wheel_energy_history.csv"),
+                      ["dt", "periods", "max_rel_error_over_period"])
     if not table_rows and not hist_rows:
         _not_run(out, ["wheel_energy.csv", "wheel_energy_history.csv"], r"\texttt{test\_wheel\_energy}")
         return
@@ -139,8 +149,10 @@ def energy_subsection(out, results, fig_dir):
 
 def restitution_subsection(out, results, fig_dir):
     out.append(r"\subsection{Restitution: measured against target}")
-    rows = _rows(os.path.join(results, "restitution.csv"))
-    elastic = _rows(os.path.join(results, "restitution_elastic.csv"))
+    rows = _rows(os.path.join(results, "restitution.csv"),
+                 ["case", "e_target", "e_measured", "rel_error", "tolerance", "steps_per_contact"])
+    elastic = _rows(os.path.join(results, "restitution_elastic.csv"),
+                    ["case", "ke_before", "ke_after", "rel_change", "tolerance"])
     if not rows:
         _not_run(out, ["restitution.csv"], r"\texttt{test\_restitution} and \texttt{test\_wheel\_restitution}")
     else:
@@ -163,7 +175,8 @@ def restitution_subsection(out, results, fig_dir):
                                      "the relative error within the tolerance."))
         fig, axes = plt.subplots(1, 2, figsize=(7.0, 3.0))
         markers = "osD^vx+*"
-        tol = max((_float(r["tolerance"]) for r in last.values()), default=math.nan)
+        tol = max((t for t in (_float(r["tolerance"]) for r in last.values()) if math.isfinite(t)),
+                  default=math.nan)
         lo, hi = 0.0, 1.0
         xs = [v / 100.0 for v in range(0, 101)]
         if not math.isnan(tol):
@@ -177,8 +190,9 @@ def restitution_subsection(out, results, fig_dir):
             et, em = [p[0] for p in pts], [p[1] for p in pts]
             m = markers[k % len(markers)]
             axes[0].plot(et, em, m, ms=5, mfc="none", label=_wrap(case, 34))
-            axes[1].plot([x + 0.012 * (k - (len(cases) - 1) / 2) for x in et],
-                         [100 * (b - a) / a for a, b in zip(et, em)], m, ms=5, mfc="none")
+            signed = [(a, 100 * (b - a) / a) for a, b in zip(et, em) if a != 0 and math.isfinite(a)]
+            axes[1].plot([a + 0.012 * (k - (len(cases) - 1) / 2) for a, _ in signed],
+                         [d for _, d in signed], m, ms=5, mfc="none")
         axes[0].set_xlim(lo, hi)
         axes[0].set_ylim(lo, hi)
         axes[0].set_aspect("equal")
@@ -211,7 +225,9 @@ def restitution_subsection(out, results, fig_dir):
 
 def contact_history_subsection(out, results, fig_dir):
     out.append(r"\subsection{Through the contact: normal relative velocity and overlap}")
-    rows = _rows(os.path.join(results, "contact_history.csv"))
+    rows = _rows(os.path.join(results, "contact_history.csv"),
+                 ["case", "e_target", "t_over_contact_time", "normal_velocity_over_approach",
+                  "overlap_over_diameter"])
     if not rows:
         _not_run(out, ["contact_history.csv"], r"\texttt{test\_restitution} and \texttt{test\_wheel\_restitution}")
         return
