@@ -4,8 +4,8 @@
 usage: /usr/bin/python3 reports/build_report.py --build DIR --output FILE.pdf [--source REPO]
 
 It reads only: DIR/validation/results.csv, DIR/validation/<case>/ outputs (HDF5, centre-line and
-body CSVs), the repo's validation/<case>/reference/ data, DIR/verification_results/convergence.csv
-and ctest's DIR/Testing/Temporary/LastTest*.log (reports/README.md lists what each section reads).
+body CSVs), the repo's validation/<case>/reference/ data, the CSV tables under
+DIR/verification_results/ (convergence, kernel moments, wheel energy, restitution) and ctest's DIR/Testing/Temporary/LastTest*.log (reports/README.md lists what each section reads).
 It recomputes no physics. Figures are vector PDF (matplotlib); the document is LaTeX compiled with
 `latexmk -pdf` in a temporary directory under DIR, removed on success and kept on failure.
 """
@@ -23,6 +23,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import report_data as data  # noqa: E402
 import report_figures as figs  # noqa: E402
 import report_bench as bench  # noqa: E402
+import report_solid as solid  # noqa: E402
 from report_latex import esc, num, status_cell, figure, longtable  # noqa: E402
 
 PREAMBLE = r"""\documentclass[10pt,a4paper]{article}
@@ -256,6 +257,7 @@ def main():
         summary_section(out, results, tests)
         verification_section(out, conv, fig_dir)
         bench.kernel_moment_section(out, build)
+        solid.solid_section(out, build, fig_dir)
         for case in case_dirs(build, source, results):
             case_section(out, case, build, source, results, fig_dir)
         bench.work_precision_section(out, build, fig_dir)

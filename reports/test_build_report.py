@@ -2,7 +2,8 @@
 """ctest `report_builds_from_synthetic_outputs`: builds the report from a tiny synthetic build
 directory (results.csv with a rerun duplicate and LaTeX special characters, one centre-line
 profile pair, one convergence table, a ctest log, a kernel-moment table, a work-precision table,
-a stability map and a stage-cost table) and checks that a PDF comes out.
+a stability map, a stage-cost table, and the solid tests' energy, restitution and contact-history
+tables) and checks that a PDF comes out.
 usage: test_build_report.py WORK_DIR     exit 0 pass, 1 fail, 77 skipped (no LaTeX / modules)"""
 import os
 import shutil
@@ -67,6 +68,38 @@ with open(os.path.join(work, "bench", "overhead.csv"), "w") as f:
             "fluid_only_cavity_128,bare_fluid_solver_step,,0.00136\nfluid_only_cavity_128,ratio,,1.03\n"
             "fluid_only_cavity_128,predictor,0.0009,110\nfluid_only_cavity_128,pair_checks_total,,0\n")
 
+# Inputs of the solid section (reports/report_solid.py): the wheel energy table and history (a
+# rerun's rows appended: the second table wins), restitution, e = 1 energies, contact histories.
+res = os.path.join(work, "verification_results")
+with open(os.path.join(res, "wheel_energy.csv"), "w") as f:
+    f.write("dt,steps_per_period,omega_max_dt,max_rel_error,first_100T_max,last_100T_max,bound,order\n")
+    for rerun in (0, 1):
+        for k in range(3):
+            dt = 1e-3 / 2 ** k
+            f.write("%g,%g,%g,%g,%g,%g,%g,%s\n" % (dt, 200 * 2 ** k, 0.1 / 2 ** k, 0.02 / 2 ** k,
+                                                  0.019 / 2 ** k, 0.0195 / 2 ** k, 0.105 / 2 ** k,
+                                                  "" if k == 0 else ("9.99", "1")[rerun]))
+with open(os.path.join(res, "wheel_energy_history.csv"), "w") as f:
+    f.write("dt,periods,max_rel_error_over_period\n")
+    for rerun in (0, 1):
+        for k in range(3):
+            for p in range(1, 51):
+                f.write("%g,%d,%g\n" % (1e-3 / 2 ** k, p, (0.015 + 0.005 * (p % 7) / 7) / 2 ** k))
+with open(os.path.join(res, "restitution.csv"), "w") as f:
+    f.write("case,e_target,e_measured,rel_error,tolerance,steps_per_contact\n")
+    for case in ("two points, linear spring-dashpot", "wheel-wall"):
+        for e in (0.1, 0.5, 0.9):
+            f.write('"%s",%g,%g,%g,0.01,%d\n' % (case, e, e * 1.003, 0.003, 2000))
+with open(os.path.join(res, "restitution_elastic.csv"), "w") as f:
+    f.write('case,ke_before,ke_after,rel_change,tolerance\n"wheel-wall",0.3927,0.39268,5e-5,0.001\n')
+with open(os.path.join(res, "contact_history.csv"), "w") as f:
+    f.write("case,e_target,t_over_contact_time,normal_velocity_over_approach,overlap_over_diameter\n")
+    for case in ("two points, linear spring-dashpot", "wheel-wall"):
+        for e in (0.1, 0.5, 0.9):
+            for k in range(21):
+                s = k / 20
+                f.write('"%s",%g,%g,%g,%g\n' % (case, e, s, -1 + (1 + e) * s, 0.006 * s * (1 - s)))
+
 pdf = os.path.join(work, "report.pdf")
 proc = subprocess.run([sys.executable, os.path.join(here, "build_report.py"), "--build", work,
                        "--output", pdf], capture_output=True, text=True, timeout=240)
@@ -82,10 +115,14 @@ if head != b"%PDF-" or size < 10000:
     sys.exit(1)
 if shutil.which("pdftotext"):  # the issue-5 sections are filled: slope of n^-2 error against n^3 time is -2/3
     text = subprocess.run(["pdftotext", pdf, "-"], capture_output=True, text=True).stdout
-    for expected in ("-0.667", "Stability map summary", "Kernel moments", "ratio 1.03"):
+    for expected in ("-0.667", "Stability map summary", "Kernel moments", "ratio 1.03",
+                     "energy error over 1000 periods", "measured against target", "0.5015"):
         if expected not in text:
             print("FAIL: '%s' not in the report text" % expected)
             sys.exit(1)
+    if "9.99" in text:  # the first run's energy table, replaced by the rerun's
+        print("FAIL: a stale (rerun-replaced) energy table row is in the report")
+        sys.exit(1)
 leftovers = [d for d in os.listdir(work) if d.startswith("report-")]
 if leftovers:
     print("FAIL: temporary directories left behind: %s" % leftovers)

@@ -2,6 +2,7 @@
 // no fluid, driven only by their springs and the DEM contacts, advanced with the production
 // sub-step min(stable_substep, contact_substep). Restitution is measured on the centre-of-mass
 // velocities along x: e = -(V_b - V_a)_after / (V_b - V_a)_before (a wall has V_b = 0).
+// collide() also keeps the history from the first contact on (for the report's contact plot).
 #pragma once
 #include <algorithm>
 #include <array>
@@ -61,7 +62,16 @@ struct CollisionRecord {
   double contact_time = 0.0;      // [time]
   double substep = 0.0;           // [time]
   double max_momentum_drift = 0.0;  // max |P(t) - P(0)| during the run, P = total momentum
+  // Every sub-step from the first contact on: time since first contact [time], relative
+  // centre-of-mass velocity along x over the approach speed (-1 before, e after) [-], largest
+  // overlap [length].
+  std::vector<std::array<double, 3>> history;
 };
+
+// Relative centre-of-mass velocity along x: second body minus first, or minus the first's (wall).
+inline double relative_velocity_x(const std::vector<std::array<double, 2>>& v) {
+  return v.size() > 1 ? v[1][0] - v[0][0] : -v[0][0];
+}
 
 // Runs until the bodies have been apart for as long as they touched (so a re-contact would show).
 inline CollisionRecord collide(const ContactModel& model, const WallBox& box,
@@ -84,6 +94,8 @@ inline CollisionRecord collide(const ContactModel& model, const WallBox& box,
     return zero;
   }();
   double time_apart = 0.0;
+  const double relative_before = relative_velocity_x(record.velocity_before);
+  long first_contact = -1;
   for (long step = 0; step < 100000000; ++step) {
     const ContactStats stats = advance_bodies_substep(model, box, record.substep, no_external, bodies);
     const int n_active = stats.n_active_pairs + stats.n_wall_contacts;
@@ -92,6 +104,13 @@ inline CollisionRecord collide(const ContactModel& model, const WallBox& box,
     const std::array<double, 2> momentum = total_momentum();
     record.max_momentum_drift = std::max(record.max_momentum_drift,
         std::hypot(momentum[0] - momentum0[0], momentum[1] - momentum0[1]));
+    if (n_active > 0 && first_contact < 0) first_contact = step;
+    if (first_contact >= 0) {
+      std::vector<std::array<double, 2>> velocity;
+      for (const auto& body : bodies) velocity.push_back(centre_of_mass_velocity(body));
+      record.history.push_back({(step - first_contact + 1) * record.substep,
+                                -relative_velocity_x(velocity) / relative_before, stats.max_overlap});
+    }
     if (n_active > 0) {
       record.contact_time += record.substep;
       time_apart = 0.0;
@@ -106,10 +125,7 @@ inline CollisionRecord collide(const ContactModel& model, const WallBox& box,
 
 // e along x from the first body's centre-of-mass velocity and the second's (or a wall at rest).
 inline double measured_restitution(const CollisionRecord& record) {
-  const auto relative = [](const std::vector<std::array<double, 2>>& v) {
-    return v.size() > 1 ? v[1][0] - v[0][0] : -v[0][0];
-  };
-  return -relative(record.velocity_after) / relative(record.velocity_before);
+  return -relative_velocity_x(record.velocity_after) / relative_velocity_x(record.velocity_before);
 }
 
 }  // namespace ibms::test
