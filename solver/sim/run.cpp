@@ -212,6 +212,9 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& options) {
   VelocityScan scan = scan_velocity(sim.grid(), f);
   summary.stop_reason = "end_time";
   const double time_tolerance = 1e-12 * std::max(1.0, std::abs(run.end_time));
+  // The final step's series row is written even when output.series_every does not divide its step.
+  long series_step = -1;
+  double last_dt = 0.0, last_cfl = 0.0, last_residual = 0.0;
   try {
     if (!(next_time_step(sim, scan) > 0.0) && f.time < run.end_time)
       throw InputError(scene.source_file + ": run.max_time_step: the adaptive time step has no velocity scale "
@@ -237,9 +240,13 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& options) {
       }
       const ProjectionStats& ps = sim.last_projection;
       const double steady_residual = ps.max_velocity > 0 ? ps.max_velocity_change / (dt * ps.max_velocity) : 0.0;
+      last_dt = dt;
+      last_cfl = dt * scan.max_rate;
+      last_residual = steady_residual;
       if (f.step % scene.output.series_every == 0) {
         auto t = sim.timers().time(Stage::output);
-        write_series(out, sim, dt, dt * scan.max_rate, steady_residual, body_table);
+        write_series(out, sim, dt, last_cfl, steady_residual, body_table);
+        series_step = f.step;
       }
       if (scene.output.checkpoint_every > 0 && f.step % scene.output.checkpoint_every == 0) {
         auto t = sim.timers().time(Stage::output);
@@ -267,6 +274,7 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& options) {
   }
   {
     auto t = sim.timers().time(Stage::output);
+    if (last_dt > 0.0 && series_step != f.step) write_series(out, sim, last_dt, last_cfl, last_residual, body_table);
     // The checkpoint first: write_snapshot refills the velocity ghost layers.
     write_simulation_checkpoint(out, sim, next_snapshot);
     write_snapshot(out, sim);
