@@ -15,6 +15,7 @@
 #include "core/errors.hpp"
 #include "scene/scene_reader.hpp"
 #include "sim/run.hpp"
+#include "sim/simulation_checkpoint.hpp"
 #include "sim/simulation.hpp"
 
 namespace {
@@ -42,6 +43,14 @@ int run_command(const std::string& scene_path, const std::vector<std::string>& o
   install_stop_handlers();  // first: a signal while the scene is read stops the run at step 0
   ibms::Scene scene = ibms::read_scene_file(scene_path, overrides);
   if (!output.empty()) scene.output.file = output;
+  // The original run's FFTW plans before this run makes its own (bit-identical continuation);
+  // a checkpoint that cannot be read is reported by run_simulation, which reads it again.
+  if (!restart.empty()) {
+    try {
+      ibms::import_checkpoint_planner_wisdom(ibms::read_checkpoint(restart));
+    } catch (const ibms::InputError&) {
+    }
+  }
   ibms::Simulation sim(scene);
   const ibms::RunSummary summary = ibms::run_simulation(sim, {scene.output.file, quiet, restart, &stop_signal});
   if (summary.interrupted) {

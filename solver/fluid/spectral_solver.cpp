@@ -94,4 +94,16 @@ SpectralSolveStats SpectralSolver::solve(double a, double b, const double* rhs, 
   return stats;
 }
 
+std::string fft_planner_wisdom() {
+  char* text = fftw_export_wisdom_to_string();
+  if (text == nullptr) return {};
+  std::string wisdom(text);
+  fftw_free(text);
+  return wisdom;
+}
+
+bool import_fft_planner_wisdom(const std::string& wisdom) {
+  return !wisdom.empty() && fftw_import_wisdom_from_string(wisdom.c_str()) != 0;
+}
+
 }  // namespace ibms

@@ -9,6 +9,8 @@
 
 #include "core/grid.hpp"
 
+#include <string>
+
 namespace ibms {
 
 enum class SpectralBoundary { periodic, neumann, dirichlet };
@@ -41,5 +43,12 @@ class SpectralSolver {
   double* buffer_ = nullptr;  // fftw_malloc'ed, nx*ny
   fftw_plan forward_ = nullptr, inverse_ = nullptr;
 };
+
+// FFTW planner state ("wisdom"). Plans are measured (FFTW_MEASURE), so two processes may pick
+// different algorithms for the same transform, which differ at round-off; a restart imports the
+// original run's wisdom before its plans are made so that it continues bit-identically.
+std::string fft_planner_wisdom();
+// false if FFTW rejects the text (then planning simply measures afresh).
+bool import_fft_planner_wisdom(const std::string& wisdom);
 
 }  // namespace ibms

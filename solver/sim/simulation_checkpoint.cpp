@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/errors.hpp"
+#include "fluid/spectral_solver.hpp"
 
 namespace ibms {
 namespace {
@@ -142,7 +143,22 @@ void write_simulation_checkpoint(OutputFile& out, const Simulation& sim, double 
     arrays[prefix + "diameter"] = {body.diameter};
     arrays[prefix + "triangle_momentum"] = interleaved(sim.coupling()[b].triangle_momentum);
   }
+  // The FFTW planner state, one character code per value (optional on reading).
+  const std::string wisdom = fft_planner_wisdom();
+  arrays["fftw_wisdom"] = std::vector<double>(wisdom.begin(), wisdom.end());
   out.write_checkpoint(arrays, scalars, checkpoint_format_version);
+}
+
+void import_checkpoint_planner_wisdom(const Checkpoint& checkpoint) {
+  const auto found = checkpoint.arrays.find("fftw_wisdom");
+  if (found == checkpoint.arrays.end()) return;
+  std::string wisdom;
+  wisdom.reserve(found->second.size());
+  for (double c : found->second) {
+    if (!(c >= 1.0 && c <= 127.0)) return;  // not text: ignore, plans are measured afresh
+    wisdom.push_back(static_cast<char>(c));
+  }
+  import_fft_planner_wisdom(wisdom);
 }
 
 double restore_simulation(const Checkpoint& checkpoint, const std::string& path, Simulation& sim) {

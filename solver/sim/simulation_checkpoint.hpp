@@ -6,7 +6,9 @@
 //   arrays:  fluid_* u, v, p (kinematic), the AB2 history N^{n-1} (x, y), with ghost layers;
 //            face velocities U_f, V_f;
 //            body_NNN_* position, velocity (x, y interleaved), mass, diameter (the swelling phase:
-//            natural lengths are L0_ij D/D0), triangle_momentum (variant K's I_T of the last step)
+//            natural lengths are L0_ij D/D0), triangle_momentum (variant K's I_T of the last step);
+//            fftw_wisdom (optional: FFTW's planner state as character codes; imported before the
+//            restarted run makes its plans, so that it uses the same transforms)
 // Everything else is recomputed each step from these (markers, weights, forcing targets,
 // sub-step counts, the adaptive dt, the DEM contacts, which keep no history) or is a constant
 // of the scene. The reader checks the format version, the scene and every size.
@@ -29,6 +31,9 @@ void write_simulation_checkpoint(OutputFile& out, const Simulation& sim, double 
 // next_snapshot_time. Throws InputError "<path>: <what>: <reason>" on a different format version,
 // a scene that differs outside [run] and [output], or any size that does not fit.
 double restore_simulation(const Checkpoint& checkpoint, const std::string& path, Simulation& sim);
+
+// Imports the checkpoint's FFTW wisdom (if any); call before building the Simulation to restart.
+void import_checkpoint_planner_wisdom(const Checkpoint& checkpoint);
 
 // The resolved scene text without its [run] and [output] sections: what a restart must keep.
 std::string restart_relevant_scene(const std::string& resolved_scene);

@@ -4,6 +4,8 @@
 Usage: compare_checkpoints.py A.h5 B.h5
 Exit 0 when every dataset and attribute of A's /checkpoint equals B's bit for bit (the same names
 on both sides); prints the number of values compared and the first differences otherwise.
+`fftw_wisdom` is FFTW's planner state, not simulation state (a restarted process imports the
+original's and may add to it): it is not compared.
 """
 import sys
 
@@ -14,7 +16,8 @@ import numpy as np
 def checkpoint(path):
     with h5py.File(path, "r") as f:
         group = f["checkpoint"]
-        arrays = {name: np.asarray(group[name][()], dtype=np.float64) for name in group}
+        arrays = {name: np.asarray(group[name][()], dtype=np.float64) for name in group
+                  if name != "fftw_wisdom"}
         attributes = {name: np.asarray(group.attrs[name]) for name in group.attrs}
     return arrays, attributes
 

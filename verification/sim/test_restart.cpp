@@ -20,6 +20,7 @@
 #include "io/output_file.hpp"
 #include "scene/scene_reader.hpp"
 #include "sim/run.hpp"
+#include "fluid/spectral_solver.hpp"
 #include "sim/simulation_checkpoint.hpp"
 
 namespace {
@@ -109,7 +110,8 @@ BOOST_AUTO_TEST_CASE(restarted_run_ends_bit_identical_with_bodies_swelling_and_c
   BOOST_TEST(series_max(dir.file("rest.h5"), "contact/n_active_pairs") > 0.0);
   BOOST_TEST(series_max(dir.file("rest.h5"), "body_001/diameter") > 0.2 + 0.05 * 0.6);
 
-  BOOST_TEST(ibms::read_checkpoint(dir.file("whole.h5")).arrays.size() == 7u + 2u * 5u);
+  // 7 fluid arrays, the FFTW wisdom, 5 arrays per body.
+  BOOST_TEST(ibms::read_checkpoint(dir.file("whole.h5")).arrays.size() == 7u + 1u + 2u * 5u);
   BOOST_TEST(n_different_values(dir.file("whole.h5"), dir.file("rest.h5")) == 0u);
 }
 
@@ -129,6 +131,21 @@ BOOST_AUTO_TEST_CASE(restarted_run_with_adaptive_time_step_ends_bit_identical) {
                                  << " to " << *std::max_element(dt.begin(), dt.end()));
   BOOST_TEST(*std::max_element(dt.begin(), dt.end()) > 1.5 * *std::min_element(dt.begin(), dt.end()));
   BOOST_TEST(n_different_values(dir.file("whole.h5"), dir.file("rest.h5")) == 0u);
+}
+
+BOOST_AUTO_TEST_CASE(checkpoint_carries_the_fftw_planner_wisdom) {
+  // Plans are measured, so another process may choose other transforms (round-off differences);
+  // the checkpoint stores this process's planner state for `ibms run --restart` to import first.
+  const TempDir dir;
+  run(scene_for(dir.file("first.h5"), {"run.max_steps=3"}));
+  const ibms::Checkpoint checkpoint = ibms::read_checkpoint(dir.file("first.h5"));
+  BOOST_REQUIRE(checkpoint.arrays.count("fftw_wisdom") == 1u);
+  const std::vector<double>& codes = checkpoint.arrays.at("fftw_wisdom");
+  const std::string stored(codes.begin(), codes.end());
+  BOOST_TEST(!stored.empty());
+  BOOST_TEST(stored == ibms::fft_planner_wisdom());
+  BOOST_TEST(ibms::import_fft_planner_wisdom(stored));
+  ibms::import_checkpoint_planner_wisdom(checkpoint);  // accepted without throwing
 }
 
 BOOST_AUTO_TEST_CASE(checkpoint_of_another_format_version_is_refused) {
