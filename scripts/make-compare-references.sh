@@ -8,9 +8,10 @@
 # usage: scripts/make-compare-references.sh IBMS_BINARY WORK_DIR
 # Runs that already have their output in WORK_DIR (<case>_<N>.h5 and its CSVs) are not rerun.
 # CAVITY_CASES="..." restricts the cavity cases; SKIP_SETTLING=1 skips the settling disk;
-# ONLY_BODIES=1 makes only the two body cases' references (their runs: WORK_DIR/<case>_<variant>.h5;
-# links to the ctest outputs, e.g. build/validation/cavity_deformable_objects/k10_bodies.csv as
-# WORK_DIR/cavity_deformable_objects_k10_bodies.csv, are reused).
+# ONLY_BODIES=1 makes only the two body cases' references. Their runs are WORK_DIR/<case>_<variant>.h5
+# (variant nonswelling|swelling|k10|k100); links to the ctest outputs are reused, e.g.
+# build/validation/cavity_deformable_objects/k10{.h5,_bodies.csv} linked as
+# WORK_DIR/cavity_deformable_objects_k10{.h5,_bodies.csv}.
 set -euo pipefail
 ibms=$1; work=$2
 src=$(cd "$(dirname "$0")/.." && pwd)
@@ -62,18 +63,19 @@ run_body_case() {  # case, variant -> sets base; runs the scene unless WORK_DIR 
     echo "running $1 $2"
     "$ibms" run "$src/validation/$1/scene_$2.toml" -o "$base.h5" --quiet
   fi
-  made_by=$(sed -n 's/^# *ibms commit \([0-9a-f]*\).*/\1/p; s/.*git_commit[ =:]*\([0-9a-f]\{7,\}\).*/\1/p' "${base}_bodies.csv" | head -1)
-  [[ -n $made_by ]] || made_by=$(/usr/bin/python3 -c "import h5py; f = h5py.File('$base.h5', 'r'); print(f.attrs['git_commit'])")
+  # The root attribute git_commit (docs/output.md), without h5py: the first string of exactly 12 hex digits in the file.
+  made_by=$(/usr/bin/python3 -c "import h5py; f = h5py.File('$base.h5', 'r'); print(f.attrs['git_commit'])" 2>/dev/null ||
+            strings -n 12 "$base.h5" | grep -m1 -xE '[0-9a-f]{12}|unknown' || echo unknown)
 }
-# Trajectories as cavity_swelling_particles/check.cpp writes them (10 <= t <= 20), every
+# Trajectories as cavity_swelling_particles/check.cpp writes them (10 <= t <= 20, 10 digits), every
 # ${TRAJECTORY_STRIDE:-1}-th output time (to keep the files small).
-stride=${TRAJECTORY_STRIDE:-1}
+stride=${TRAJECTORY_STRIDE:-2}   # 2: ~200 kB per file instead of ~400 kB
 for variant in nonswelling swelling; do
   run_body_case cavity_swelling_particles $variant
   { echo "# ibms reference for 'ibms compare cavity_swelling_particles' (docs/compare.md): particle centroids"
     echo "# (rim-polygon area centroid) and diameters of ibms's own $variant run of"
     echo "# validation/cavity_swelling_particles/scene_$variant.toml (100 x 100, DEM stiffness 1e4, as ctest runs it),"
-    echo "# 10 <= t <= 20, every ${stride}-th output time. ibms commit $made_by; written by"
+    echo "# 10 <= t <= 20, one output time in ${stride}. ibms commit $made_by; written by"
     echo "# scripts/make-compare-references.sh at commit $commit."
     echo "time [-],particle [-],x [-],y [-],diameter [-]"
     awk -F, -v stride="$stride" 'BEGIN { OFS = "," } /^#/ { next }
@@ -81,7 +83,7 @@ for variant in nonswelling swelling; do
                                                if ($k ~ /^body_[0-9]+\/centroid_y/) { split($k, a, /[_\/]/); cy[a[2] + 0] = k }
                                                if ($k ~ /^body_[0-9]+\/diameter/) { split($k, a, /[_\/]/); cd[a[2] + 0] = k } }
            nb = length(cx); next }
-      $1 + 0 >= 10 && $1 + 0 <= 20 { if (m++ % stride) next; for (b = 0; b < nb; ++b) print $1, b, $cx[b], $cy[b], $cd[b] }' \
+      $1 + 0 >= 10 && $1 + 0 <= 20 { if (m++ % stride) next; for (b = 0; b < nb; ++b) printf "%.10g,%d,%.10g,%.10g,%.10g\n", $1, b, $cx[b], $cy[b], $cd[b] }' \
       "${base}_bodies.csv"; } > "$src/validation/cavity_swelling_particles/reference/ibms_trajectories_$variant.csv"
 done
 # Deformation parameter and area / A0 (A0: the body's first output) of every body, t <= 20.
@@ -96,7 +98,7 @@ for k in 10 100; do
       !h { h = 1; for (k = 1; k <= NF; ++k) { if ($k ~ /^body_[0-9]+\/deformation/) { split($k, a, /[_\/]/); cd[a[2] + 0] = k }
                                                if ($k ~ /^body_[0-9]+\/area/) { split($k, a, /[_\/]/); ca[a[2] + 0] = k } }
            nb = length(cd); next }
-      $1 + 0 <= 20 { for (b = 0; b < nb; ++b) { if (!(b in a0)) a0[b] = $ca[b]; printf "%s,%d,%s,%.9g\n", $1, b, $cd[b], $ca[b] / a0[b] } }' \
+      $1 + 0 <= 20 { for (b = 0; b < nb; ++b) { if (!(b in a0)) a0[b] = $ca[b]; printf "%.10g,%d,%.10g,%.10g\n", $1, b, $cd[b], $ca[b] / a0[b] } }' \
       "${base}_bodies.csv"; } > "$src/validation/cavity_deformable_objects/reference/ibms_deformation_k$k.csv"
 done
 echo "references written"

@@ -164,6 +164,13 @@ const std::vector<Quantity>& trajectory_quantities() {
   return q;
 }
 
+// Whether the chord between output times k-1 and k lies in [t0, t1]. The edges are taken to 1e-9
+// relative, so that a time printed with 10 digits (15 for 14.99999999999997) counts the same as the
+// unrounded one; check.cpp compares exactly (docs/compare.md).
+bool chord_in_window(const BodySeries& s, std::size_t k, double t0, double t1) {
+  return s.t[k - 1] >= t0 - 1e-9 * std::max(1.0, std::abs(t0)) && s.t[k] <= t1 + 1e-9 * std::max(1.0, std::abs(t1));
+}
+
 // Mean over particles of the centroid path length over [t0, t1]: the sum of the chords between
 // consecutive output times both inside the window (as check.cpp's mean_path_length).
 double mean_path_length(const BodySeries& s, double t0, double t1) {
@@ -172,7 +179,7 @@ double mean_path_length(const BodySeries& s, double t0, double t1) {
     const auto& x = s.q[0][b];
     const auto& y = s.q[1][b];
     for (std::size_t k = 1; k < s.t.size(); ++k)
-      if (s.t[k - 1] >= t0 && s.t[k] <= t1) total += std::hypot(x[k] - x[k - 1], y[k] - y[k - 1]);
+      if (chord_in_window(s, k, t0, t1)) total += std::hypot(x[k] - x[k - 1], y[k] - y[k - 1]);
   }
   return total / static_cast<double>(s.bodies());
 }
@@ -181,7 +188,7 @@ double mean_path_length(const BodySeries& s, double t0, double t1) {
 double max_interval(const BodySeries& s, double t0, double t1) {
   double m = 0;
   for (std::size_t k = 1; k < s.t.size(); ++k)
-    if (s.t[k - 1] >= t0 && s.t[k] <= t1) m = std::max(m, s.t[k] - s.t[k - 1]);
+    if (chord_in_window(s, k, t0, t1)) m = std::max(m, s.t[k] - s.t[k - 1]);
   return m;
 }
 
