@@ -164,11 +164,11 @@ const std::vector<Quantity>& trajectory_quantities() {
   return q;
 }
 
-// Whether the chord between output times k-1 and k lies in [t0, t1]. The edges are taken to 1e-9
-// relative, so that a time printed with 10 digits (15 for 14.99999999999997) counts the same as the
-// unrounded one; check.cpp compares exactly (docs/compare.md).
+// Whether the chord between output times k-1 and k lies in [t0, t1], compared exactly as check.cpp
+// does: a time printed as 15 counts as inside, ibms's unrounded 14.99999999999997 does not
+// (docs/compare.md gives the size of that edge effect).
 bool chord_in_window(const BodySeries& s, std::size_t k, double t0, double t1) {
-  return s.t[k - 1] >= t0 - 1e-9 * std::max(1.0, std::abs(t0)) && s.t[k] <= t1 + 1e-9 * std::max(1.0, std::abs(t1));
+  return s.t[k - 1] >= t0 && s.t[k] <= t1;
 }
 
 // Mean over particles of the centroid path length over [t0, t1]: the sum of the chords between
