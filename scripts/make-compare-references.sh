@@ -2,16 +2,25 @@
 # Makes the ibms high-resolution references that `ibms compare` reads (docs/compare.md):
 #   validation/<cavity case>/reference/ibms_centreline_{u,v}.csv   (256^2 run of the case's scene)
 #   validation/settling_disk/reference/ibms_settling_history.csv    (400 x 1200 run, D/h = 50)
+#   validation/cavity_swelling_particles/reference/ibms_trajectories_{nonswelling,swelling}.csv
+#   validation/cavity_deformable_objects/reference/ibms_deformation_k{10,100}.csv
+#     (the body cases at their validation grid, 100 x 100, as their ctest runs them)
 # usage: scripts/make-compare-references.sh IBMS_BINARY WORK_DIR
 # Runs that already have their output in WORK_DIR (<case>_<N>.h5 and its CSVs) are not rerun.
-# CAVITY_CASES="..." restricts the cavity cases; SKIP_SETTLING=1 skips the settling disk.
+# CAVITY_CASES="..." restricts the cavity cases; SKIP_SETTLING=1 skips the settling disk;
+# ONLY_BODIES=1 makes only the two body cases' references. Their runs are WORK_DIR/<case>_<variant>.h5
+# (variant nonswelling|swelling|k10|k100); links to the ctest outputs are reused, e.g.
+# build/validation/cavity_deformable_objects/k10{.h5,_bodies.csv} linked as
+# WORK_DIR/cavity_deformable_objects_k10{.h5,_bodies.csv}.
 set -euo pipefail
 ibms=$1; work=$2
 src=$(cd "$(dirname "$0")/.." && pwd)
 commit=$(git -C "$src" rev-parse --short=12 HEAD)
 mkdir -p "$work"
 n_cavity=256
+[[ ${ONLY_BODIES:-0} == 1 ]] && CAVITY_CASES=none SKIP_SETTLING=1
 for case in ${CAVITY_CASES:-lid_driven_cavity_re100 lid_driven_cavity_re400 lid_driven_cavity_re1000 two_sided_cavity_re100}; do
+  [[ $case == none ]] && continue
   base=$work/${case}_${n_cavity}
   if [[ ! -s ${base}_centreline_v.csv ]]; then
     echo "running $case at ${n_cavity}^2"
@@ -28,7 +37,7 @@ for case in ${CAVITY_CASES:-lid_driven_cavity_re100 lid_driven_cavity_re400 lid_
 done
 
 n_x=400; n_y=1200; markers=160   # D/h = 50, rim spacing ~h (the slow label's finest grid)
-[[ ${SKIP_SETTLING:-0} == 1 ]] && exit 0
+if [[ ${SKIP_SETTLING:-0} != 1 ]]; then
 base=$work/settling_disk_$n_x
 if [[ ! -s ${base}_bodies.csv ]]; then
   echo "running settling_disk at ${n_x} x ${n_y}"
@@ -45,4 +54,51 @@ made_by=$(/usr/bin/python3 -c "import h5py; f = h5py.File('$base.h5', 'r'); prin
     !h { h = 1; for (k = 1; k <= NF; ++k) { if ($k ~ /^body_000\/centroid_y/) cy = k; if ($k ~ /^body_000\/velocity_y/) cv = k }
          print "t [s],y [cm],v [cm/s]"; next }
     { print $1, $cy, $cv }' "${base}_bodies.csv"; } > "$src/validation/settling_disk/reference/ibms_settling_history.csv"
+fi
+
+# Body cavities (docs/compare.md): ibms's own validation runs at the cases' 100 x 100.
+run_body_case() {  # case, variant -> sets base; runs the scene unless WORK_DIR has its _bodies.csv
+  base=$work/$1_$2
+  if [[ ! -s ${base}_bodies.csv ]]; then
+    echo "running $1 $2"
+    "$ibms" run "$src/validation/$1/scene_$2.toml" -o "$base.h5" --quiet
+  fi
+  # The root attribute git_commit (docs/output.md), without h5py: the first string of exactly 12 hex digits in the file.
+  made_by=$(/usr/bin/python3 -c "import h5py; f = h5py.File('$base.h5', 'r'); print(f.attrs['git_commit'])" 2>/dev/null ||
+            strings -n 12 "$base.h5" | grep -m1 -xE '[0-9a-f]{12}|unknown' || echo unknown)
+}
+# Trajectories as cavity_swelling_particles/check.cpp writes them (10 <= t <= 20, 10 digits), every
+# ${TRAJECTORY_STRIDE:-1}-th output time (to keep the files small).
+stride=${TRAJECTORY_STRIDE:-2}   # 2: ~200 kB per file instead of ~400 kB
+for variant in nonswelling swelling; do
+  run_body_case cavity_swelling_particles $variant
+  { echo "# ibms reference for 'ibms compare cavity_swelling_particles' (docs/compare.md): particle centroids"
+    echo "# (rim-polygon area centroid) and diameters of ibms's own $variant run of"
+    echo "# validation/cavity_swelling_particles/scene_$variant.toml (100 x 100, DEM stiffness 1e4, as ctest runs it),"
+    echo "# 10 <= t <= 20, one output time in ${stride}. ibms commit $made_by; written by"
+    echo "# scripts/make-compare-references.sh at commit $commit."
+    echo "time [-],particle [-],x [-],y [-],diameter [-]"
+    awk -F, -v stride="$stride" 'BEGIN { OFS = "," } /^#/ { next }
+      !h { h = 1; for (k = 1; k <= NF; ++k) { if ($k ~ /^body_[0-9]+\/centroid_x/) { n = split($k, a, /[_\/]/); cx[a[2] + 0] = k }
+                                               if ($k ~ /^body_[0-9]+\/centroid_y/) { split($k, a, /[_\/]/); cy[a[2] + 0] = k }
+                                               if ($k ~ /^body_[0-9]+\/diameter/) { split($k, a, /[_\/]/); cd[a[2] + 0] = k } }
+           nb = length(cx); next }
+      $1 + 0 >= 10 && $1 + 0 <= 20 { if (m++ % stride) next; for (b = 0; b < nb; ++b) printf "%.10g,%d,%.10g,%.10g,%.10g\n", $1, b, $cx[b], $cy[b], $cd[b] }' \
+      "${base}_bodies.csv"; } > "$src/validation/cavity_swelling_particles/reference/ibms_trajectories_$variant.csv"
+done
+# Deformation parameter and area / A0 (A0: the body's first output) of every body, t <= 20.
+for k in 10 100; do
+  run_body_case cavity_deformable_objects k$k
+  { echo "# ibms reference for 'ibms compare cavity_deformable_objects' (docs/compare.md): deformation parameter"
+    echo "# (r_max - r_min)/(r_max + r_min) of the rim distances from the rim centroid and rim-polygon area / A0 of"
+    echo "# every body, every output time t <= 20, of ibms's own run of validation/cavity_deformable_objects/scene_k$k.toml"
+    echo "# (100 x 100, as ctest runs it). ibms commit $made_by; written by scripts/make-compare-references.sh at commit $commit."
+    echo "time [-],particle [-],deformation [-],area_ratio [-]"
+    awk -F, 'BEGIN { OFS = "," } /^#/ { next }
+      !h { h = 1; for (k = 1; k <= NF; ++k) { if ($k ~ /^body_[0-9]+\/deformation/) { split($k, a, /[_\/]/); cd[a[2] + 0] = k }
+                                               if ($k ~ /^body_[0-9]+\/area/) { split($k, a, /[_\/]/); ca[a[2] + 0] = k } }
+           nb = length(cd); next }
+      $1 + 0 <= 20 { for (b = 0; b < nb; ++b) { if (!(b in a0)) a0[b] = $ca[b]; printf "%.10g,%d,%.10g,%.10g\n", $1, b, $cd[b], $ca[b] / a0[b] } }' \
+      "${base}_bodies.csv"; } > "$src/validation/cavity_deformable_objects/reference/ibms_deformation_k$k.csv"
+done
 echo "references written"

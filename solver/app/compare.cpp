@@ -2,7 +2,8 @@
 // validation/common/cavity_check.cpp (max |centre-line velocity - Ghia| over the unflagged Ghia
 // points, tolerances of validation/CMakeLists.txt) and validation/settling_disk/check.cpp (maximum
 // settling speed within 3 % of 5.5 cm/s); the same metric is also taken against ibms's own finest
-// run (validation/<case>/reference/ibms_*.csv, see each reference/README_ibms.md).
+// run (validation/<case>/reference/ibms_*.csv, see each reference/README_ibms.md). The two body
+// cavities are in compare_bodies.cpp.
 #include "app/compare.hpp"
 
 #include <fmt/format.h>
@@ -14,7 +15,9 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include "app/compare_bodies.hpp"
 #include "app/compare_input.hpp"
+#include "app/compare_report.hpp"
 #include "core/errors.hpp"
 #include "validation/common/profile_table.hpp"
 #include "validation/settling_disk/body_series.hpp"
@@ -50,18 +53,6 @@ const std::string settling_case = "settling_disk";
 constexpr double settling_tolerance = 0.03;  // relative; validation/settling_disk/README.md (issue 3 §5)
 
 struct Profile { std::vector<double> s, value; };  // s: coordinate along the line [length]
-
-struct Verdict {
-  bool pass = true;
-  void line(const std::string& metric, double tolerance, double measured) {
-    const bool ok = measured <= tolerance;
-    pass = pass && ok;
-    std::printf("  %-62s %10.4g %12.5g   %s\n", metric.c_str(), tolerance, measured, ok ? "pass" : "FAIL");
-  }
-  static void info(const std::string& metric, double submitted, double reference) {
-    std::printf("  %-62s submitted %.6g, reference %.6g   info\n", metric.c_str(), submitted, reference);
-  }
-};
 
 void require_rows(const CompareTable& t, std::size_t n, const std::string& what) {
   if (t.lines.size() < n)
@@ -132,7 +123,7 @@ int compare_cavity(const CavityCase& c, const std::vector<std::string>& files, c
   const Profile ref_u = reference_profile(dir + "ibms_centreline_u.csv");
   const Profile ref_v = reference_profile(dir + "ibms_centreline_v.csv");
   std::printf("ibms compare %s: %s\n", c.name.c_str(), all_files.c_str());
-  std::printf("  %-62s %10s %12s   %s\n", "metric", "tolerance", "measured", "result");
+  Verdict::header();
   Verdict verdict;
   int n_u = 0, n_v = 0;
   if (!c.ghia_u.empty()) {
@@ -207,7 +198,7 @@ int compare_settling(const std::vector<std::string>& files, const std::string& r
   const double published = validation::reference_value(dir + "settling_disk_rho1.25.csv", "max_settling_speed");
   const double touchdown_level = 0.14;  // cm: centre height of the touchdown time (the reference's definition)
   std::printf("ibms compare %s: %s\n", settling_case.c_str(), files[0].c_str());
-  std::printf("  %-62s %10s %12s   %s\n", "metric", "tolerance", "measured", "result");
+  Verdict::header();
   double t_max = 0, t_max_ref = 0;
   const double speed = max_speed(h, t_max), speed_ref = max_speed(ref, t_max_ref);
   Verdict verdict;
@@ -235,6 +226,8 @@ std::vector<std::string> compare_case_names() {
   std::vector<std::string> names;
   for (const CavityCase& c : cavity_cases()) names.push_back(c.name);
   names.push_back(settling_case);
+  names.push_back("cavity_swelling_particles");
+  names.push_back("cavity_deformable_objects");
   return names;
 }
 
@@ -256,6 +249,8 @@ int compare_case(const std::string& case_name, const std::vector<std::string>& f
   for (const CavityCase& c : cavity_cases())
     if (c.name == case_name) return compare_cavity(c, files, validation_dir);
   if (case_name == settling_case) return compare_settling(files, validation_dir);
+  if (case_name == "cavity_swelling_particles") return compare_swelling_particles(files, validation_dir);
+  if (case_name == "cavity_deformable_objects") return compare_deformable_objects(files, validation_dir);
   std::string known;
   for (const std::string& n : names) known += (known.empty() ? "" : ", ") + n;
   throw InputError("ibms compare: unknown case '" + case_name + "' (known: " + known + ")");

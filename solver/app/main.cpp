@@ -92,8 +92,10 @@ int main(int argc, char** argv) {
   CLI::App* compare = app.add_subcommand("compare", "compare another code's CSV of a case's standard quantities "
                                                     "with the case's checks and ibms's own reference (docs/compare.md)");
   compare->add_option("case", case_name, "validation case (lid_driven_cavity_re100|re400|re1000, "
-                                         "two_sided_cavity_re100, settling_disk)")->required();
-  compare->add_option("files", compare_files, "CSV file(s): y,u and x,v profiles, or t,v[,y] history")->required();
+                                         "two_sided_cavity_re100, settling_disk, cavity_swelling_particles, "
+                                         "cavity_deformable_objects)")->required();
+  compare->add_option("files", compare_files, "CSV file(s): y,u and x,v profiles; t,v[,y] history; "
+                                                "two body series (time,particle,...) or _bodies.csv")->required();
   compare->add_option("--validation-dir", validation_dir, "folder with <case>/reference/ (default: the source tree's "
                                                           "validation/ or $IBMS_VALIDATION_DIR)");
 
