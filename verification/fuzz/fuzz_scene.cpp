@@ -11,26 +11,10 @@
 #include <vector>
 
 #include "core/errors.hpp"
+#include "fuzz_input.hpp"
 #include "scene/scene_reader.hpp"
 
-namespace {
-
-// Leading "#set key=value" lines -> overrides (they are TOML comments, so the rest parses alike).
-std::vector<std::string> leading_overrides(const std::string& text) {
-  std::vector<std::string> overrides;
-  std::size_t at = 0;
-  const std::string marker = "#set ";
-  while (text.compare(at, marker.size(), marker) == 0) {
-    const std::size_t end = text.find('\n', at);
-    const std::size_t stop = end == std::string::npos ? text.size() : end;
-    overrides.push_back(text.substr(at + marker.size(), stop - at - marker.size()));
-    if (end == std::string::npos) break;
-    at = end + 1;
-  }
-  return overrides;
-}
-
-}  // namespace
+using ibms::fuzz::leading_overrides;
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);

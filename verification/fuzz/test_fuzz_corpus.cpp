@@ -13,23 +13,12 @@
 #include <vector>
 
 #include "core/errors.hpp"
+#include "fuzz_input.hpp"
 #include "scene/scene_reader.hpp"
 
 namespace {
 
-std::vector<std::string> leading_overrides(const std::string& text) {
-  std::vector<std::string> overrides;
-  std::size_t at = 0;
-  const std::string marker = "#set ";
-  while (text.compare(at, marker.size(), marker) == 0) {
-    const std::size_t end = text.find('\n', at);
-    const std::size_t stop = end == std::string::npos ? text.size() : end;
-    overrides.push_back(text.substr(at + marker.size(), stop - at - marker.size()));
-    if (end == std::string::npos) break;
-    at = end + 1;
-  }
-  return overrides;
-}
+using ibms::fuzz::leading_overrides;
 
 std::string file_text(const std::filesystem::path& path) {
   std::ifstream file(path, std::ios::binary);
