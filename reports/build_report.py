@@ -93,7 +93,9 @@ def summary_section(out, results, tests):
         rows = []
         for case, rs in results.items():
             for r in rs:
-                rows.append([r"\texttt{%s}" % esc(case), esc(r["metric"]), num(r["tolerance"]),
+                # Long case names break after an underscore instead of running into the metric.
+                case_cell = r"\texttt{%s}" % esc(case).replace(r"\_", r"\_\allowbreak{}")
+                rows.append([case_cell, esc(r["metric"]), num(r["tolerance"]),
                              num(r["measured"]), status_cell(r["status"])])
         out.append(longtable(r"p{3.6cm}p{6.4cm}rrc",
                              ["case", "claim / metric", "tolerance", "measured", "result"], rows,
