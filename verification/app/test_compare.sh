@@ -5,22 +5,10 @@
 # usage: test_compare.sh IBMS VALIDATION_DIR
 set -u
 ibms=$1; validation=$2
+source "$(dirname "${BASH_SOURCE[0]}")/compare_test_lib.sh"  # expect_exit, scale_column
 work=$(mktemp -d); trap 'rm -rf "$work"' EXIT
 cd "$work"
 failures=0
-expect_exit() {  # name, expected code, pattern expected in the output (grep -E), command...
-  local name=$1 want=$2 pattern=$3; shift 3
-  "$@" > out.txt 2>&1; local code=$?
-  if [[ $code -ne $want ]] || ! grep -qE -- "$pattern" out.txt; then
-    echo "FAIL $name: exit $code (expected $want), pattern '$pattern':"; cat out.txt; failures=$((failures + 1))
-  else
-    echo "ok   $name (exit $code)"; grep -E -- "$pattern" out.txt | head -3
-  fi
-}
-# Scales the second column of the data rows (after the '#' comments and the header) by a factor.
-scale_column() {  # in, out, column (1-based), factor
-  awk -F, -v OFS=, -v c="$3" -v f="$4" '/^#/ || !h { if (!/^#/) h = 1; print; next } { $c = $c * f; print }' "$1" > "$2"
-}
 
 # Lid-driven cavity Re 100 on the check's own grid (128^2, ~5 s): the validation run's profiles.
 "$ibms" run "$validation/lid_driven_cavity_re100/scene.toml" --set domain.cells_x=128 --set domain.cells_y=128 \

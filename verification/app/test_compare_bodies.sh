@@ -7,18 +7,10 @@
 # usage: test_compare_bodies.sh IBMS VALIDATION_DIR
 set -u
 ibms=$1; validation=$2
+source "$(dirname "${BASH_SOURCE[0]}")/compare_test_lib.sh"  # expect_exit, scale_column
 work=$(mktemp -d); trap 'rm -rf "$work"' EXIT
 cd "$work"
 failures=0
-expect_exit() {  # name, expected code, pattern expected in the output (grep -E), command...
-  local name=$1 want=$2 pattern=$3; shift 3
-  "$@" > out.txt 2>&1; local code=$?
-  if [[ $code -ne $want ]] || ! grep -qE -- "$pattern" out.txt; then
-    echo "FAIL $name: exit $code (expected $want), pattern '$pattern':"; cat out.txt; failures=$((failures + 1))
-  else
-    echo "ok   $name (exit $code)"; grep -E -- "$pattern" out.txt | head -3
-  fi
-}
 same_lines() {  # name, file a, file b, pattern: the matching lines must be identical
   if ! diff <(grep -E -- "$4" "$2" | sed 's/  */ /g') <(grep -E -- "$4" "$3" | sed 's/  */ /g') > /dev/null ||
      [[ $(grep -cE -- "$4" "$2") -eq 0 ]]; then
@@ -104,9 +96,6 @@ cp out.txt long.txt
 grep -qE "max area / A0.*pass" out.txt || { echo "FAIL deformable: area bounds not checked"; failures=$((failures + 1)); }
 expect_exit "deformable: k = 10 and k = 100 swapped rejected" 1 "k = 10 / k = 100 \(check 5\).* FAIL" \
   run cavity_deformable_objects "$k100" "$k10"
-scale_column() {  # in, out, column (1-based), factor: data rows only
-  awk -F, -v OFS=, -v c="$3" -v f="$4" '/^#/ || !h { if (!/^#/) h = 1; print; next } { $c = $c * f; print }' "$1" > "$2"
-}
 scale_column "$k10" k10_less.csv 3 0.7   # the measured ratio 2.49 becomes 1.74
 expect_exit "deformable: k = 10 deformation x 0.7 rejected" 1 "check 5\).* FAIL" run cavity_deformable_objects k10_less.csv "$k100"
 scale_column "$k10" k10_shrunk.csv 4 0.7  # min area 0.65 A0 becomes 0.46 A0
