@@ -22,6 +22,24 @@ std::string describe_scene(const Scene& scene) {
   const Simulation sim(scene);
   text += "# stages per step\n";
   for (const std::string& s : sim.stage_names()) text += "  " + s + "\n";
+  if (sim.has_bodies()) {
+    text += "\n# bodies (kind: what each step costs)\n";
+    for (std::size_t b = 0; b < sim.bodies().size(); ++b) {
+      const MassSpringBody& body = sim.bodies()[b];
+      const BodySpec& spec = scene.bodies[b];
+      std::string cost;
+      if (body.kind == BodyKind::mass_spring)
+        cost = fmt::format("{} points, {} springs, sub-stepped to its spring period (stable sub-step {:.4g}){}",
+                           body.n_points(), body.springs.size(), stable_substep(body, /*safety=*/0.5),
+                           spec.swelling.enabled ? ", swelling schedule" : "");
+      else if (body.kind == BodyKind::rigid)
+        cost = fmt::format("{} rim points, Newton-Euler (m = {:.4g}, I = {:.4g}); no spring sub-steps", body.n_surface,
+                           sim.rigid()[b].mass, sim.rigid()[b].moment_of_inertia);
+      else
+        cost = fmt::format("{} rim points, motion given by the scene; forcing and force output only", body.n_surface);
+      text += fmt::format("  body {}: {}: {}\n", b, body_kind_name(body.kind), cost);
+    }
+  }
   text += "\n" + describe_time_step_limits(scene, sim);
   const double dt = planned_time_step(scene);
   if (std::isfinite(dt) && dt > 0) {

@@ -59,6 +59,7 @@ std::vector<TimeStepLimit> time_step_limits(const Scene& scene, const Simulation
                                    : "bodies start at rest: checked every step by the adaptive step"});
   for (std::size_t b = 0; b < sim.bodies().size(); ++b) {
     const MassSpringBody& body = sim.bodies()[b];
+    if (body.kind != BodyKind::mass_spring) continue;  // rigid and prescribed bodies have no springs
     const SpectralBounds bounds = spectral_bounds(body);
     const double omega = std::sqrt(bounds.omega_squared_max), gamma = bounds.damping_rate_max;
     // Symplectic Euler, METHOD.md §5.1: undamped dt <= 2 / omega_max (period 2 pi / omega_max),
@@ -74,8 +75,11 @@ std::vector<TimeStepLimit> time_step_limits(const Scene& scene, const Simulation
   if (sim.has_contacts()) {
     const ContactModel& model = sim.contact_model();
     double lightest = HUGE_VAL;
-    for (const MassSpringBody& body : sim.bodies())
+    for (const MassSpringBody& body : sim.bodies()) {  // as contact_substep
+      if (body.kind == BodyKind::rigid) lightest = std::min(lightest, body.total_mass() / 3.0);
+      if (body.kind != BodyKind::mass_spring) continue;
       for (int k = 0; k < body.n_surface; ++k) lightest = std::min(lightest, body.mass[k]);
+    }
     const double m_eff = sim.bodies().size() > 1 ? 0.5 * lightest : lightest;  // as contact_substep (A8)
     const double duration = contact_duration(m_eff, model.active_pairs_safety * model.stiffness, /*damping=*/0.0);
     limits.push_back({"contact duration t_c (DEM)", duration, 1.0 / model.steps_per_contact, true,
@@ -112,10 +116,17 @@ std::string describe_time_step_limits(const Scene& scene, const Simulation& sim)
     for (const MassSpringBody& body : sim.bodies()) solid_substep = std::min(solid_substep, stable_substep(body, 0.5));
     const double contact_limit = sim.has_contacts() ? contact_substep(sim.contact_model(), sim.bodies()) : HUGE_VAL;
     text += fmt::format("solid sub-step: springs {:.4g}{}\n", solid_substep,
-                        sim.has_contacts() ? fmt::format(", contacts {:.4g}", contact_limit) : "");
-    if (std::isfinite(dt) && dt > 0)
-      text += fmt::format("sub-steps per fluid step at dt = {:.4g}: {} (automatic)\n", dt,
-                          substeps_for(sim.bodies(), dt, contact_limit));
+                        sim.has_contacts() ? fmt::format(", contacts {:.4g} (only while a contact is possible within "
+                                                         "the step)", contact_limit)
+                                           : "");
+    if (std::isfinite(dt) && dt > 0) {
+      const bool touching = sim.contact_possible(dt);
+      text += fmt::format("sub-steps per fluid step at dt = {:.4g}: {} (automatic{})\n", dt,
+                          substeps_for(sim.bodies(), dt, touching ? contact_limit : HUGE_VAL),
+                          sim.has_contacts() ? (touching ? ", a contact is possible at t = 0"
+                                                         : "; no contact possible at t = 0")
+                                             : "");
+    }
   }
   // A fixed step above the safe fraction of a limit the fluid step itself must respect is a warning;
   // limits handled by sub-stepping are reported with the sub-steps that handle them.

@@ -41,6 +41,9 @@ void collect_pair_contacts(const ContactModel& model, const std::vector<MassSpri
   stats.n_pair_checks = search.n_pair_checks;
   for (const SpherePair& pair : search.pairs) {
     const int s = pair.first, t = pair.second;
+    // Two prescribed bodies (e.g. nested cylinders) move as the scene says: no contact force.
+    if (bodies[spheres.body[s]].kind == BodyKind::prescribed && bodies[spheres.body[t]].kind == BodyKind::prescribed)
+      continue;
     const std::array<double, 2> d = separation(spheres.centre[s], spheres.centre[t], box);
     const double distance = std::hypot(d[0], d[1]);
     if (!(distance > 0.0)) throw std::runtime_error("contact: two CDS centres coincide");
@@ -55,7 +58,7 @@ void collect_pair_contacts(const ContactModel& model, const std::vector<MassSpri
     contact.normal = {d[0] / distance, d[1] / distance};
     contacts.push_back(contact);
   }
-  stats.n_active_pairs = static_cast<int>(search.pairs.size());
+  stats.n_active_pairs = static_cast<int>(contacts.size());
 }
 
 // Walls 0..3: x = x0, x = x0 + Lx, y = y0, y = y0 + Ly; only in non-periodic directions.
@@ -63,6 +66,7 @@ void collect_wall_contacts(const ContactModel& model, const std::vector<MassSpri
                            const WallBox& box, std::vector<ActiveContact>& contacts,
                            ContactStats& stats) {
   for (int b = 0; b < static_cast<int>(bodies.size()); ++b) {
+    if (bodies[b].kind == BodyKind::prescribed) continue;  // its motion is given, walls cannot push it
     const double radius = model.cds_radius_of(bodies[b]);
     for (int k = 0; k < bodies[b].n_surface; ++k) {
       for (int c = 0; c < 2; ++c) {
@@ -96,6 +100,9 @@ double effective_mass(const ContactModel& model, const std::vector<MassSpringBod
   if (contact.body_b == wall_partner) return m_a;
   const MassSpringBody& b = bodies[contact.body_b];
   const double m_b = whole_body ? b.total_mass() : b.mass[contact.point_b];
+  // A prescribed body does not yield: it acts like a wall (infinite mass) on its partner.
+  if (b.kind == BodyKind::prescribed) return m_a;
+  if (a.kind == BodyKind::prescribed) return m_b;
   return m_a * m_b / (m_a + m_b);
 }
 

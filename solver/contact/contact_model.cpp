@@ -37,9 +37,17 @@ double contact_substep(const ContactModel& model, const std::vector<MassSpringBo
   double lightest_point = std::numeric_limits<double>::infinity();
   double heaviest_body = 0.0;
   for (const MassSpringBody& body : bodies) {
-    for (int k = 0; k < body.n_surface; ++k) lightest_point = std::min(lightest_point, body.mass[k]);
+    if (body.kind == BodyKind::prescribed) continue;  // infinitely heavy: its partner's mass counts
+    if (body.kind == BodyKind::rigid) {
+      // A rim point of a uniform rigid disk pushed along its rim tangent has the smallest
+      // effective mass, 1/m_eff = 1/m + R^2/I = 3/m: m/3.
+      lightest_point = std::min(lightest_point, body.total_mass() / 3.0);
+    } else {
+      for (int k = 0; k < body.n_surface; ++k) lightest_point = std::min(lightest_point, body.mass[k]);
+    }
     heaviest_body = std::max(heaviest_body, body.total_mass());
   }
+  if (!std::isfinite(lightest_point)) return std::numeric_limits<double>::infinity();  // prescribed only
   // Two equal lightest points in a pair have m_eff = m_p / 2; against a wall m_eff = m_p.
   const double m_eff = bodies.size() > 1 ? 0.5 * lightest_point : lightest_point;
   const double n_active = model.active_pairs_safety;
@@ -59,6 +67,72 @@ double contact_substep(const ContactModel& model, const std::vector<MassSpringBo
   if (total_damping > 0.0)
     substep = std::min(substep, dashpot_safety * 2.0 * lightest_point / total_damping);
   return substep;
+}
+
+namespace {
+
+struct BoundingCircle {
+  std::array<double, 2> centre{0.0, 0.0};  // [length]
+  double radius = 0.0;                     // holds every rim point and its CDS [length]
+  double speed = 0.0;                      // largest point speed [length/time]
+};
+
+BoundingCircle bounding_circle(const ContactModel& model, const MassSpringBody& body) {
+  BoundingCircle circle;
+  for (int k = 0; k < body.n_surface; ++k)
+    for (int d = 0; d < 2; ++d) circle.centre[d] += body.position[k][d] / body.n_surface;
+  for (int p = 0; p < body.n_points(); ++p) {
+    circle.speed = std::max(circle.speed, std::hypot(body.velocity[p][0], body.velocity[p][1]));
+    if (p < body.n_surface)
+      circle.radius = std::max(circle.radius, std::hypot(body.position[p][0] - circle.centre[0],
+                                                         body.position[p][1] - circle.centre[1]));
+  }
+  circle.radius += model.cds_radius_of(body);
+  return circle;
+}
+
+}  // namespace
+
+bool contact_possible_within(const ContactModel& model, const std::vector<MassSpringBody>& bodies,
+                             const WallBox& box, double dt, double acceleration) {
+  if (!model.enabled()) return false;
+  constexpr double travel_safety = 2.0;  // velocities change within the step; doubles the travel
+  std::vector<BoundingCircle> circles;
+  circles.reserve(bodies.size());
+  for (const MassSpringBody& body : bodies) circles.push_back(bounding_circle(model, body));
+  const auto reach = [&](double speed, double cds_radius) {
+    return travel_safety * speed * dt + acceleration * dt * dt + 0.5 * cds_radius;
+  };
+  for (std::size_t a = 0; a < bodies.size(); ++a) {
+    const BoundingCircle& ca = circles[a];
+    const double cds_a = model.cds_radius_of(bodies[a]);
+    if (model.walls && bodies[a].kind != BodyKind::prescribed) {
+      for (int d = 0; d < 2; ++d) {
+        if (box.periodic[d]) continue;
+        const double gap = std::min(ca.centre[d] - ca.radius - box.origin[d],
+                                    box.origin[d] + box.length[d] - ca.centre[d] - ca.radius);
+        if (gap < reach(ca.speed, cds_a)) return true;
+      }
+    }
+    for (std::size_t b = 0; b < a; ++b) {
+      if (bodies[a].kind == BodyKind::prescribed && bodies[b].kind == BodyKind::prescribed) continue;
+      const BoundingCircle& cb = circles[b];
+      double distance_squared = 0.0;
+      for (int d = 0; d < 2; ++d) {
+        double delta = std::abs(ca.centre[d] - cb.centre[d]);
+        if (box.periodic[d]) delta = std::min(delta, std::abs(box.length[d] - std::fmod(delta, box.length[d])));
+        distance_squared += delta * delta;
+      }
+      const double distance = std::sqrt(distance_squared);
+      // Nested bodies (one inside a prescribed container) are close whenever the inner one nears the rim.
+      const double gap = distance + std::min(ca.radius, cb.radius) > std::max(ca.radius, cb.radius)
+                             ? distance - ca.radius - cb.radius
+                             : std::max(ca.radius, cb.radius) - distance - std::min(ca.radius, cb.radius) -
+                                   2.0 * std::max(cds_a, model.cds_radius_of(bodies[b]));
+      if (gap < reach(ca.speed + cb.speed, std::min(cds_a, model.cds_radius_of(bodies[b])))) return true;
+    }
+  }
+  return false;
 }
 
 }  // namespace ibms

@@ -81,8 +81,7 @@ void FluidSolver::solve_helmholtz_component(double dt, CellField& rhs_and_soluti
   rhs_and_solution.copy_interior_from(buffer_.data());
 }
 
-void FluidSolver::predict_momentum(FluidState& state, double dt, const CellField* force_x,
-                                   const CellField* force_y) {
+void FluidSolver::predict_explicit(FluidState& state, double dt) {
   // Ghosts of u^n with the wall velocities at t^n, of p^n with zero normal gradient.
   CellField& u = state.velocity_x;
   CellField& v = state.velocity_y;
@@ -97,18 +96,26 @@ void FluidSolver::predict_momentum(FluidState& state, double dt, const CellField
   centre_gradient(grid_, p, grad_x_, grad_y_);
 
   // Variable-step AB2: N_ext = (1 + r/2) N^n - (r/2) N^{n-1}, r = dt^n/dt^{n-1}; Euler first step.
+  // The explicit estimate u~_e = u^n + dt (-N_ext + nu L u^n - G_c p^n) (Uhlmann 2005, step 1).
   const double r = state.has_convection_prev ? dt / state.time_step_prev : 0.0;
   const double c_new = 1.0 + 0.5 * r, c_old = -0.5 * r;
   for (int j = 0; j < grid_.ny; ++j)
     for (int i = 0; i < grid_.nx; ++i) {
-      const double fx = force_x ? (*force_x)(i, j) : 0.0;
-      const double fy = force_y ? (*force_y)(i, j) : 0.0;
       const double nx_ext = c_new * conv_x_(i, j) + c_old * state.convection_x_prev(i, j);
       const double ny_ext = c_new * conv_y_(i, j) + c_old * state.convection_y_prev(i, j);
-      star_x_(i, j) = u(i, j) + dt * (-nx_ext + 0.5 * nu_ * lap_x_(i, j) - grad_x_(i, j) + fx);
-      star_y_(i, j) = v(i, j) + dt * (-ny_ext + 0.5 * nu_ * lap_y_(i, j) - grad_y_(i, j) + fy);
+      star_x_(i, j) = u(i, j) + dt * (-nx_ext + nu_ * lap_x_(i, j) - grad_x_(i, j));
+      star_y_(i, j) = v(i, j) + dt * (-ny_ext + nu_ * lap_y_(i, j) - grad_y_(i, j));
     }
+}
 
+void FluidSolver::complete_prediction(FluidState& state, double dt) {
+  // velocity_star now holds u~_e + dt f: take back the implicit half of the viscous term, so that
+  // it is the Crank-Nicolson right-hand side u^n + dt (-N_ext + nu L u^n / 2 - G_c p^n + f).
+  for (int j = 0; j < grid_.ny; ++j)
+    for (int i = 0; i < grid_.nx; ++i) {
+      star_x_(i, j) -= 0.5 * dt * nu_ * lap_x_(i, j);
+      star_y_(i, j) -= 0.5 * dt * nu_ * lap_y_(i, j);
+    }
   // Wall velocities at t^{n+1} in the implicit half: the wall row of L is the homogeneous row
   // plus 2 u_w / h^2 (METHOD.md §6, inhomogeneous Dirichlet), moved to the rhs.
   const double t_new = state.time + dt;
@@ -130,6 +137,18 @@ void FluidSolver::predict_momentum(FluidState& state, double dt, const CellField
   }
   solve_helmholtz_component(dt, star_x_);
   solve_helmholtz_component(dt, star_y_);
+}
+
+void FluidSolver::predict_momentum(FluidState& state, double dt, const CellField* force_x,
+                                   const CellField* force_y) {
+  predict_explicit(state, dt);
+  if (force_x != nullptr || force_y != nullptr)
+    for (int j = 0; j < grid_.ny; ++j)
+      for (int i = 0; i < grid_.nx; ++i) {
+        if (force_x != nullptr) star_x_(i, j) += dt * (*force_x)(i, j);
+        if (force_y != nullptr) star_y_(i, j) += dt * (*force_y)(i, j);
+      }
+  complete_prediction(state, dt);
 }
 
 ProjectionStats FluidSolver::project_smac(FluidState& state, double dt) {

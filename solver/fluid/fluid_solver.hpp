@@ -8,8 +8,10 @@
 // README.md, "Departures from METHOD.md"). The standard form is unconditionally stable and
 // measured second order for p in space and time on the manufactured solution.
 // Pressure is kinematic (p / rho_f) [length^2/time^2]; forcing terms are accelerations.
-// The step is split in two so the immersed boundary can act between them:
-//   predict_momentum (u^n -> u~), [IB forcing on velocity_star], project_smac (u* -> u^{n+1}).
+// The step is split so the immersed boundary can act between the stages:
+//   predict_explicit (u^n -> u~_e), [IB forcing of u~_e], complete_prediction (-> u~ with the
+//   force in the Crank-Nicolson solve), project_smac (u* -> u^{n+1}); or, with the forcing after
+//   the implicit solve, predict_momentum (u^n -> u~), [IB forcing of u~], project_smac.
 #pragma once
 #include <memory>
 #include <vector>
@@ -61,6 +63,15 @@ class FluidSolver {
   // Only the ghost layers of `state` are written (they are scratch).
   void predict_momentum(FluidState& state, double dt, const CellField* force_x,
                         const CellField* force_y);
+
+  // The same prediction in two halves, so that the immersed boundary can force the explicit
+  // estimate and its force enter the implicit solve (Uhlmann 2005 steps 1-5, METHOD.md §3.1):
+  //   predict_explicit: velocity_star = u~_e = u^n + dt (-N_ext + nu L u^n - G_c p^n);
+  //   [the caller adds dt f to velocity_star];
+  //   complete_prediction: velocity_star = (I - nu dt L/2)^-1 (velocity_star - nu dt L u^n / 2 + walls),
+  // i.e. u~ of predict_momentum with f. predict_momentum(f) is exactly these two calls.
+  void predict_explicit(FluidState& state, double dt);
+  void complete_prediction(FluidState& state, double dt);
 
   // The predicted velocity, to be forced by the immersed boundary before projection.
   CellField& velocity_star_x() { return star_x_; }

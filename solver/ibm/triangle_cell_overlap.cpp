@@ -65,10 +65,53 @@ void add_triangle_cell_overlaps(const Grid& grid, const std::array<double, 2>& a
   int j1 = static_cast<int>(std::floor((y_max - grid.origin_y) / dy));
   if (!grid.periodic_x) { i0 = std::max(i0, 0); i1 = std::min(i1, grid.nx - 1); }
   if (!grid.periodic_y) { j0 = std::max(j0, 0); j1 = std::min(j1, grid.ny - 1); }
-  for (int j = j0; j <= j1; ++j)
-    for (int i = i0; i <= i1; ++i) {
+  for (int j = j0; j <= j1; ++j) {
+    // The triangle's x-extent within this row band [y_lo, y_hi]: the ends of its edges clipped
+    // to the band. Only the cells of that extent are visited (cost ~ overlapped cells, not bbox).
+    const double y_lo = grid.origin_y + j*dy, y_hi = y_lo + dy;
+    double row_min = HUGE_VAL, row_max = -HUGE_VAL;
+    for (int e = 0; e < 3; ++e) {
+      const auto& p = tri[e];
+      const auto& q = tri[(e + 1) % 3];
+      const double t_lo = p[1] == q[1] ? (p[1] >= y_lo && p[1] <= y_hi ? 0.0 : HUGE_VAL) : 0.0;
+      if (t_lo == HUGE_VAL) continue;
+      double s0 = 0.0, s1 = 1.0;  // parameter range of the edge inside the band
+      if (p[1] != q[1]) {
+        const double sa = (y_lo - p[1]) / (q[1] - p[1]), sb = (y_hi - p[1]) / (q[1] - p[1]);
+        s0 = std::max(s0, std::min(sa, sb));
+        s1 = std::min(s1, std::max(sa, sb));
+        if (s0 > s1) continue;
+      }
+      for (const double w : {s0, s1}) {
+        const double x = p[0] + w*(q[0] - p[0]);
+        row_min = std::min(row_min, x);
+        row_max = std::max(row_max, x);
+      }
+    }
+    if (!(row_min <= row_max)) continue;
+    int row_i0 = std::max(i0, static_cast<int>(std::floor((row_min - grid.origin_x) / dx)));
+    int row_i1 = std::min(i1, static_cast<int>(std::floor((row_max - grid.origin_x) / dx)));
+    for (int i = row_i0; i <= row_i1; ++i) {
       // The unwrapped cell square (periodic images are clipped where the triangle is).
       const double x0 = grid.origin_x + i*dx, y0 = grid.origin_y + j*dy;
+      // Quick classification by the four corners: outside one edge -> no overlap; inside all
+      // three -> the whole cell. Only cells the triangle's edges cross are clipped.
+      bool outside = false, inside = true;
+      for (int e = 0; e < 3 && !outside; ++e) {
+        const auto& p = tri[e];
+        const auto& q = tri[(e + 1) % 3];
+        const double ex = q[0] - p[0], ey = q[1] - p[1];
+        int n_inside = 0;
+        for (const double cx : {x0, x0 + dx})
+          for (const double cy : {y0, y0 + dy}) n_inside += ex*(cy - p[1]) - ey*(cx - p[0]) >= 0 ? 1 : 0;
+        outside = n_inside == 0;
+        inside = inside && n_inside == 4;
+      }
+      if (outside) continue;
+      if (inside) {
+        overlaps.push_back({wrap(i, grid.nx), wrap(j, grid.ny), dx*dy});
+        continue;
+      }
       SmallPolygon poly;
       poly.n = 4;
       poly.vertex[0] = {x0, y0};
@@ -80,6 +123,7 @@ void add_triangle_cell_overlaps(const Grid& grid, const std::array<double, 2>& a
       const double area = shoelace_area(poly);
       if (area > 0.0) overlaps.push_back({wrap(i, grid.nx), wrap(j, grid.ny), area});
     }
+  }
 }
 
 }  // namespace ibms

@@ -45,11 +45,23 @@ std::string toml_string(const std::string& text) {
 
 void append_body(std::string& out, const BodySpec& body) {
   out += "\n[[bodies]]\n";
+  out += fmt::format("kind = {}\n", toml_string(body.kind));
   out += fmt::format("centre = {}\n", toml_pair(body.centre));
   out += fmt::format("velocity = {}\n", toml_pair(body.velocity));
+  out += fmt::format("angular_velocity = {}\n", toml_float(body.angular_velocity));
   out += fmt::format("diameter = {}\n", toml_float(body.diameter));
   out += fmt::format("n_surface_points = {}\n", body.n_surface_points);
+  out += fmt::format("reference_speed = {}\n", toml_float(body.reference_speed));
+  out += fmt::format("reference_length = {}\n", toml_float(body.reference_length));
+  if (body.kind == "prescribed") {
+    out += fmt::format("oscillation_amplitude = {}\n", toml_pair(body.oscillation_amplitude));
+    out += fmt::format("angle_amplitude = {}\n", toml_float(body.angle_amplitude));
+    out += fmt::format("oscillation_period = {}\n", toml_float(body.oscillation_period));
+    out += fmt::format("oscillation_phase = {}\n", toml_float(body.oscillation_phase));
+    return;
+  }
   out += fmt::format("density = {}\n", toml_float(body.density));
+  if (body.kind == "rigid") return;
   out += fmt::format("spring_stiffness = {}\n", toml_float(body.spring_stiffness));
   if (body.spring_damping >= 0.0) out += fmt::format("spring_damping = {}\n", toml_float(body.spring_damping));
   else out += "# spring_damping not set: derived from restitution_coefficient\n";
@@ -107,6 +119,7 @@ std::string resolved_scene_toml(const Scene& scene) {
   out += "\n[ibm]\n";
   out += fmt::format("kernel = {}\n", toml_string(ibm.kernel));
   out += fmt::format("forcing_passes = {}\n", ibm.forcing_passes);
+  out += fmt::format("forcing_stage = {}\n", toml_string(ibm.forcing_stage));
   out += fmt::format("inner_fluid_inertia = {}\n", toml_string(ibm.inner_fluid_inertia));
   out += fmt::format("sub_markers = {}\n", toml_bool(ibm.sub_markers));
 

@@ -45,6 +45,10 @@ struct WallsSpec {
 struct IbmSpec {
   std::string kernel = "roma3";      // roma3 | peskin4 | cosine4 | bkp6
   int forcing_passes = 1;            // multi-direct forcing passes [-]
+  // Which velocity the markers force: "explicit_estimate" (Uhlmann 2005: the explicit estimate
+  // u^n + dt(-N + nu L u^n - G p^n), the force then enters the Crank-Nicolson solve) or
+  // "implicit_prediction" (the Crank-Nicolson prediction, force added after it; ibms 0.1).
+  std::string forcing_stage = "explicit_estimate";
   std::string inner_fluid_inertia = "kempe";  // kempe (variant K) | none (variant A, papers' literal form)
   bool sub_markers = false;          // extra IB markers when marker spacing exceeds the cell size
 };
@@ -56,12 +60,28 @@ struct SwellingSpec {
   double max_diameter = 0.0;         // swelling stops at this diameter [length]
 };
 
+// A body of one of three kinds (DESIGN.md §11), chosen by `kind`:
+//  mass_spring  the papers' deformable wheel (springs, swelling, sub-steps);
+//  rigid        Newton-Euler translation and rotation of a rigid ring of Lagrangian points;
+//  prescribed   centre X(t) = X0 + V t + A sin(2 pi t / T + phase), angle
+//               theta(t) = Omega t + Theta sin(2 pi t / T + phase); the fluid is forced to it.
+// scene/scene_reader.cpp rejects keys that do not belong to the kind (scene_schema.hpp).
 struct BodySpec {
+  std::string kind = "mass_spring";  // mass_spring | rigid | prescribed
   std::array<double, 2> centre{0.0, 0.0};          // [length]
-  std::array<double, 2> velocity{0.0, 0.0};        // initial velocity [length/time]
+  std::array<double, 2> velocity{0.0, 0.0};        // initial (prescribed: constant) velocity [length/time]
+  double angular_velocity = 0.0;     // initial (prescribed: constant) rotation rate, counter-clockwise [1/time]
   double diameter = 0.0;             // D0 [length]
   int n_surface_points = 0;          // N_l [-]
-  double density = 0.0;              // rho_s [mass/length^3]
+  double density = 0.0;              // rho_s [mass/length^3] (prescribed: not used, 0)
+  // Prescribed oscillation (kind = prescribed only): amplitudes of position and angle, period, phase.
+  std::array<double, 2> oscillation_amplitude{0.0, 0.0};  // A [length]
+  double angle_amplitude = 0.0;      // Theta [rad]
+  double oscillation_period = 0.0;   // T [time]; 0 = no oscillation
+  double oscillation_phase = 0.0;    // phase [rad]
+  // Drag and lift coefficients C = F / (rho_f U_ref^2 L_ref / 2) in the output when U_ref > 0.
+  double reference_speed = 0.0;      // U_ref [length/time]; 0 = no coefficients
+  double reference_length = 0.0;     // L_ref [length]; 0 = the diameter
   double spring_stiffness = 0.0;     // k_s [force/length^2 per unit depth]
   double spring_damping = -1.0;      // c_s [force time/length^2]; < 0: from restitution
   double restitution_coefficient = 1.0;  // e_s in (0, 1] [-], used when spring_damping < 0
@@ -101,6 +121,11 @@ struct Scene {
   OutputSpec output;
 
   bool has_bodies() const { return !bodies.empty(); }
+  bool has_kind(const std::string& kind) const {
+    for (const BodySpec& b : bodies)
+      if (b.kind == kind) return true;
+    return false;
+  }
 };
 
 }  // namespace ibms

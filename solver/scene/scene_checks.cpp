@@ -80,7 +80,14 @@ void check_bodies(const Scene& scene, const SceneDiagnostics& diagnostics) {
       const double dy = separation(body.centre[1], neighbour.centre[1], domain.length_y, domain.periodic_y);
       const double distance = std::hypot(dx, dy);
       const double contact_distance = 0.5 * (body.diameter + neighbour.diameter);
-      if (distance < contact_distance) {
+      // Prescribed bodies may overlap each other, and a body may lie wholly inside a prescribed
+      // one (a container such as the outer cylinder of circular Couette flow): neither is moved by
+      // the other. Any other overlap is an error.
+      const bool both_prescribed = body.kind == "prescribed" && neighbour.kind == "prescribed";
+      const double r_body = 0.5 * body.diameter, r_neighbour = 0.5 * neighbour.diameter;
+      const bool nested = (neighbour.kind == "prescribed" && distance + r_body < r_neighbour) ||
+                          (body.kind == "prescribed" && distance + r_neighbour < r_body);
+      if (distance < contact_distance && !both_prescribed && !nested) {
         diagnostics.fail(fmt::format("bodies.{}.centre", b),
                          fmt::format("body {} overlaps body {}: centre distance {} < sum of radii {}",
                                      b, other, distance, contact_distance));

@@ -68,6 +68,7 @@ void read_ibm(const TomlTableReader& table, IbmSpec& ibm) {
   table.reject_unknown_keys(schema::ibm_keys);
   table.read_choice("kernel", ibm.kernel, schema::kernel_choices);
   table.read_integer("forcing_passes", ibm.forcing_passes, Need::optional, /*lower=*/1);
+  table.read_choice("forcing_stage", ibm.forcing_stage, schema::forcing_stage_choices);
   table.read_choice("inner_fluid_inertia", ibm.inner_fluid_inertia,
                     schema::inner_fluid_inertia_choices);
   table.read_bool("sub_markers", ibm.sub_markers);
@@ -88,11 +89,28 @@ void read_swelling(const TomlTableReader& table, double diameter, SwellingSpec& 
 
 void read_body(const TomlTableReader& table, BodySpec& body) {
   table.reject_unknown_keys(schema::body_keys);
+  table.read_choice("kind", body.kind, schema::body_kind_choices);
+  table.reject_keys_outside(schema::keys_of_body_kind(body.kind), fmt::format("a body of kind '{}'", body.kind));
   table.read_pair("centre", body.centre, Need::required);
   table.read_pair("velocity", body.velocity, Need::optional);
+  table.read_real("angular_velocity", body.angular_velocity, Need::optional, any_finite);
   table.read_real("diameter", body.diameter, Need::required, positive);
   table.read_integer("n_surface_points", body.n_surface_points, Need::required, /*lower=*/3);
+  table.read_real("reference_speed", body.reference_speed, Need::optional, non_negative);
+  table.read_real("reference_length", body.reference_length, Need::optional, non_negative);
+  if (body.kind == "prescribed") {
+    table.read_pair("oscillation_amplitude", body.oscillation_amplitude, Need::optional);
+    table.read_real("angle_amplitude", body.angle_amplitude, Need::optional, any_finite);
+    table.read_real("oscillation_period", body.oscillation_period, Need::optional, non_negative);
+    table.read_real("oscillation_phase", body.oscillation_phase, Need::optional, any_finite);
+    const bool oscillates = body.oscillation_amplitude[0] != 0.0 || body.oscillation_amplitude[1] != 0.0 ||
+                            body.angle_amplitude != 0.0;
+    if (oscillates && !(body.oscillation_period > 0.0))
+      table.fail("oscillation_period", "must be > 0 when an oscillation amplitude is given");
+    return;
+  }
   table.read_real("density", body.density, Need::required, positive);
+  if (body.kind == "rigid") return;
   table.read_real("spring_stiffness", body.spring_stiffness, Need::required, positive);
   table.read_real("spring_damping", body.spring_damping, Need::optional, non_negative);
   table.read_real("restitution_coefficient", body.restitution_coefficient, Need::optional,

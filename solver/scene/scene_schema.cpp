@@ -16,6 +16,13 @@ std::span<const std::string_view> keys_of_section(std::string_view section) {
   return {};
 }
 
+std::span<const std::string_view> keys_of_body_kind(std::string_view kind) {
+  if (kind == "mass_spring") return mass_spring_body_keys;
+  if (kind == "rigid") return rigid_body_keys;
+  if (kind == "prescribed") return prescribed_body_keys;
+  return {};
+}
+
 namespace {
 
 // Edit distance (insertions, deletions, substitutions), O(|a| |b|) with one row.

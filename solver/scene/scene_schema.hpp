@@ -19,12 +19,29 @@ inline constexpr std::string_view domain_keys[] = {"length_x", "length_y",   "ce
 inline constexpr std::string_view fluid_keys[] = {"density", "kinematic_viscosity", "gravity"};
 inline constexpr std::string_view wall_names[] = {"left", "right", "bottom", "top"};
 inline constexpr std::string_view wall_keys[] = {"speed", "stop_time"};
-inline constexpr std::string_view ibm_keys[] = {"kernel", "forcing_passes", "inner_fluid_inertia",
-                                                "sub_markers"};
+inline constexpr std::string_view ibm_keys[] = {"kernel", "forcing_passes", "forcing_stage",
+                                                "inner_fluid_inertia", "sub_markers"};
+inline constexpr std::string_view forcing_stage_choices[] = {"explicit_estimate", "implicit_prediction"};
 inline constexpr std::string_view body_keys[] = {
-    "centre",        "velocity",       "diameter",      "n_surface_points",
-    "density",       "spring_stiffness", "spring_damping", "restitution_coefficient",
-    "cross_springs", "mass_lumping",   "swelling"};
+    "kind",          "centre",           "velocity",       "angular_velocity",
+    "diameter",      "n_surface_points", "density",        "spring_stiffness",
+    "spring_damping", "restitution_coefficient", "cross_springs", "mass_lumping",
+    "swelling",      "oscillation_amplitude", "angle_amplitude", "oscillation_period",
+    "oscillation_phase", "reference_speed", "reference_length"};
+// The keys each body kind accepts (a subset of body_keys); any other key is an error naming the kind.
+inline constexpr std::string_view body_kind_choices[] = {"mass_spring", "rigid", "prescribed"};
+inline constexpr std::string_view mass_spring_body_keys[] = {
+    "kind",          "centre",           "velocity",       "angular_velocity",
+    "diameter",      "n_surface_points", "density",        "spring_stiffness",
+    "spring_damping", "restitution_coefficient", "cross_springs", "mass_lumping",
+    "swelling",      "reference_speed",  "reference_length"};
+inline constexpr std::string_view rigid_body_keys[] = {
+    "kind", "centre", "velocity", "angular_velocity", "diameter", "n_surface_points", "density",
+    "reference_speed", "reference_length"};
+inline constexpr std::string_view prescribed_body_keys[] = {
+    "kind", "centre", "velocity", "angular_velocity", "diameter", "n_surface_points",
+    "oscillation_amplitude", "angle_amplitude", "oscillation_period", "oscillation_phase",
+    "reference_speed", "reference_length"};
 inline constexpr std::string_view swelling_keys[] = {"onset_time", "rate", "max_diameter"};
 inline constexpr std::string_view contact_keys[] = {"stiffness", "restitution_coefficient",
                                                     "cds_radius", "cds_radius_fraction", "walls"};
@@ -34,6 +51,9 @@ inline constexpr std::string_view output_keys[] = {"file", "series_every", "snap
 inline constexpr std::string_view kernel_choices[] = {"roma3", "peskin4", "cosine4", "bkp6"};
 inline constexpr std::string_view inner_fluid_inertia_choices[] = {"kempe", "none"};
 inline constexpr std::string_view mass_lumping_choices[] = {"equal", "uniform_disk"};
+
+// Keys a body of this kind accepts (empty for an unknown kind).
+std::span<const std::string_view> keys_of_body_kind(std::string_view kind);
 
 // Keys of a plain section (run, domain, fluid, ibm, contact, output); empty for walls/bodies.
 std::span<const std::string_view> keys_of_section(std::string_view section);

@@ -78,6 +78,20 @@ void TomlTableReader::reject_unknown_keys(std::span<const std::string_view> allo
   }
 }
 
+void TomlTableReader::reject_keys_outside(std::span<const std::string_view> allowed,
+                                          std::string_view owner) const {
+  if (table_ == nullptr) return;
+  for (auto&& [key, node] : *table_) {
+    const std::string_view name = key.str();
+    bool known = false;
+    for (const std::string_view candidate : allowed) known = known || candidate == name;
+    if (!known)
+      diagnostics_->fail_at(key.source(), key_path(name),
+                            fmt::format("does not belong to {} (its keys: {})", owner,
+                                        scene_schema::join_names(allowed)));
+  }
+}
+
 const toml::node* TomlTableReader::find(std::string_view key, Need need) const {
   const toml::node* node = table_ == nullptr ? nullptr : table_->get(key);
   if (node == nullptr) {

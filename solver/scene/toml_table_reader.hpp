@@ -51,6 +51,9 @@ class TomlTableReader {
 
   // Every key of the table must be in `allowed`; otherwise an error with a close match.
   void reject_unknown_keys(std::span<const std::string_view> allowed) const;
+  // Every key must be in `allowed`, the keys of `owner` (e.g. "a body of kind 'rigid'"); a known
+  // key of another variant fails with "does not belong to <owner> (its keys: ...)".
+  void reject_keys_outside(std::span<const std::string_view> allowed, std::string_view owner) const;
 
   // Each read leaves `out` unchanged when the key is absent and optional; returns presence.
   bool read_real(std::string_view key, double& out, Need need, const Bounds& bounds) const;

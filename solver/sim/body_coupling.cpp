@@ -160,4 +160,21 @@ void compute_fluid_reaction(double fluid_density, std::vector<BodyCoupling>& cou
   }
 }
 
+void compute_hydrodynamic_loads(const std::vector<MassSpringBody>& bodies, std::vector<BodyCoupling>& coupling) {
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    const MassSpringBody& body = bodies[b];
+    BodyCoupling& c = coupling[b];
+    const Vec2& x_c = body.position[body.centre_index()];
+    Vec2 force{0.0, 0.0};
+    double torque = c.inner_fluid_torque;
+    for (int p = 0; p < body.n_points(); ++p) {
+      const Vec2& f = c.fluid_force[p];
+      for (int d = 0; d < 2; ++d) force[d] += f[d] + c.inner_fluid_force[p][d];
+      torque += (body.position[p][0] - x_c[0]) * f[1] - (body.position[p][1] - x_c[1]) * f[0];
+    }
+    c.hydrodynamic_force = force;
+    c.hydrodynamic_torque = torque;
+  }
+}
+
 }  // namespace ibms

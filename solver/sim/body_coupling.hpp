@@ -45,6 +45,18 @@ struct BodyCoupling {
   // I_T = sum alpha_T u h^2 from the previous step (region X^{n-1}, velocity u^n).
   std::vector<std::vector<CellOverlap>> triangle_cells;
   std::vector<Vec2> triangle_momentum;     // [length^3/time per unit depth]
+  // Angular momentum of the inner fluid, sum_T sum_ij alpha_T (x_ij - X_ref) x u_ij h^2, about the
+  // centre point X_ref at the time it was sampled [length^4/time per unit depth], and the torque
+  // rho_f dL/dt about the centre X_c^n that it gives (variant K; 0 for variant A) [force].
+  double inner_angular_momentum = 0.0;
+  Vec2 inner_reference_centre{0.0, 0.0};   // X_ref [length]
+  double inner_fluid_torque = 0.0;
+  // What the fluid does to the body this step (issue 10 item 2): the IB reaction plus the inner-fluid
+  // term, F = sum_p F_f,p + rho_f dI/dt [force/length], and its torque about the centre point X_c^n,
+  // T = sum_p (X_p - X_c) x F_f,p + rho_f dL/dt [force] (METHOD.md §1.7 eq. 1.7a). Buoyancy is not
+  // in it: gravity acts on the bodies only (§2.6), as the buoyancy-corrected weight.
+  Vec2 hydrodynamic_force{0.0, 0.0};
+  double hydrodynamic_torque = 0.0;
 
   // max_markers: capacity reserved once for the marker arrays, so that sub-markers added as the
   // body swells (up to 1.5x the nominal swollen edge) do not reallocate them within the step loop.
@@ -74,5 +86,9 @@ void apply_direct_forcing(const Grid& grid, KernelKind kernel, const WallVelocit
 // F_f = -rho_f forcing_sum_l dV_l of every marker, returned to the rim points of its edge with
 // weights (1 - w, w); 0 on the centre (METHOD.md §1.6, §3.6).
 void compute_fluid_reaction(double fluid_density, std::vector<BodyCoupling>& coupling);
+
+// hydrodynamic_force and hydrodynamic_torque of every body from its fluid reaction and inner-fluid
+// terms (call after compute_fluid_reaction and the inner-fluid inertia), at the positions X^n.
+void compute_hydrodynamic_loads(const std::vector<MassSpringBody>& bodies, std::vector<BodyCoupling>& coupling);
 
 }  // namespace ibms

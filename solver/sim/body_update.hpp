@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "sim/body_coupling.hpp"
+#include "solid/rigid_motion.hpp"
 
 namespace ibms {
 
@@ -38,10 +39,15 @@ struct SolidStepInputs {
   int fixed_substeps = 0;            // > 0: exactly this many sub-steps, no stability bound (stability studies)
 };
 
-// Advances all bodies from t^n to t^n + dt; returns the number of sub-steps taken.
-// contact_work is scratch (resized once).
+// Advances all bodies from t^n to t^n + dt; returns the number of sub-steps taken. Each sub-step
+// moves each body by its kind (DESIGN.md §11): mass_spring by symplectic Euler of its points;
+// rigid by Newton-Euler with the total hydrodynamic force and torque (frozen over the step),
+// the contact forces summed to force and torque about X_c, and m (1 - rho_f/rho_s) g; prescribed
+// to its scene motion at the sub-step's end. rigid[b] holds the motion of rigid and prescribed
+// bodies (unused for mass_spring). contact_work is scratch (resized once).
 int advance_bodies(const SolidStepInputs& in, const std::vector<SwellingSchedule>& swelling,
                    const ContactForces& contact_forces, std::vector<BodyCoupling>& coupling,
-                   std::vector<std::vector<Vec2>>& contact_work, std::vector<MassSpringBody>& bodies);
+                   std::vector<std::vector<Vec2>>& contact_work, std::vector<RigidBody>& rigid,
+                   std::vector<MassSpringBody>& bodies);
 
 }  // namespace ibms

@@ -1,6 +1,7 @@
 // Inner-fluid inertia, METHOD.md §1.7 variant K (Reynolds-transport form) and variant A.
 #include "sim/inner_fluid_inertia.hpp"
 
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -15,6 +16,25 @@ Vec2 triangle_momentum(const std::vector<CellOverlap>& cells, const FluidState& 
     momentum[1] += o.area * fluid.velocity_y(o.i, o.j);
   }
   return momentum;
+}
+
+// Offset of a cell centre from `centre` along one direction, the nearest periodic image.
+double offset_from(double cell_centre, double centre, double length, bool periodic) {
+  double r = cell_centre - centre;
+  if (periodic) r -= length * std::round(r / length);
+  return r;
+}
+
+// sum over the triangle's cells of area (x_ij - centre) x u_ij [length^4/time per unit depth].
+double triangle_angular_momentum(const Grid& grid, const std::vector<CellOverlap>& cells,
+                                 const FluidState& fluid, const Vec2& centre) {
+  double moment = 0.0;
+  for (const CellOverlap& o : cells) {
+    const double rx = offset_from(grid.x_centre(o.i), centre[0], grid.length_x, grid.periodic_x);
+    const double ry = offset_from(grid.y_centre(o.j), centre[1], grid.length_y, grid.periodic_y);
+    moment += o.area * (rx * fluid.velocity_y(o.i, o.j) - ry * fluid.velocity_x(o.i, o.j));
+  }
+  return moment;
 }
 
 // Cells of each fan triangle (c, l, l+1) at the body's current positions.
@@ -33,9 +53,15 @@ void sample_inner_fluid_momentum(const Grid& grid, const FluidState& fluid,
                                  const std::vector<MassSpringBody>& bodies,
                                  std::vector<BodyCoupling>& coupling) {
   for (std::size_t b = 0; b < bodies.size(); ++b) {
-    locate_triangles(grid, bodies[b], coupling[b]);
-    for (int l = 0; l < bodies[b].n_surface; ++l)
-      coupling[b].triangle_momentum[l] = triangle_momentum(coupling[b].triangle_cells[l], fluid);
+    BodyCoupling& c = coupling[b];
+    locate_triangles(grid, bodies[b], c);
+    c.inner_reference_centre = bodies[b].position[bodies[b].centre_index()];
+    c.inner_angular_momentum = 0.0;
+    for (int l = 0; l < bodies[b].n_surface; ++l) {
+      c.triangle_momentum[l] = triangle_momentum(c.triangle_cells[l], fluid);
+      c.inner_angular_momentum +=
+          triangle_angular_momentum(grid, c.triangle_cells[l], fluid, c.inner_reference_centre);
+    }
   }
 }
 
@@ -47,8 +73,19 @@ void kempe_inner_fluid_inertia(const Grid& grid, double fluid_density, const Flu
     BodyCoupling& c = coupling[b];
     locate_triangles(grid, body, c);  // region at X^n
     for (Vec2& f : c.inner_fluid_force) f = {0.0, 0.0};
+    // Torque about the centre X_c^n held fixed over the step: rho_f (L^{n+1} - L^n) / dt with both
+    // moments about X_c^n; the stored L^n is about X_ref = X_c^{n-1}, and moving the point by
+    // dX = X_c^n - X_ref changes it by -dX x I^n (I^n = sum_T I_T of the stored triangles).
+    const Vec2& x_c = body.position[body.centre_index()];
+    Vec2 momentum_n{0.0, 0.0};
+    for (const Vec2& m : c.triangle_momentum)
+      for (int d = 0; d < 2; ++d) momentum_n[d] += m[d];
+    const double shift_x = x_c[0] - c.inner_reference_centre[0], shift_y = x_c[1] - c.inner_reference_centre[1];
+    const double angular_n = c.inner_angular_momentum - (shift_x * momentum_n[1] - shift_y * momentum_n[0]);
+    double angular_np1 = 0.0;
     for (int l = 0; l < body.n_surface; ++l) {
       const Vec2 momentum_np1 = triangle_momentum(c.triangle_cells[l], fluid);  // I_T(X^n, u^{n+1})
+      angular_np1 += triangle_angular_momentum(grid, c.triangle_cells[l], fluid, x_c);
       // METHOD.md §1.7 step 3 (Reynolds-transport form) and step 4 (a third to each vertex).
       const int vertex[3] = {body.centre_index(), l, (l + 1) % body.n_surface};
       for (int d = 0; d < 2; ++d) {
@@ -57,13 +94,18 @@ void kempe_inner_fluid_inertia(const Grid& grid, double fluid_density, const Flu
       }
       c.triangle_momentum[l] = momentum_np1;
     }
+    c.inner_fluid_torque = fluid_density * (angular_np1 - angular_n) / dt;
+    c.inner_angular_momentum = angular_np1;
+    c.inner_reference_centre = x_c;
   }
 }
 
 void no_inner_fluid_inertia(const Grid&, double, const FluidState&, const std::vector<MassSpringBody>&, double,
                             std::vector<BodyCoupling>& coupling) {
-  for (BodyCoupling& c : coupling)
+  for (BodyCoupling& c : coupling) {
     for (Vec2& f : c.inner_fluid_force) f = {0.0, 0.0};
+    c.inner_fluid_torque = 0.0;
+  }
 }
 
 InnerFluidInertia inner_fluid_inertia_from_name(const std::string& name) {

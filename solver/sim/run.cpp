@@ -51,8 +51,10 @@ void write_body_table(const std::string& h5_path, const Simulation& sim, const B
   if (table.headers.empty()) return;
   const std::filesystem::path base = std::filesystem::path(h5_path).replace_extension("");
   write_csv(base.string() + "_bodies.csv",
-            {"ibms body series: per body centroid of the rim polygon, centre-of-mass velocity, diameter D(t),",
-             "rim-polygon area, spring energy, sub-steps of the step; source scene: " + sim.scene().source_file},
+            {"ibms body series: per body centroid of the rim polygon, centre-of-mass velocity, (rigid and",
+             "prescribed: angle, angular velocity), hydrodynamic force and torque about the centre (drag and lift",
+             "coefficients when the body has a reference_speed), diameter D(t), rim-polygon area, spring energy,",
+             "sub-steps of the step; source scene: " + sim.scene().source_file},
             table.headers, table.columns);
 }
 
@@ -93,14 +95,35 @@ std::vector<SeriesValue> body_series(const Simulation& sim) {
     const MassSpringBody& body = sim.bodies()[b];
     const std::string name = body_name(b);
     const auto c = centroid(body);
-    std::array<double, 2> momentum{0.0, 0.0};
-    for (int p = 0; p < body.n_points(); ++p)
-      for (int d = 0; d < 2; ++d) momentum[d] += body.mass[p] * body.velocity[p][d];
-    const double mass = body.total_mass();
+    std::array<double, 2> velocity{0.0, 0.0};  // centre-of-mass velocity (rigid motion: V)
+    if (body.kind == BodyKind::mass_spring) {
+      for (int p = 0; p < body.n_points(); ++p)
+        for (int d = 0; d < 2; ++d) velocity[d] += body.mass[p] * body.velocity[p][d];
+      for (double& v : velocity) v /= body.total_mass();
+    } else {
+      velocity = sim.rigid()[b].state.velocity;
+    }
     row.push_back({name + "/centroid_x", "length", c[0]});
     row.push_back({name + "/centroid_y", "length", c[1]});
-    row.push_back({name + "/velocity_x", "length/time", momentum[0] / mass});
-    row.push_back({name + "/velocity_y", "length/time", momentum[1] / mass});
+    row.push_back({name + "/velocity_x", "length/time", velocity[0]});
+    row.push_back({name + "/velocity_y", "length/time", velocity[1]});
+    if (body.kind != BodyKind::mass_spring) {
+      row.push_back({name + "/angle", "rad", sim.rigid()[b].state.angle});
+      row.push_back({name + "/angular_velocity", "1/time", sim.rigid()[b].state.angular_velocity});
+    }
+    // What the fluid does to the body in the step just taken (BodyCoupling::hydrodynamic_force).
+    const BodyCoupling& coupling = sim.coupling()[b];
+    row.push_back({name + "/force_x", "force per unit depth", coupling.hydrodynamic_force[0]});
+    row.push_back({name + "/force_y", "force per unit depth", coupling.hydrodynamic_force[1]});
+    row.push_back({name + "/torque", "force length per unit depth", coupling.hydrodynamic_torque});
+    const BodySpec& spec = sim.scene().bodies[b];
+    if (spec.reference_speed > 0.0) {
+      // C = F / (rho_f U_ref^2 L_ref / 2); drag along +x, lift along +y.
+      const double length = spec.reference_length > 0.0 ? spec.reference_length : spec.diameter;
+      const double scale = 0.5 * sim.fluid_density() * spec.reference_speed * spec.reference_speed * length;
+      row.push_back({name + "/drag_coefficient", "-", coupling.hydrodynamic_force[0] / scale});
+      row.push_back({name + "/lift_coefficient", "-", coupling.hydrodynamic_force[1] / scale});
+    }
     row.push_back({name + "/diameter", "length", body.diameter});
     row.push_back({name + "/area", "length^2 per unit depth", polygon_area(body)});
     row.push_back({name + "/deformation", "-", deformation_parameter(body)});

@@ -39,7 +39,9 @@ Simulation::Simulation(const Scene& scene)
     throw InputError(scene.source_file + ": domain: bodies need square cells (dx = dy), got dx = " +
                      std::to_string(grid_.dx()) + ", dy = " + std::to_string(grid_.dy()));
   for (const BodySpec& spec : scene.bodies) {
-    bodies_.push_back(build_wheel(spec));
+    bodies_.push_back(build_body(spec, scene.fluid.density));
+    rigid_.push_back(spec.kind == "mass_spring" ? RigidBody{} : rigid_body_from_spec(spec, bodies_.back()));
+    if (spec.kind != "mass_spring") place_points(rigid_.back(), bodies_.back());
     swelling_.emplace_back(spec.swelling, spec.diameter);
     const double largest = spec.swelling.enabled ? std::max(spec.diameter, spec.swelling.max_diameter) : spec.diameter;
     coupling_.emplace_back(bodies_.back(), scene.ibm.sub_markers
@@ -65,6 +67,12 @@ Simulation::Simulation(const Scene& scene)
     sample_inner_fluid_momentum(grid_, fluid_, bodies_, coupling_);
 }
 
+bool Simulation::contact_possible(double dt) const {
+  if (!has_contacts()) return false;
+  const double gravity = std::hypot(scene_.fluid.gravity[0], scene_.fluid.gravity[1]);
+  return contact_possible_within(contact_model_, bodies_, contact_box_, dt, gravity);
+}
+
 std::vector<std::string> Simulation::stage_names() const {
   std::vector<std::string> stages;
   if (has_bodies()) stages.push_back("schedules (wall velocities, swelling)");
@@ -72,7 +80,10 @@ std::vector<std::string> Simulation::stage_names() const {
   stages.push_back("predictor (AB2 convection, Crank-Nicolson diffusion by DST Helmholtz)");
   if (has_bodies())
     stages.push_back("immersed-boundary forcing (" + scene_.ibm.kernel + ", " + std::to_string(scene_.ibm.forcing_passes) +
-                     " pass(es); target = marker velocity minus swelling part)");
+                     " pass(es) on the " +
+                     (forces_explicit_estimate() ? "explicit estimate, force inside the Crank-Nicolson solve"
+                                                 : "Crank-Nicolson prediction") +
+                     "; target = marker velocity minus swelling part)");
   stages.push_back("projection (momentum interpolation, DCT/FFT Poisson)");
   if (has_bodies()) {
     stages.push_back("fluid reaction on the rim points");

@@ -18,6 +18,7 @@
 #include "sim/inner_fluid_inertia.hpp"
 #include "sim/stage_timers.hpp"
 #include "solid/mass_spring_body.hpp"
+#include "solid/rigid_motion.hpp"
 #include "solid/swelling_schedule.hpp"
 
 namespace ibms {
@@ -36,6 +37,8 @@ class Simulation {
   double fluid_density() const { return scene_.fluid.density; }
 
   bool has_bodies() const { return scene_.has_bodies(); }
+  // ibm.forcing_stage: the markers force the explicit estimate (Uhlmann 2005) or the CN prediction.
+  bool forces_explicit_estimate() const { return scene_.ibm.forcing_stage == "explicit_estimate"; }
   // Names of the pipeline stages this scene runs, in order (`ibms info` prints them).
   std::vector<std::string> stage_names() const;
 
@@ -43,6 +46,9 @@ class Simulation {
   std::vector<MassSpringBody>& bodies() { return bodies_; }
   const std::vector<MassSpringBody>& bodies() const { return bodies_; }
   const std::vector<SwellingSchedule>& swelling() const { return swelling_; }
+  // Motion of the rigid and prescribed bodies (entry b unused for a mass_spring body).
+  std::vector<RigidBody>& rigid() { return rigid_; }
+  const std::vector<RigidBody>& rigid() const { return rigid_; }
   std::vector<BodyCoupling>& coupling() { return coupling_; }
   const std::vector<BodyCoupling>& coupling() const { return coupling_; }
   std::vector<std::vector<Vec2>>& contact_work() { return contact_work_; }
@@ -55,6 +61,9 @@ class Simulation {
   // DEM contacts (solver/contact), active when contact.stiffness > 0.
   bool has_contacts() const { return contact_model_.enabled(); }
   const ContactModel& contact_model() const { return contact_model_; }
+  // Whether a contact can be under way within the next step of length dt (contact/contact_model.hpp);
+  // false without contacts. Only then does the contact sub-step bound apply.
+  bool contact_possible(double dt) const;
   ContactStats last_contact_stats;  // merged over the sub-steps of the latest step
   long total_pair_checks = 0;       // CDS pairs examined by the pair search over the run [-]
   // Pair search runs only with contacts and two or more bodies (DESIGN.md §3: one body, no pair search).
@@ -76,6 +85,7 @@ class Simulation {
   KernelKind kernel_;
   std::vector<MassSpringBody> bodies_;
   std::vector<SwellingSchedule> swelling_;
+  std::vector<RigidBody> rigid_;
   std::vector<BodyCoupling> coupling_;
   std::vector<std::vector<Vec2>> contact_work_;
   ContactModel contact_model_;

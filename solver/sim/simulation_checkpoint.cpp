@@ -142,6 +142,14 @@ void write_simulation_checkpoint(OutputFile& out, const Simulation& sim, double 
     arrays[prefix + "mass"] = body.mass;
     arrays[prefix + "diameter"] = {body.diameter};
     arrays[prefix + "triangle_momentum"] = interleaved(sim.coupling()[b].triangle_momentum);
+    const BodyCoupling& c = sim.coupling()[b];
+    arrays[prefix + "inner_angular_momentum"] = {c.inner_angular_momentum, c.inner_reference_centre[0],
+                                                 c.inner_reference_centre[1]};
+    if (body.kind != BodyKind::mass_spring) {
+      const RigidState& r = sim.rigid()[b].state;
+      arrays[prefix + "rigid_state"] = {r.centre[0], r.centre[1], r.angle, r.velocity[0], r.velocity[1],
+                                        r.angular_velocity};
+    }
   }
   // The FFTW planner state, one character code per value (optional on reading).
   const std::string wisdom = fft_planner_wisdom();
@@ -197,6 +205,14 @@ double restore_simulation(const Checkpoint& checkpoint, const std::string& path,
     read.into(prefix + "mass", body.mass);
     body.diameter = read.array(prefix + "diameter", 1)[0];
     read.into(prefix + "triangle_momentum", sim.coupling()[b].triangle_momentum);
+    BodyCoupling& c = sim.coupling()[b];
+    const std::vector<double> angular = read.array(prefix + "inner_angular_momentum", 3);
+    c.inner_angular_momentum = angular[0];
+    c.inner_reference_centre = {angular[1], angular[2]};
+    if (body.kind != BodyKind::mass_spring) {
+      const std::vector<double> r = read.array(prefix + "rigid_state", 6);
+      sim.rigid()[b].state = {{r[0], r[1]}, r[2], {r[3], r[4]}, r[5]};
+    }
   }
   return next_snapshot_time;
 }

@@ -6,7 +6,9 @@
 //   arrays:  fluid_* u, v, p (kinematic), the AB2 history N^{n-1} (x, y), with ghost layers;
 //            face velocities U_f, V_f;
 //            body_NNN_* position, velocity (x, y interleaved), mass, diameter (the swelling phase:
-//            natural lengths are L0_ij D/D0), triangle_momentum (variant K's I_T of the last step);
+//            natural lengths are L0_ij D/D0), triangle_momentum (variant K's I_T of the last step),
+//            inner_angular_momentum (L, X_ref x, y), rigid_state (rigid and prescribed bodies:
+//            X_c x, y, theta, V x, y, Omega);
 //            fftw_wisdom (optional: FFTW's planner state as character codes; imported before the
 //            restarted run makes its plans, so that it uses the same transforms)
 // Everything else is recomputed each step from these (markers, weights, forcing targets,
@@ -22,7 +24,7 @@
 namespace ibms {
 
 // Bumped whenever the meaning or the set of stored names changes; a reader refuses others.
-inline constexpr int checkpoint_format_version = 1;
+inline constexpr int checkpoint_format_version = 2;  // 2: rigid_state, inner_angular_momentum
 
 // Replaces /checkpoint of `out` with the state of `sim`; next_snapshot_time is the run loop's.
 void write_simulation_checkpoint(OutputFile& out, const Simulation& sim, double next_snapshot_time);

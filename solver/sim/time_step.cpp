@@ -14,15 +14,21 @@ void advance_one_step(Simulation& sim, double dt) {
     prepare_markers(sim.bodies(), sim.swelling(), time_n, fluid.time_step_prev, sim.grid(),
                     sim.scene().ibm.sub_markers, sim.coupling());  // X^n, dV_l, U_target, §1.8, §3.6
   }
-  {
-    auto t = timers.time(Stage::predictor);
-    sim.fluid_solver().predict_momentum(fluid, dt, nullptr, nullptr);  // u~, METHOD.md §2.3 step 1
-  }
-  if (sim.has_bodies()) {
+  const auto force_markers = [&](CellField& velocity_x, CellField& velocity_y) {
     auto t = timers.time(Stage::ib_forcing);
     apply_direct_forcing(sim.grid(), sim.kernel(), wall_velocities_at(sim.boundaries(), time_n), dt,
-                         sim.scene().ibm.forcing_passes, sim.coupling(), sim.fluid_solver().velocity_star_x(),
-                         sim.fluid_solver().velocity_star_y());  // F = (U_target - J u~)/dt, u~ += dt S F, §3.5
+                         sim.scene().ibm.forcing_passes, sim.coupling(), velocity_x,
+                         velocity_y);  // F = (U_target - J u)/dt, u += dt S F, §3.5
+  };
+  FluidSolver& solver = sim.fluid_solver();
+  if (sim.has_bodies() && sim.forces_explicit_estimate()) {
+    // Uhlmann (2005) steps 1-5: force the explicit estimate, the force enters the implicit solve.
+    { auto t = timers.time(Stage::predictor); solver.predict_explicit(fluid, dt); }  // u~_e
+    force_markers(solver.velocity_star_x(), solver.velocity_star_y());               // u~_e + dt f
+    { auto t = timers.time(Stage::predictor); solver.complete_prediction(fluid, dt); }  // u~ with f
+  } else {
+    { auto t = timers.time(Stage::predictor); solver.predict_momentum(fluid, dt, nullptr, nullptr); }  // u~, §2.3
+    if (sim.has_bodies()) force_markers(solver.velocity_star_x(), solver.velocity_star_y());  // u~ + dt f
   }
   {
     auto t = timers.time(Stage::projection);
@@ -33,12 +39,14 @@ void advance_one_step(Simulation& sim, double dt) {
     compute_fluid_reaction(sim.fluid_density(), sim.coupling());  // F_f,l = -rho_f sum F_l dV_l, §1.6
     sim.inner_fluid_inertia(sim.grid(), sim.fluid_density(), fluid, sim.bodies(), dt,
                             sim.coupling());  // F_int = rho_f dI/dt (variant K) or 0 (A), §1.7
+    compute_hydrodynamic_loads(sim.bodies(), sim.coupling());  // F, T of the fluid on each body (eq. 1.7a)
     sim.last_contact_stats = ContactStats{};
-    const double contact_limit = sim.has_contacts() ? contact_substep(sim.contact_model(), sim.bodies()) : HUGE_VAL;
+    // Contact sub-steps only while a contact is possible within this step (issue 10).
+    const double contact_limit = sim.contact_possible(dt) ? contact_substep(sim.contact_model(), sim.bodies()) : HUGE_VAL;
     sim.last_n_substeps = advance_bodies({time_n, dt, sim.fluid_density(), sim.scene().fluid.gravity, contact_limit,
                                           sim.fixed_solid_substeps},
                                          sim.swelling(), sim.contact_forces, sim.coupling(), sim.contact_work(),
-                                         sim.bodies());  // n_sub symplectic Euler sub-steps, §5.3
+                                         sim.rigid(), sim.bodies());  // sub-steps by body kind, §5.3
     sim.total_substeps += sim.last_n_substeps;
   }
 }

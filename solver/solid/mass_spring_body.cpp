@@ -85,6 +85,39 @@ MassSpringBody build_wheel(const BodySpec& spec) {
   return body;
 }
 
+BodyKind body_kind_from_name(const std::string& name) {
+  if (name == "mass_spring") return BodyKind::mass_spring;
+  if (name == "rigid") return BodyKind::rigid;
+  if (name == "prescribed") return BodyKind::prescribed;
+  throw std::invalid_argument("unknown body kind '" + name + "' (mass_spring | rigid | prescribed)");
+}
+
+const char* body_kind_name(BodyKind kind) {
+  switch (kind) {
+    case BodyKind::mass_spring: return "mass_spring";
+    case BodyKind::rigid: return "rigid";
+    case BodyKind::prescribed: return "prescribed";
+  }
+  return "?";
+}
+
+MassSpringBody build_body(const BodySpec& spec, double fluid_density) {
+  const BodyKind kind = body_kind_from_name(spec.kind);
+  BodySpec point_set = spec;
+  if (kind == BodyKind::prescribed) point_set.density = fluid_density;
+  if (kind != BodyKind::mass_spring) point_set.spring_stiffness = 0.0;
+  MassSpringBody body = build_wheel(point_set);
+  body.kind = kind;
+  if (kind != BodyKind::mass_spring) body.springs.clear();
+  // Initial rotation about the centre: U_i = V + Omega e_z x (x_i - X_c).
+  const auto& centre = body.position[body.centre_index()];
+  for (int p = 0; p < body.n_points(); ++p) {
+    body.velocity[p][0] -= spec.angular_velocity * (body.position[p][1] - centre[1]);
+    body.velocity[p][1] += spec.angular_velocity * (body.position[p][0] - centre[0]);
+  }
+  return body;
+}
+
 double polygon_area(const MassSpringBody& body) {
   // Shoelace formula over the rim, A = (1/2) sum (x_l y_{l+1} - x_{l+1} y_l).
   double twice_area = 0.0;

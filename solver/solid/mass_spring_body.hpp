@@ -5,6 +5,7 @@
 // [force/length^2], energies [energy/length]. Knows nothing about the grid.
 #pragma once
 #include <array>
+#include <string>
 #include <vector>
 
 #include "scene/scene.hpp"
@@ -19,7 +20,15 @@ struct Spring {
   double natural_length0 = 0.0;  // L0_ij at the initial diameter D0 [length]
 };
 
+// What moves the points (DESIGN.md §11): springs (the papers' model), one rigid motion from
+// Newton-Euler, or a motion given by the scene (solid/rigid_motion.hpp). Rigid and prescribed
+// bodies carry no springs; a prescribed body is infinitely heavy for contacts.
+enum class BodyKind { mass_spring, rigid, prescribed };
+BodyKind body_kind_from_name(const std::string& name);  // scene names (std::invalid_argument if unknown)
+const char* body_kind_name(BodyKind kind);
+
 struct MassSpringBody {
+  BodyKind kind = BodyKind::mass_spring;
   std::vector<std::array<double, 2>> position;  // x_i [length]; rim 0..n_surface-1, centre n_surface
   std::vector<std::array<double, 2>> velocity;  // U_i [length/time]
   std::vector<double> mass;                     // M_i [mass/length] = density * solid_area() * mass_fraction_i
@@ -47,6 +56,12 @@ struct MassSpringBody {
 // the rim. Dashpots: spec.spring_damping if >= 0, else from the restitution coefficient with
 // the pair effective mass m_i m_j / (m_i + m_j) (= M/2 for equal masses; §1.5, A8).
 MassSpringBody build_wheel(const BodySpec& spec);
+
+// The point set of a body of any kind: build_wheel for mass_spring (with the initial rotation
+// angular_velocity added to the point velocities); for rigid and prescribed bodies the same rim and
+// centre without springs. A prescribed body has no density of its own: its point masses are those
+// of the displaced fluid (fluid_density), used only as weights (centre of mass).
+MassSpringBody build_body(const BodySpec& spec, double fluid_density);
 
 // Geometry and energies. polygon_area: signed (counter-clockwise > 0) shoelace area of the rim
 // [length^2]; centroid: area centroid of that polygon [length]; centre_of_mass of all points.

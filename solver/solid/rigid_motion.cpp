@@ -1,0 +1,64 @@
+// Rigid and prescribed body kinematics (see rigid_motion.hpp).
+#include "solid/rigid_motion.hpp"
+
+#include <cmath>
+
+namespace ibms {
+
+RigidState PrescribedMotion::at(double time) const {
+  RigidState s;
+  double sine = 0.0, cosine_rate = 0.0;  // sin(w t + phase) and d/dt of it
+  if (period > 0.0) {
+    const double omega = 2.0 * M_PI / period;
+    sine = std::sin(omega*time + phase);
+    cosine_rate = omega * std::cos(omega*time + phase);
+  }
+  for (int d = 0; d < 2; ++d) {
+    s.centre[d] = initial_centre[d] + velocity[d]*time + amplitude[d]*sine;
+    s.velocity[d] = velocity[d] + amplitude[d]*cosine_rate;
+  }
+  s.angle = angular_velocity*time + angle_amplitude*sine;
+  s.angular_velocity = angular_velocity + angle_amplitude*cosine_rate;
+  return s;
+}
+
+RigidBody rigid_body_from_spec(const BodySpec& spec, const MassSpringBody& body) {
+  RigidBody rigid;
+  const auto& centre = body.position[body.centre_index()];
+  for (int l = 0; l < body.n_surface; ++l)
+    rigid.offsets.push_back({body.position[l][0] - centre[0], body.position[l][1] - centre[1]});
+  // Uniform disk per unit depth: m = rho_s pi D^2 / 4, I = m D^2 / 8.
+  rigid.mass = body.density * body.solid_area();
+  rigid.moment_of_inertia = rigid.mass * body.diameter * body.diameter / 8.0;
+  rigid.prescribed = {spec.centre, spec.velocity, spec.angular_velocity, spec.oscillation_amplitude,
+                      spec.angle_amplitude, spec.oscillation_period, spec.oscillation_phase};
+  if (spec.kind == "prescribed") {
+    rigid.state = rigid.prescribed.at(0.0);
+  } else {
+    rigid.state = {spec.centre, 0.0, spec.velocity, spec.angular_velocity};
+  }
+  return rigid;
+}
+
+void place_points(const RigidBody& rigid, MassSpringBody& body) {
+  const RigidState& s = rigid.state;
+  const double c = std::cos(s.angle), sn = std::sin(s.angle);
+  for (int l = 0; l < body.n_surface; ++l) {
+    const auto& r0 = rigid.offsets[l];
+    const double rx = c*r0[0] - sn*r0[1], ry = sn*r0[0] + c*r0[1];  // R(theta) r_l
+    body.position[l] = {s.centre[0] + rx, s.centre[1] + ry};
+    body.velocity[l] = {s.velocity[0] - s.angular_velocity*ry, s.velocity[1] + s.angular_velocity*rx};
+  }
+  body.position[body.centre_index()] = s.centre;
+  body.velocity[body.centre_index()] = s.velocity;
+}
+
+void advance_newton_euler(double dt, const std::array<double, 2>& force, double torque, RigidBody& rigid) {
+  RigidState& s = rigid.state;
+  for (int d = 0; d < 2; ++d) s.velocity[d] += dt * force[d] / rigid.mass;
+  s.angular_velocity += dt * torque / rigid.moment_of_inertia;
+  for (int d = 0; d < 2; ++d) s.centre[d] += dt * s.velocity[d];
+  s.angle += dt * s.angular_velocity;
+}
+
+}  // namespace ibms

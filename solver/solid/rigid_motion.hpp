@@ -1,0 +1,56 @@
+// Rigid and prescribed bodies (DESIGN.md §11, issue 10): a rigid ring of N_l Lagrangian points and
+// a centre point whose positions and velocities follow one rigid motion (centre X_c, angle theta,
+// velocity V, rotation rate Omega):  x_l = X_c + R(theta) r_l,  U_l = V + Omega e_z x (x_l - X_c).
+//  rigid       Newton-Euler for a uniform disk, m = rho_s pi D^2 / 4, I = m D^2 / 8 [per unit
+//              depth], with the total force and torque of the fluid, contacts and buoyant gravity;
+//  prescribed  X_c(t) = X0 + V t + A sin(2 pi t/T + phase), theta(t) = Omega t + Theta sin(2 pi t/T + phase).
+// Units: lengths [length], angles [rad], forces per unit depth [force/length], torques [force].
+#pragma once
+#include <array>
+#include <string>
+#include <vector>
+
+#include "scene/scene.hpp"
+#include "solid/mass_spring_body.hpp"
+
+namespace ibms {
+
+struct RigidState {
+  std::array<double, 2> centre{0.0, 0.0};    // X_c [length]
+  double angle = 0.0;                        // theta, counter-clockwise [rad]
+  std::array<double, 2> velocity{0.0, 0.0};  // V [length/time]
+  double angular_velocity = 0.0;             // Omega [1/time]
+};
+
+// The prescribed motion of a `prescribed` body (scene.hpp BodySpec).
+struct PrescribedMotion {
+  std::array<double, 2> initial_centre{0.0, 0.0};  // X0 [length]
+  std::array<double, 2> velocity{0.0, 0.0};        // V [length/time]
+  double angular_velocity = 0.0;                   // Omega [1/time]
+  std::array<double, 2> amplitude{0.0, 0.0};       // A [length]
+  double angle_amplitude = 0.0;                    // Theta [rad]
+  double period = 0.0;                             // T [time]; 0 = no oscillation
+  double phase = 0.0;                              // [rad]
+
+  RigidState at(double time) const;  // position, angle and their exact time derivatives
+};
+
+struct RigidBody {
+  RigidState state;
+  std::vector<std::array<double, 2>> offsets;  // r_l: rim points relative to X_c at theta = 0 [length]
+  double mass = 0.0;                           // m [mass/length]
+  double moment_of_inertia = 0.0;              // I about X_c [mass length]
+  PrescribedMotion prescribed;                 // used by kind prescribed only
+};
+
+// The kinematic description of `spec` (kind rigid or prescribed) with the point set `body` built
+// from it (build_body); mass and moment of inertia of the uniform disk of body.density.
+RigidBody rigid_body_from_spec(const BodySpec& spec, const MassSpringBody& body);
+
+// Positions and velocities of the rim points and the centre point from the rigid state.
+void place_points(const RigidBody& rigid, MassSpringBody& body);
+
+// One symplectic Euler step of Newton-Euler: V += dt F/m, Omega += dt T/I, X_c += dt V, theta += dt Omega.
+void advance_newton_euler(double dt, const std::array<double, 2>& force, double torque, RigidBody& rigid);
+
+}  // namespace ibms
