@@ -37,7 +37,10 @@ double initial_body_speed(const Scene& scene) {
 double planned_time_step(const Scene& scene) {
   if (scene.run.time_step > 0) return scene.run.time_step;
   const double speed = initial_speed_scale(scene), h = grid_spacing(scene);
-  return std::min(speed > 0 ? scene.run.cfl * h / speed : HUGE_VAL, scene.run.max_time_step);
+  const double viscous = scene.run.max_viscous_number > 0
+                             ? scene.run.max_viscous_number * h * h / scene.fluid.kinematic_viscosity
+                             : HUGE_VAL;
+  return std::min({speed > 0 ? scene.run.cfl * h / speed : HUGE_VAL, scene.run.max_time_step, viscous});
 }
 
 std::vector<TimeStepLimit> time_step_limits(const Scene& scene, const Simulation& sim) {
@@ -49,8 +52,13 @@ std::vector<TimeStepLimit> time_step_limits(const Scene& scene, const Simulation
                     speed > 0 ? fmt::format("h / U with U = {:.4g} (walls, initial bodies)", speed)
                               : "no velocity scale before the run (fluid at rest): checked every step"});
   const double nu = scene.fluid.kinematic_viscosity;
-  limits.push_back({"viscous (explicit bound h^2 / (4 nu))", nu > 0 ? h * h / (4 * nu) : HUGE_VAL, HUGE_VAL, false,
-                    "not binding: Crank-Nicolson diffusion"});
+  if (scene.run.max_viscous_number > 0)
+    limits.push_back({"viscous number (h^2 / nu)", nu > 0 ? h * h / nu : HUGE_VAL, scene.run.max_viscous_number, false,
+                      "run.max_viscous_number: the direct forcing's slip grows like (nu dt / h^2) h"});
+  else
+    limits.push_back({"viscous (explicit bound h^2 / (4 nu))", nu > 0 ? h * h / (4 * nu) : HUGE_VAL, HUGE_VAL, false,
+                      sim.has_bodies() ? "not binding (Crank-Nicolson); with bodies consider run.max_viscous_number"
+                                       : "not binding: Crank-Nicolson diffusion"});
   if (!sim.has_bodies()) return limits;
   const double body_speed = initial_body_speed(scene);
   limits.push_back({"marker travel (h / max|U_body|)", body_speed > 0 ? h / body_speed : HUGE_VAL,

@@ -91,6 +91,7 @@ std::string resolved_scene_toml(const Scene& scene) {
   out += fmt::format("steady_tolerance = {}\n", toml_float(run.steady_tolerance));
   out += fmt::format("max_steps = {}\n", run.max_steps);
   out += fmt::format("max_cfl = {}\n", toml_float(run.max_cfl));
+  out += fmt::format("max_viscous_number = {}\n", toml_float(run.max_viscous_number));
 
   const DomainSpec& domain = scene.domain;
   out += "\n[domain]\n";

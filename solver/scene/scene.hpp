@@ -18,6 +18,10 @@ struct RunSpec {
   double steady_tolerance = 0.0;     // stop when max|u^{n+1}-u^n| / (dt max|u|) < this [1/time]; 0 = off
   long max_steps = 0;                // 0 = unlimited [-]
   double max_cfl = 1.0;              // blow-up guard: stop if the CFL number exceeds this [-]
+  // Adaptive dt <= max_viscous_number h^2 / nu; 0 = no such bound [-]. Why a body scene may need it:
+  // the direct forcing's slip at the markers grows like (nu dt / h^2) h, so with dt ~ h alone
+  // it stops converging (settling disk: validation/settling_disk/README.md).
+  double max_viscous_number = 0.0;
 };
 
 struct DomainSpec {

@@ -33,6 +33,7 @@ void read_run(const TomlTableReader& table, RunSpec& run) {
   table.read_real("steady_tolerance", run.steady_tolerance, Need::optional, non_negative);
   table.read_integer("max_steps", run.max_steps, Need::optional, /*lower=*/0);
   table.read_real("max_cfl", run.max_cfl, Need::optional, positive);
+  table.read_real("max_viscous_number", run.max_viscous_number, Need::optional, non_negative);
 }
 
 void read_domain(const TomlTableReader& table, DomainSpec& domain) {

@@ -13,7 +13,8 @@ inline constexpr std::string_view section_names[] = {"run",    "domain", "fluid"
                                                      "ibm",    "bodies", "contact", "output"};
 inline constexpr std::string_view run_keys[] = {"end_time",         "time_step", "cfl",
                                                 "max_time_step",    "steady_tolerance",
-                                                "max_steps",        "max_cfl"};
+                                                "max_steps",        "max_cfl",
+                                                "max_viscous_number"};
 inline constexpr std::string_view domain_keys[] = {"length_x", "length_y",   "cells_x",
                                                    "cells_y",  "periodic_x", "periodic_y"};
 inline constexpr std::string_view fluid_keys[] = {"density", "kinematic_viscosity", "gravity"};
