@@ -14,6 +14,14 @@ foreach(module ${IBMS_MODULES})
   list(APPEND IBMS_EXPORTED_TARGETS ibms_${module})
 endforeach()
 set_target_properties(ibms_lib PROPERTIES EXPORT_NAME ibms)               # ibms::ibms: all modules
+# A sanitizer build (IBMS_SANITIZE, IBMS_FUZZ) installs instrumented static libraries: a program
+# linking them needs the sanitizer runtimes, so every module carries the link flags as a usage
+# requirement (a consumer links with -fsanitize=address,undefined; its own code stays uninstrumented).
+if(IBMS_SANITIZE_LINK_OPTIONS)
+  foreach(module ${IBMS_MODULES})
+    target_link_options(ibms_${module} INTERFACE ${IBMS_SANITIZE_LINK_OPTIONS})
+  endforeach()
+endif()
 
 install(TARGETS ${IBMS_EXPORTED_TARGETS} EXPORT ibmsTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}

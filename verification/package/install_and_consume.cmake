@@ -1,5 +1,7 @@
 # ctest script: installs the build tree into a fresh prefix, then configures, builds and runs the
-# consumer project against it. -DBUILD_DIR= -DSOURCE_DIR= (consumer) -DWORK_DIR= (scratch).
+# consumer project against it. -DBUILD_DIR= -DSOURCE_DIR= (consumer) -DWORK_DIR= (scratch)
+# -DCXX_COMPILER= (ibms's compiler) -DSANITIZE_LINK_OPTIONS= (empty unless a sanitizer build: the
+# exported targets must then carry these link options, and the consumer links and runs with them).
 file(REMOVE_RECURSE ${WORK_DIR})
 file(MAKE_DIRECTORY ${WORK_DIR})
 function(step)
@@ -16,7 +18,18 @@ foreach(f lib/cmake/ibms/ibmsConfig.cmake lib/cmake/ibms/ibmsConfigVersion.cmake
     message(FATAL_ERROR "not installed: ${f}")
   endif()
 endforeach()
+file(READ ${WORK_DIR}/prefix/lib/cmake/ibms/ibmsTargets.cmake targets)
+if(SANITIZE_LINK_OPTIONS)
+  foreach(option ${SANITIZE_LINK_OPTIONS})
+    if(NOT targets MATCHES "INTERFACE_LINK_OPTIONS \"[^\"]*${option}")
+      message(FATAL_ERROR "sanitizer build: ibmsTargets.cmake lacks INTERFACE_LINK_OPTIONS ${option}")
+    endif()
+  endforeach()
+  message("sanitizer build: exported targets carry ${SANITIZE_LINK_OPTIONS}")
+elseif(targets MATCHES "-fsanitize")
+  message(FATAL_ERROR "ordinary build: ibmsTargets.cmake carries a -fsanitize option")
+endif()
 step(${CMAKE_COMMAND} -S ${SOURCE_DIR} -B ${WORK_DIR}/consumer-build -DCMAKE_BUILD_TYPE=Release
-     -DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix)
+     -DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix -DCMAKE_CXX_COMPILER=${CXX_COMPILER})
 step(${CMAKE_COMMAND} --build ${WORK_DIR}/consumer-build)
 step(${WORK_DIR}/consumer-build/ibms_consumer)
