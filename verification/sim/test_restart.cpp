@@ -115,6 +115,23 @@ BOOST_AUTO_TEST_CASE(restarted_run_ends_bit_identical_with_bodies_swelling_and_c
   BOOST_TEST(n_different_values(dir.file("whole.h5"), dir.file("rest.h5")) == 0u);
 }
 
+// Rigid and prescribed bodies: the Newton-Euler state and the inner-fluid angular momentum are in the
+// checkpoint, the prescribed motion is a function of time; contacts between the two are active.
+BOOST_AUTO_TEST_CASE(restarted_run_ends_bit_identical_with_rigid_and_prescribed_bodies) {
+  const TempDir dir;
+  const auto scene = [&](const std::string& name, std::vector<std::string> overrides = {}) {
+    overrides.insert(overrides.begin(), "output.file=" + dir.file(name));
+    return ibms::read_scene_file(IBMS_RESTART_SCENE_RIGID, overrides);
+  };
+  const ibms::RunSummary whole = run(scene("whole.h5"));
+  run(scene("first.h5", {"run.max_steps=91"}));
+  const ibms::RunSummary rest = run(scene("rest.h5"), dir.file("first.h5"));
+  BOOST_TEST(rest.steps == whole.steps);
+  BOOST_TEST(series_max(dir.file("rest.h5"), "contact/n_active_pairs") > 0.0);
+  BOOST_TEST(series_max(dir.file("rest.h5"), "body_000/angular_velocity") != 0.0);
+  BOOST_TEST(n_different_values(dir.file("whole.h5"), dir.file("rest.h5")) == 0u);
+}
+
 // The adaptive time step (CFL and marker-travel limits) keeps no state of its own: it is a function
 // of the restored state, so the restarted run takes the same steps.
 BOOST_AUTO_TEST_CASE(restarted_run_with_adaptive_time_step_ends_bit_identical) {

@@ -1,0 +1,141 @@
+// Multi-direct forcing study (issue 10 item 3), run on demand: 1, 2, 3 and 5 forcing passes
+// (Luo et al. 2007) against the grid, on
+//   - circular Couette flow between prescribed cylinders (verification/bodies/test_circular_couette:
+//     start from the exact solution, t = 0.4, nu dt/h^2 = 0.5): L2 and max velocity error and rim
+//     slip max|U - J u| after the step, relative to the inner rim speed;
+//   - the rigid settling disk (validation/settling_disk/scene_rigid.toml, nu dt/h^2 <= 0.25), run to
+//     touchdown: max settling speed against Glowinski et al.'s 5.53 cm/s, the largest rim slip over
+//     the run relative to the speed, and the cost per step.
+// Usage: bench_forcing_passes [quick|default|full]   (full adds D/h = 37.5 and 50 for the disk)
+// Writes <build>/bench/forcing_passes.csv.
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "bench/bench_paths.hpp"
+#include "scene/scene_reader.hpp"
+#include "sim/diagnostics.hpp"
+#include "verification/bodies/body_scenes.hpp"
+
+using namespace ibms;
+using clock_type = std::chrono::steady_clock;
+
+namespace {
+
+struct Row {
+  std::string case_name;
+  int passes = 0;
+  double resolution = 0;  // cells per (inner) diameter
+  double error_l2 = 0, error_max = 0, slip = 0, ms_per_step = 0;
+};
+
+Row couette(int n, int passes) {
+  constexpr double r1 = 0.15, r2 = 0.35, omega = 1.0, nu = 0.1;
+  const std::array<double, 2> c{0.503, 0.498};
+  const auto exact = [&](double r) {
+    const double den = r2 * r2 - r1 * r1;
+    return -omega * r1 * r1 / den * r + omega * r1 * r1 * r2 * r2 / den / r;
+  };
+  Scene scene;
+  scene.source_file = "(bench couette)";
+  scene.domain = {1.0, 1.0, n, n, false, false};
+  scene.fluid.kinematic_viscosity = nu;
+  scene.ibm.forcing_passes = passes;
+  scene.ibm.inner_fluid_inertia = "none";
+  const double h = 1.0 / n;
+  scene.bodies.push_back(test::prescribed_cylinder(c, 2 * r1, h, omega));
+  scene.bodies.push_back(test::prescribed_cylinder(c, 2 * r2, h, 0.0));
+  Simulation sim(scene);
+  const Grid& g = sim.grid();
+  for (int j = 0; j < g.ny; ++j)
+    for (int i = 0; i < g.nx; ++i) {
+      const double rx = g.x_centre(i) - c[0], ry = g.y_centre(j) - c[1], r = std::hypot(rx, ry);
+      const double ut = r < r1 ? omega * r : (r > r2 ? 0.0 : exact(r));
+      sim.fluid().velocity_x(i, j) = -ut * ry / std::max(r, 1e-300);
+      sim.fluid().velocity_y(i, j) = ut * rx / std::max(r, 1e-300);
+    }
+  sim.fluid_solver().initialise_faces(sim.fluid());
+  const auto start = clock_type::now();
+  test::run_to(sim, 0.4, std::min(0.5 * h / (omega * r1), 0.5 * h * h / nu));
+  Row row{"couette", passes, 2 * r1 / h};
+  row.ms_per_step = 1e3 * std::chrono::duration<double>(clock_type::now() - start).count() / sim.fluid().step;
+  double sum = 0, area = 0;
+  for (int j = 0; j < g.ny; ++j)
+    for (int i = 0; i < g.nx; ++i) {
+      const double rx = g.x_centre(i) - c[0], ry = g.y_centre(j) - c[1], r = std::hypot(rx, ry);
+      if (r < r1 || r > r2) continue;
+      const double e = std::hypot(sim.fluid().velocity_x(i, j) + exact(r) * ry / r,
+                                  sim.fluid().velocity_y(i, j) - exact(r) * rx / r);
+      sum += e * e * g.cell_area();
+      area += g.cell_area();
+      row.error_max = std::max(row.error_max, e / (omega * r1));
+    }
+  row.error_l2 = std::sqrt(sum / area) / (omega * r1);
+  row.slip = std::max(test::rim_slip(sim, 0), test::rim_slip(sim, 1)) / (omega * r1);
+  return row;
+}
+
+Row settling(int n_x, int passes) {
+  const int markers = (2 * n_x) / 5;  // pi D / h with D = 0.25, h = 2 / n_x
+  const Scene scene = read_scene_file(std::string(IBMS_SOURCE_DIR) + "/validation/settling_disk/scene_rigid.toml",
+                                      {"domain.cells_x=" + std::to_string(n_x), "domain.cells_y=" + std::to_string(3 * n_x),
+                                       "bodies.0.n_surface_points=" + std::to_string(markers),
+                                       "ibm.forcing_passes=" + std::to_string(passes)});
+  Simulation sim(scene);
+  VelocityScan scan = scan_velocity(sim.grid(), sim.fluid());
+  double max_speed = 0, max_slip_ratio = 0;
+  const auto start = clock_type::now();
+  while (sim.rigid()[0].state.centre[1] > 0.14 && sim.fluid().time < scene.run.end_time) {
+    advance_one_step(sim, next_time_step(sim, scan));
+    scan = scan_velocity(sim.grid(), sim.fluid());
+    const double speed = -sim.rigid()[0].state.velocity[1];
+    max_speed = std::max(max_speed, speed);
+    if (sim.fluid().step % 10 == 0 && speed > 0.5)
+      max_slip_ratio = std::max(max_slip_ratio, test::rim_slip(sim, 0) / speed);
+  }
+  Row row{"settling_disk_rigid", passes, 0.25 / (2.0 / n_x)};
+  row.ms_per_step = 1e3 * std::chrono::duration<double>(clock_type::now() - start).count() / sim.fluid().step;
+  row.error_l2 = max_speed / 5.53 - 1.0;  // signed deviation of the max speed from Glowinski
+  row.error_max = max_speed;
+  row.slip = max_slip_ratio;
+  return row;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::string level = argc > 1 ? argv[1] : "default";
+  const std::vector<int> passes{1, 2, 3, 5};
+  const std::vector<int> couette_grids = level == "quick" ? std::vector<int>{32, 64} : std::vector<int>{32, 64, 128};
+  std::vector<int> disk_grids = level == "quick" ? std::vector<int>{100} : std::vector<int>{100, 150, 200};
+  if (level == "full") disk_grids = {100, 150, 200, 300, 400};
+  std::vector<Row> rows;
+  std::printf("circular Couette (errors / rim slip relative to the inner rim speed, nu dt/h^2 = 0.5)\n");
+  std::printf("  passes  D1/h   L2 error   max error  rim slip   ms/step\n");
+  for (int p : passes)
+    for (int n : couette_grids) {
+      const Row r = couette(n, p);
+      rows.push_back(r);
+      std::printf("  %6d %5.1f  %9.3e  %9.3e  %9.3e  %7.2f\n", p, r.resolution, r.error_l2, r.error_max, r.slip,
+                  r.ms_per_step);
+    }
+  std::printf("rigid settling disk (max speed vs 5.53 cm/s; rim slip / speed, largest over the run)\n");
+  std::printf("  passes   D/h   max speed  deviation  rim slip   ms/step\n");
+  for (int p : passes)
+    for (int n : disk_grids) {
+      const Row r = settling(n, p);
+      rows.push_back(r);
+      std::printf("  %6d %5.2f  %9.4f  %+8.2f %%  %9.3e  %7.2f\n", p, r.resolution, r.error_max, 100 * r.error_l2,
+                  r.slip, r.ms_per_step);
+    }
+  std::filesystem::create_directories(IBMS_BENCH_OUTPUT_DIR);
+  std::ofstream csv(std::string(IBMS_BENCH_OUTPUT_DIR) + "/forcing_passes.csv");
+  csv << "case,passes,cells_per_diameter,l2_error_or_speed_deviation,max_error_or_max_speed,rim_slip,ms_per_step\n";
+  for (const Row& r : rows)
+    csv << r.case_name << ',' << r.passes << ',' << r.resolution << ',' << r.error_l2 << ',' << r.error_max << ','
+        << r.slip << ',' << r.ms_per_step << '\n';
+  return 0;
+}
