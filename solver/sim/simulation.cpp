@@ -90,7 +90,12 @@ std::vector<std::string> Simulation::stage_names() const {
     stages.push_back(scene_.ibm.inner_fluid_inertia == "kempe"
                          ? "inner-fluid inertia (variant K: exact triangle-cell overlaps, Reynolds-transport form)"
                          : "inner-fluid inertia off (variant A)");
-    stages.push_back("bodies (sub-stepped symplectic Euler: springs, buoyant gravity, swelling, contact hook)");
+    std::string kinds;
+    if (scene_.has_kind("mass_spring")) kinds += "mass-spring: sub-stepped symplectic Euler (springs, buoyant gravity, swelling); ";
+    if (scene_.has_kind("rigid")) kinds += "rigid: Newton-Euler (force, torque, buoyant gravity); ";
+    if (scene_.has_kind("prescribed")) kinds += "prescribed: scene motion; ";
+    stages.push_back("hydrodynamic force and torque on each body");
+    stages.push_back("bodies (" + kinds + "contact hook)");
     if (has_contacts()) stages.push_back("  contacts (DEM spring-dashpots on CDS, every sub-step; walls)");
     if (has_pair_search()) stages.push_back("  pair search (CDS: body-box broad phase, cell list in periodic boxes; every sub-step)");
   }
