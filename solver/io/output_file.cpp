@@ -185,6 +185,20 @@ void OutputFile::write_snapshot(long step, double time, const std::vector<Snapsh
   write_xdmf_sidecar(xdmf_path_, std::filesystem::path(path_).filename().string(), grid_, snapshots_);
 }
 
+void OutputFile::write_timing(const std::vector<TimingEntry>& entries) {
+  const std::string what = "cannot write /timing";
+  if (link_exists(file_.get(), "/timing")) check_hdf5(H5Ldelete(file_.get(), "/timing", H5P_DEFAULT), path_, what);
+  Hdf5Handle group =
+      checked_handle(H5Gcreate2(file_.get(), "/timing", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose, path_, what);
+  for (const TimingEntry& e : entries) {
+    write_double_dataset(group.get(), e.name, {1}, &e.seconds, "s", path_);
+    Hdf5Handle dataset = checked_handle(H5Dopen2(group.get(), e.name.c_str(), H5P_DEFAULT), H5Dclose, path_, what);
+    write_integer_attribute(dataset.get(), "calls", e.calls, path_);
+  }
+  group.reset();
+  flush();
+}
+
 void OutputFile::write_checkpoint(const std::map<std::string, std::vector<double>>& arrays,
                                   const std::map<std::string, double>& scalars, int format_version) {
   const std::string what = "cannot write /checkpoint";

@@ -58,6 +58,15 @@ class OutputFile {
   void write_checkpoint(const std::map<std::string, std::vector<double>>& arrays,
                         const std::map<std::string, double>& scalars, int format_version);
 
+  // Replaces /timing: one 1-element dataset per entry, /timing/<name> = seconds (units "s"), with
+  // an integer attribute `calls` (DESIGN.md §11: every output carries the wall seconds per stage).
+  struct TimingEntry {
+    std::string name;
+    double seconds = 0.0;
+    long calls = 0;
+  };
+  void write_timing(const std::vector<TimingEntry>& entries);
+
   void flush();  // H5Fflush; already called after each write
   const std::string& path() const { return path_; }
   const std::string& xdmf_path() const { return xdmf_path_; }

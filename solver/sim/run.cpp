@@ -202,6 +202,17 @@ void write_profiles(const std::string& h5_path, const Simulation& sim) {
             {"x [length]", "v [length/time]"}, {prof.x, prof.v});
 }
 
+// /timing: wall seconds and calls per pipeline stage (contacts run inside bodies), and the whole
+// run's wall time with its step count as `run` (calls = steps).
+void write_timing(OutputFile& out, const Simulation& sim, double wall_seconds) {
+  std::vector<OutputFile::TimingEntry> entries;
+  for (int s = 0; s < static_cast<int>(Stage::count); ++s)
+    entries.push_back({std::string(stage_names[s]), sim.timers().seconds(static_cast<Stage>(s)),
+                       sim.timers().calls(static_cast<Stage>(s))});
+  entries.push_back({"run", wall_seconds, sim.fluid().step});
+  out.write_timing(entries);
+}
+
 std::string format_seconds(double s) {
   if (!std::isfinite(s)) return "?";
   if (s < 120) return fmt::format("{:.0f} s", s);
@@ -292,6 +303,7 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& options) {
     }
   } catch (const BlowUpError&) {
     write_body_table(summary.output_path, sim, body_table);
+    write_timing(out, sim, std::chrono::duration<double>(clock::now() - start).count());
     out.flush();  // everything written so far stays readable
     throw;
   }
@@ -304,6 +316,7 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& options) {
     if (scene.output.centreline_profiles) write_profiles(summary.output_path, sim);
     write_body_table(summary.output_path, sim, body_table);
   }
+  write_timing(out, sim, std::chrono::duration<double>(clock::now() - start).count());
   summary.steps = f.step;
   summary.time = f.time;
   summary.wall_seconds = std::chrono::duration<double>(clock::now() - start).count();

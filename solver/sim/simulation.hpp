@@ -34,6 +34,7 @@ class Simulation {
   FluidState& fluid() { return fluid_; }
   const FluidState& fluid() const { return fluid_; }
   StageTimers& timers() { return timers_; }
+  const StageTimers& timers() const { return timers_; }
   double fluid_density() const { return scene_.fluid.density; }
 
   bool has_bodies() const { return scene_.has_bodies(); }
