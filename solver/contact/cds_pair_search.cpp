@@ -10,12 +10,16 @@ namespace ibms {
 ContactSpheres gather_contact_spheres(const ContactModel& model,
                                       const std::vector<MassSpringBody>& bodies) {
   ContactSpheres spheres;
-  std::size_t n = 0;
-  for (const MassSpringBody& body : bodies) n += static_cast<std::size_t>(body.n_surface);
-  spheres.centre.reserve(n);
-  spheres.radius.reserve(n);
-  spheres.body.reserve(n);
-  spheres.point.reserve(n);
+  gather_contact_spheres(model, bodies, spheres);
+  return spheres;
+}
+
+void gather_contact_spheres(const ContactModel& model, const std::vector<MassSpringBody>& bodies,
+                            ContactSpheres& spheres) {
+  spheres.centre.clear();
+  spheres.radius.clear();
+  spheres.body.clear();
+  spheres.point.clear();
   for (int b = 0; b < static_cast<int>(bodies.size()); ++b) {
     const double radius = model.cds_radius_of(bodies[b]);
     for (int k = 0; k < bodies[b].n_surface; ++k) {  // surface points only; the centre has no CDS
@@ -25,7 +29,6 @@ ContactSpheres gather_contact_spheres(const ContactModel& model,
       spheres.point.push_back(k);
     }
   }
-  return spheres;
 }
 
 std::array<double, 2> separation(const std::array<double, 2>& from, const std::array<double, 2>& to,
@@ -152,10 +155,20 @@ PairSearchResult find_touching_pairs_cell_list(const ContactSpheres& spheres, co
 }
 
 PairSearchResult find_touching_pairs_body_bounds(const ContactSpheres& spheres, const WallBox& box) {
-  if (box.periodic[0] || box.periodic[1]) return find_touching_pairs_cell_list(spheres, box);
   PairSearchResult result;
+  find_touching_pairs_body_bounds(spheres, box, result);
+  return result;
+}
+
+void find_touching_pairs_body_bounds(const ContactSpheres& spheres, const WallBox& box, PairSearchResult& result) {
+  if (box.periodic[0] || box.periodic[1]) {
+    result = find_touching_pairs_cell_list(spheres, box);
+    return;
+  }
+  result.pairs.clear();
+  result.n_pair_checks = 0;
   const int n = spheres.n_spheres();
-  if (n < 2) return result;
+  if (n < 2) return;
   // Spheres grouped by body (counting sort): body b holds order[start[b] .. start[b + 1]).
   const int n_bodies = *std::max_element(spheres.body.begin(), spheres.body.end()) + 1;
   thread_local std::vector<int> start, cursor, order;
@@ -186,7 +199,6 @@ PairSearchResult find_touching_pairs_body_bounds(const ContactSpheres& spheres, 
           check_pair(spheres, box, std::min(order[k], order[m]), std::max(order[k], order[m]), result);
     }
   sort_pairs(result);
-  return result;
 }
 
 }  // namespace ibms

@@ -24,6 +24,9 @@ struct ContactSpheres {
 
 ContactSpheres gather_contact_spheres(const ContactModel& model,
                                       const std::vector<MassSpringBody>& bodies);
+// The same into `out` (cleared; its capacity is reused, so no allocation once it has grown).
+void gather_contact_spheres(const ContactModel& model, const std::vector<MassSpringBody>& bodies,
+                            ContactSpheres& out);
 
 // Two touching spheres of different bodies, first < second (indices into ContactSpheres).
 struct SpherePair {
@@ -45,6 +48,8 @@ PairSearchResult find_touching_pairs_cell_list(const ContactSpheres& spheres, co
 // checks than the cell list, whose bins are mostly filled with spheres of one body. n_pair_checks
 // counts the body-box tests too. Periodic boxes use the cell list.
 PairSearchResult find_touching_pairs_body_bounds(const ContactSpheres& spheres, const WallBox& box);
+// The same into `out` (cleared, capacity reused) for walled boxes; periodic boxes: the cell list.
+void find_touching_pairs_body_bounds(const ContactSpheres& spheres, const WallBox& box, PairSearchResult& out);
 PairSearchResult find_touching_pairs_brute_force(const ContactSpheres& spheres, const WallBox& box);
 
 // x_to - x_from, minimum image in the periodic directions of the box [length].

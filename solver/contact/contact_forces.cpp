@@ -36,8 +36,11 @@ struct ActiveContact {
 void collect_pair_contacts(const ContactModel& model, const std::vector<MassSpringBody>& bodies,
                            const WallBox& box, std::vector<ActiveContact>& contacts,
                            ContactStats& stats) {
-  const ContactSpheres spheres = gather_contact_spheres(model, bodies);
-  const PairSearchResult search = find_touching_pairs_body_bounds(spheres, box);
+  // Scratch kept across calls (as the pair search's own bins): no allocation once grown.
+  thread_local ContactSpheres spheres;
+  thread_local PairSearchResult search;
+  gather_contact_spheres(model, bodies, spheres);
+  find_touching_pairs_body_bounds(spheres, box, search);
   stats.n_pair_checks = search.n_pair_checks;
   for (const SpherePair& pair : search.pairs) {
     const int s = pair.first, t = pair.second;
@@ -109,28 +112,43 @@ double effective_mass(const ContactModel& model, const std::vector<MassSpringBod
 // S = sum_p (n_p . N)^2 per group, N the unit mean normal of its pairs: the number of pairs acting
 // along N. For a rigid approach along N each pair has delta_p = delta_N (n_p . N), so the group is
 // one spring S k with dashpot S c; S = n_c when the pairs are parallel, 1 for a single pair.
-std::map<std::pair<int, int>, double> count_parallel_pairs(const std::vector<ActiveContact>& contacts) {
-  std::map<std::pair<int, int>, std::array<double, 2>> normal_sum;
-  std::map<std::pair<int, int>, int> n_pairs;
-  for (const ActiveContact& contact : contacts) {
-    auto& sum = normal_sum[contact.group];
-    sum[0] += contact.normal[0];
-    sum[1] += contact.normal[1];
-    ++n_pairs[contact.group];
+struct GroupSum {
+  std::pair<int, int> group;
+  std::array<double, 2> normal_sum{0.0, 0.0};
+  int n_pairs = 0;
+  double parallel = 0.0;  // S
+};
+
+// S of every contact's group into `sharing` (one entry per contact); `groups` is scratch. Groups are
+// few (pairs of bodies in touch), so a linear look-up in a reused vector replaces the maps.
+void count_parallel_pairs(const std::vector<ActiveContact>& contacts, std::vector<GroupSum>& groups,
+                          std::vector<int>& group_of, std::vector<double>& sharing) {
+  groups.clear();
+  group_of.resize(contacts.size());
+  for (std::size_t k = 0; k < contacts.size(); ++k) {
+    const ActiveContact& contact = contacts[k];
+    std::size_t g = 0;
+    while (g < groups.size() && groups[g].group != contact.group) ++g;
+    if (g == groups.size()) groups.push_back({contact.group});
+    groups[g].normal_sum[0] += contact.normal[0];
+    groups[g].normal_sum[1] += contact.normal[1];
+    ++groups[g].n_pairs;
+    group_of[k] = static_cast<int>(g);
   }
-  std::map<std::pair<int, int>, double> parallel;
-  for (const ActiveContact& contact : contacts) {
-    const auto& sum = normal_sum[contact.group];
-    const double length = std::hypot(sum[0], sum[1]);
+  for (GroupSum& g : groups) {
+    const double length = std::hypot(g.normal_sum[0], g.normal_sum[1]);
     // Normals that cancel (a body squeezed from both sides) have no common direction: count them.
-    if (!(length > 1e-12 * n_pairs[contact.group])) {
-      parallel[contact.group] = n_pairs[contact.group];
-      continue;
-    }
-    const double projection = (contact.normal[0]*sum[0] + contact.normal[1]*sum[1]) / length;
-    parallel[contact.group] += projection * projection;
+    if (!(length > 1e-12 * g.n_pairs)) g.parallel = g.n_pairs;
   }
-  return parallel;
+  for (std::size_t k = 0; k < contacts.size(); ++k) {
+    GroupSum& g = groups[group_of[k]];
+    const double length = std::hypot(g.normal_sum[0], g.normal_sum[1]);
+    if (!(length > 1e-12 * g.n_pairs)) continue;
+    const double projection = (contacts[k].normal[0]*g.normal_sum[0] + contacts[k].normal[1]*g.normal_sum[1]) / length;
+    g.parallel += projection * projection;
+  }
+  sharing.resize(contacts.size());
+  for (std::size_t k = 0; k < contacts.size(); ++k) sharing[k] = groups[group_of[k]].parallel;
 }
 
 }  // namespace
@@ -142,17 +160,23 @@ ContactStats add_contact_forces(const ContactModel& model, const std::vector<Mas
   if (!model.enabled()) return stats;
   if (force_per_body.size() != bodies.size())
     throw std::invalid_argument("add_contact_forces: force_per_body has the wrong size");
-  std::vector<ActiveContact> contacts;
+  // Scratch kept across calls (called every solid sub-step): no allocation once grown.
+  thread_local std::vector<ActiveContact> contacts;
+  thread_local std::vector<GroupSum> groups;
+  thread_local std::vector<int> group_of;
+  thread_local std::vector<double> parallel_pairs;
+  contacts.clear();
   // One body has no partner: skip the pair search entirely, walls only.
   if (bodies.size() > 1) collect_pair_contacts(model, bodies, box, contacts, stats);
   if (model.walls) collect_wall_contacts(model, bodies, box, contacts, stats);
 
-  const std::map<std::pair<int, int>, double> parallel_pairs = count_parallel_pairs(contacts);
-  for (const ActiveContact& contact : contacts) {
+  count_parallel_pairs(contacts, groups, group_of, parallel_pairs);
+  for (std::size_t k = 0; k < contacts.size(); ++k) {
+    const ActiveContact& contact = contacts[k];
     stats.max_overlap = std::max(stats.max_overlap, contact.overlap);
     // The pairs of one group act in parallel, S of them along their mean normal (stiffness S k):
     // the dashpot of k / S for each keeps the damping ratio of e_D for the group (ContactModel).
-    const double sharing = model.share_damping_among_active_pairs ? parallel_pairs.at(contact.group) : 1.0;
+    const double sharing = model.share_damping_among_active_pairs ? parallel_pairs[k] : 1.0;
     const ContactLaw law{model.stiffness,
                          damping_from_restitution(model.restitution_coefficient,
                                                   effective_mass(model, bodies, contact),

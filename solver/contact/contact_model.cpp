@@ -97,14 +97,12 @@ bool contact_possible_within(const ContactModel& model, const std::vector<MassSp
                              const WallBox& box, double dt, double acceleration) {
   if (!model.enabled()) return false;
   constexpr double travel_safety = 2.0;  // velocities change within the step; doubles the travel
-  std::vector<BoundingCircle> circles;
-  circles.reserve(bodies.size());
-  for (const MassSpringBody& body : bodies) circles.push_back(bounding_circle(model, body));
+  // Circles recomputed per pair (B^2 N / 2 operations, no allocation inside the step).
   const auto reach = [&](double speed, double cds_radius) {
     return travel_safety * speed * dt + acceleration * dt * dt + 0.5 * cds_radius;
   };
   for (std::size_t a = 0; a < bodies.size(); ++a) {
-    const BoundingCircle& ca = circles[a];
+    const BoundingCircle ca = bounding_circle(model, bodies[a]);
     const double cds_a = model.cds_radius_of(bodies[a]);
     if (model.walls && bodies[a].kind != BodyKind::prescribed) {
       for (int d = 0; d < 2; ++d) {
@@ -116,7 +114,7 @@ bool contact_possible_within(const ContactModel& model, const std::vector<MassSp
     }
     for (std::size_t b = 0; b < a; ++b) {
       if (bodies[a].kind == BodyKind::prescribed && bodies[b].kind == BodyKind::prescribed) continue;
-      const BoundingCircle& cb = circles[b];
+      const BoundingCircle cb = bounding_circle(model, bodies[b]);
       double distance_squared = 0.0;
       for (int d = 0; d < 2; ++d) {
         double delta = std::abs(ca.centre[d] - cb.centre[d]);

@@ -18,9 +18,11 @@ void apply_swelling_schedules(const std::vector<SwellingSchedule>& swelling, dou
     if (swelling[b].enabled) apply_swelling(bodies[b], swelling[b].diameter(time));
 }
 
-int substeps_for(const std::vector<MassSpringBody>& bodies, double dt, double max_substep) {
+int substeps_for(const std::vector<MassSpringBody>& bodies, double dt, double max_substep, SpectralWorkspace* work) {
+  SpectralWorkspace local;
+  SpectralWorkspace& scratch = work != nullptr ? *work : local;
   double dt_s = max_substep;
-  for (const MassSpringBody& body : bodies) dt_s = std::min(dt_s, stable_substep(body, /*safety=*/0.5));
+  for (const MassSpringBody& body : bodies) dt_s = std::min(dt_s, stable_substep(body, /*safety=*/0.5, scratch));
   if (!(dt_s > 0.0)) throw std::runtime_error("advance_bodies: non-positive stable sub-step");
   return std::max(1, static_cast<int>(std::ceil(dt / dt_s * (1.0 - 1e-12))));
 }
@@ -52,7 +54,8 @@ int advance_bodies(const SolidStepInputs& in, const std::vector<SwellingSchedule
                    const ContactForces& contact_forces, std::vector<BodyCoupling>& coupling,
                    std::vector<std::vector<Vec2>>& contact_work, std::vector<RigidBody>& rigid,
                    std::vector<MassSpringBody>& bodies) {
-  const int n_sub = in.fixed_substeps > 0 ? in.fixed_substeps : substeps_for(bodies, in.dt, in.max_substep);
+  const int n_sub =
+      in.fixed_substeps > 0 ? in.fixed_substeps : substeps_for(bodies, in.dt, in.max_substep, in.spectral_workspace);
   const double dt_sub = in.dt / n_sub;
   contact_work.resize(bodies.size());
   for (std::size_t b = 0; b < bodies.size(); ++b) contact_work[b].resize(bodies[b].n_points());
@@ -81,7 +84,7 @@ int advance_bodies(const SolidStepInputs& in, const std::vector<SwellingSchedule
         for (int d = 0; d < 2; ++d)
           c.external_force[p][d] = c.fluid_force[p][d] + c.inner_fluid_force[p][d] + contact_work[b][p][d] +
                                    body.mass[p] * buoyancy_factor * in.gravity[d];
-      advance_symplectic_euler(body, dt_sub, c.external_force);
+      advance_symplectic_euler_in_place(body, dt_sub, c.external_force);  // rebuilt every sub-step above
     }
   }
   apply_swelling_schedules(swelling, in.time + in.dt, bodies);  // state at t^{n+1}

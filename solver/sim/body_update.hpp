@@ -12,6 +12,7 @@
 
 #include "sim/body_coupling.hpp"
 #include "solid/rigid_motion.hpp"
+#include "solid/stable_substep.hpp"
 
 namespace ibms {
 
@@ -28,7 +29,9 @@ void apply_swelling_schedules(const std::vector<SwellingSchedule>& swelling, dou
                               std::vector<MassSpringBody>& bodies);
 
 // Number of sub-steps the next fluid step of length dt needs, from stable_substep (§5.3).
-int substeps_for(const std::vector<MassSpringBody>& bodies, double dt, double max_substep = HUGE_VAL);
+// work: scratch of the spectral bounds (null: a local one, which allocates).
+int substeps_for(const std::vector<MassSpringBody>& bodies, double dt, double max_substep = HUGE_VAL,
+                 SpectralWorkspace* work = nullptr);
 
 struct SolidStepInputs {
   double time = 0.0;                 // t^n [time]
@@ -37,6 +40,7 @@ struct SolidStepInputs {
   Vec2 gravity{0.0, 0.0};            // g [length/time^2]
   double max_substep = HUGE_VAL;     // further sub-step bound, e.g. the contact duration / 20 [time]
   int fixed_substeps = 0;            // > 0: exactly this many sub-steps, no stability bound (stability studies)
+  SpectralWorkspace* spectral_workspace = nullptr;  // scratch of the sub-step bound (null: allocates)
 };
 
 // Advances all bodies from t^n to t^n + dt; returns the number of sub-steps taken. Each sub-step

@@ -55,6 +55,9 @@ void sample_inner_fluid_momentum(const Grid& grid, const FluidState& fluid,
   for (std::size_t b = 0; b < bodies.size(); ++b) {
     BodyCoupling& c = coupling[b];
     locate_triangles(grid, bodies[b], c);
+    // Room for the triangles' cells as the body moves and turns (their count changes by a few
+    // cells), so that the step loop does not reallocate them.
+    for (auto& cells : c.triangle_cells) cells.reserve(2 * cells.size() + 16);
     c.inner_reference_centre = bodies[b].position[bodies[b].centre_index()];
     c.inner_angular_momentum = 0.0;
     for (int l = 0; l < bodies[b].n_surface; ++l) {

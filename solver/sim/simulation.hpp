@@ -72,6 +72,7 @@ class Simulation {
   // > 0: the solid takes exactly this many sub-steps per fluid step, ignoring its stability bound
   // (bench/bench_stability.cpp's fixed-step runs); 0: automatic sub-stepping (METHOD.md §5.3).
   int fixed_solid_substeps = 0;
+  SpectralWorkspace spectral_workspace;  // scratch of the solid sub-step bound, reused every step
 
   ProjectionStats last_projection;  // diagnostics of the latest step
   int last_n_substeps = 0;          // solid sub-steps of the latest step [-]

@@ -44,7 +44,7 @@ void advance_one_step(Simulation& sim, double dt) {
     // Contact sub-steps only while a contact is possible within this step (issue 10).
     const double contact_limit = sim.contact_possible(dt) ? contact_substep(sim.contact_model(), sim.bodies()) : HUGE_VAL;
     sim.last_n_substeps = advance_bodies({time_n, dt, sim.fluid_density(), sim.scene().fluid.gravity, contact_limit,
-                                          sim.fixed_solid_substeps},
+                                          sim.fixed_solid_substeps, &sim.spectral_workspace},
                                          sim.swelling(), sim.contact_forces, sim.coupling(), sim.contact_work(),
                                          sim.rigid(), sim.bodies());  // sub-steps by body kind, §5.3
     sim.total_substeps += sim.last_n_substeps;

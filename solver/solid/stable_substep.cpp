@@ -22,11 +22,12 @@ Block absolute(const Block& b) { return {std::abs(b[0]), std::abs(b[1]), std::ab
 // Collatz-Wielandt bound of rho(|M^-1 A|) for the assembled stiffness-like matrix A with diagonal
 // blocks diag[p] and off-diagonal blocks -element[s] between springs[s].i and springs[s].j.
 double perron_bound(const MassSpringBody& body, const std::vector<Block>& diag,
-                    const std::vector<Block>& element) {
+                    const std::vector<Block>& element, std::vector<double>& x, std::vector<double>& y) {
   constexpr int n_iterations = 20;    // converged to 1e-4 for the wheel by iteration 10
   constexpr double positive_floor = 1e-12;  // keeps x > 0 so every iterate gives a valid bound
   const int n = body.n_points();
-  std::vector<double> x(2*n, 1.0), y(2*n);
+  x.assign(2*n, 1.0);
+  y.assign(2*n, 0.0);
   double best = std::numeric_limits<double>::infinity();
   for (int iteration = 0; iteration <= n_iterations; ++iteration) {
     std::fill(y.begin(), y.end(), 0.0);
@@ -59,10 +60,21 @@ double perron_bound(const MassSpringBody& body, const std::vector<Block>& diag,
 }  // namespace
 
 SpectralBounds spectral_bounds(const MassSpringBody& body) {
+  SpectralWorkspace work;
+  return spectral_bounds(body, work);
+}
+
+SpectralBounds spectral_bounds(const MassSpringBody& body, SpectralWorkspace& work) {
   const int n = body.n_points();
   const double s = body.length_scale();
-  std::vector<Block> stiffness_diag(n, Block{}), damping_diag(n, Block{});
-  std::vector<Block> stiffness_element, damping_element;
+  std::vector<Block>& stiffness_diag = work.stiffness_diag;
+  std::vector<Block>& damping_diag = work.damping_diag;
+  std::vector<Block>& stiffness_element = work.stiffness_element;
+  std::vector<Block>& damping_element = work.damping_element;
+  stiffness_diag.assign(n, Block{});
+  damping_diag.assign(n, Block{});
+  stiffness_element.clear();
+  damping_element.clear();
   for (const Spring& spring : body.springs) {
     const auto& xi = body.position[spring.i];
     const auto& xj = body.position[spring.j];
@@ -86,12 +98,18 @@ SpectralBounds spectral_bounds(const MassSpringBody& body) {
       damping_diag[spring.j][c] += c_block[c];
     }
   }
-  return {perron_bound(body, stiffness_diag, stiffness_element),
-          perron_bound(body, damping_diag, damping_element)};
+  return {perron_bound(body, stiffness_diag, stiffness_element, work.x, work.y),
+          perron_bound(body, damping_diag, damping_element, work.x, work.y)};
 }
 
 double stable_substep(const MassSpringBody& body, double safety) {
-  const SpectralBounds bounds = spectral_bounds(body);
+  SpectralWorkspace work;
+  return stable_substep(body, safety, work);
+}
+
+double stable_substep(const MassSpringBody& body, double safety, SpectralWorkspace& work) {
+  if (body.springs.empty()) return std::numeric_limits<double>::infinity();
+  const SpectralBounds bounds = spectral_bounds(body, work);
   const double gamma = bounds.damping_rate_max;
   const double omega_squared = bounds.omega_squared_max;
   if (gamma == 0.0 && omega_squared == 0.0) return std::numeric_limits<double>::infinity();

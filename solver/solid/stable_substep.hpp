@@ -5,6 +5,9 @@
 // the same bound of M^-1 C at the current configuration. Returns safety times that step [time].
 #pragma once
 
+#include <array>
+#include <vector>
+
 #include "solid/mass_spring_body.hpp"
 
 namespace ibms {
@@ -15,8 +18,17 @@ struct SpectralBounds {
   double omega_squared_max = 0.0;
   double damping_rate_max = 0.0;
 };
-SpectralBounds spectral_bounds(const MassSpringBody& body);
+// Scratch arrays of the bounds, kept by a caller that evaluates them every step so that no
+// allocation happens once they have reached the body's size (issue 12 item 1).
+struct SpectralWorkspace {
+  std::vector<std::array<double, 4>> stiffness_diag, damping_diag, stiffness_element, damping_element;
+  std::vector<double> x, y;
+};
+SpectralBounds spectral_bounds(const MassSpringBody& body, SpectralWorkspace& work);
+SpectralBounds spectral_bounds(const MassSpringBody& body);  // with its own scratch
 
+// Infinity for a body without springs (rigid and prescribed kinds).
+double stable_substep(const MassSpringBody& body, double safety, SpectralWorkspace& work);
 double stable_substep(const MassSpringBody& body, double safety = 0.5);
 
 }  // namespace ibms

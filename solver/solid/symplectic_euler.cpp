@@ -9,9 +9,13 @@ namespace ibms {
 
 void advance_symplectic_euler(MassSpringBody& body, double dt_sub,
                               const std::vector<std::array<double, 2>>& external_force_per_point) {
-  if (static_cast<int>(external_force_per_point.size()) != body.n_points())
-    throw std::invalid_argument("advance_symplectic_euler: external force has the wrong size");
   std::vector<std::array<double, 2>> force = external_force_per_point;
+  advance_symplectic_euler_in_place(body, dt_sub, force);
+}
+
+void advance_symplectic_euler_in_place(MassSpringBody& body, double dt_sub, std::vector<std::array<double, 2>>& force) {
+  if (static_cast<int>(force.size()) != body.n_points())
+    throw std::invalid_argument("advance_symplectic_euler: external force has the wrong size");
   add_spring_forces(body, body.length_scale(), force);
   for (int p = 0; p < body.n_points(); ++p) {
     // Velocity first, then position with the new velocity (the symplectic ordering).

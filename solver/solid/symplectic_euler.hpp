@@ -14,4 +14,8 @@ namespace ibms {
 void advance_symplectic_euler(MassSpringBody& body, double dt_sub,
                               const std::vector<std::array<double, 2>>& external_force_per_point);
 
+// The same step without allocating: `force` holds the external force per point on entry and the
+// total force (springs added) on return.
+void advance_symplectic_euler_in_place(MassSpringBody& body, double dt_sub, std::vector<std::array<double, 2>>& force);
+
 }  // namespace ibms

@@ -1,0 +1,54 @@
+// No allocation inside the step (DESIGN.md §9, issue 12 item 1): after a warm-up, during which work
+// arrays reach their size (contacts have begun, triangle overlaps settled), further fluid steps with
+// bodies, swelling, DEM contacts, rigid and prescribed bodies call operator new zero times. The
+// global operator new of this test program counts the calls while `counting` is set.
+#define BOOST_TEST_MODULE no_allocation
+#include <boost/test/unit_test.hpp>
+
+#include <cstdlib>
+#include <new>
+
+#include "scene/scene_reader.hpp"
+#include "sim/simulation.hpp"
+
+namespace {
+bool counting = false;
+long n_allocations = 0;
+}  // namespace
+
+void* operator new(std::size_t size) {
+  if (counting) ++n_allocations;
+  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
+  throw std::bad_alloc();
+}
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+
+namespace {
+
+long allocations_in_steps(const char* scene_path, int warm_up, int counted) {
+  const ibms::Scene scene = ibms::read_scene_file(scene_path, {});
+  ibms::Simulation sim(scene);
+  const double dt = scene.run.time_step;
+  for (int k = 0; k < warm_up; ++k) ibms::advance_one_step(sim, dt);
+  n_allocations = 0;
+  counting = true;
+  for (int k = 0; k < counted; ++k) ibms::advance_one_step(sim, dt);
+  counting = false;
+  BOOST_TEST_MESSAGE(scene_path << ": " << n_allocations << " allocations in steps " << warm_up << " to "
+                                << warm_up + counted << ", contact pairs last step "
+                                << sim.last_contact_stats.n_active_pairs << ", wall contacts "
+                                << sim.last_contact_stats.n_wall_contacts);
+  return n_allocations;
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(mass_spring_bodies_with_swelling_and_contacts_step_without_allocating) {
+  // Wheel-wheel contact from step 34, wheel-wall from step 70 (restart_scene.toml).
+  BOOST_TEST(allocations_in_steps(IBMS_SCENE_MASS_SPRING, /*warm_up=*/100, /*counted=*/150) == 0);
+}
+
+BOOST_AUTO_TEST_CASE(rigid_and_prescribed_bodies_with_contacts_step_without_allocating) {
+  BOOST_TEST(allocations_in_steps(IBMS_SCENE_RIGID, /*warm_up=*/60, /*counted=*/140) == 0);
+}
