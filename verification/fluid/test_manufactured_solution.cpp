@@ -1,6 +1,6 @@
 // Claims (METHOD.md A10b, issue 2): with no-slip walls the collocated SMAC solver is second
-// order in space for u and v in L2 and max norms (>= 1.9 over four grids), the pressure at least
-// 1.5, and second order in time for the velocity (>= 1.8) on a fixed fine grid.
+// order in space for u, v and p in L2 and max norms (>= 1.9 over four grids), and second order in
+// time for the velocity (>= 1.8) on a fixed fine grid; the pressure at least first order in time.
 #define BOOST_TEST_MODULE manufactured_solution
 #include <boost/test/unit_test.hpp>
 
@@ -102,15 +102,16 @@ void spatial_study(bool steady) {
     vl2.push_back(r.errors.v_l2); vmax.push_back(r.errors.v_max);
     pl2.push_back(r.errors.p_l2); pmax.push_back(r.errors.p_max);
   }
-  // Issue 2 targets: velocity >= 1.9 (formal order 2 minus the 0.1 margin of DESIGN.md §6);
-  // pressure >= 1.5 (O(h^1.5) near walls on a collocated grid, METHOD.md A10b).
+  // Velocity and pressure >= 1.9 (formal order 2 minus the 0.1 margin of DESIGN.md §6). METHOD.md
+  // A10b expected O(h^1.5) for p near walls on a collocated grid and issue 2 asserted 1.5; measured
+  // 1.94-1.99 in both norms (issue 15), so the design's rule applies to p as well.
   const std::string kind = steady ? "steady MMS, " : "unsteady MMS (t = 1), ";
   check_order(kind + "u, L2 norm", grids, ul2, 1.9);
   check_order(kind + "u, max norm", grids, umax, 1.9);
   check_order(kind + "v, L2 norm", grids, vl2, 1.9);
   check_order(kind + "v, max norm", grids, vmax, 1.9);
-  check_order(kind + "p, L2 norm", grids, pl2, 1.5);
-  check_order(kind + "p, max norm", grids, pmax, 1.5);
+  check_order(kind + "p, L2 norm", grids, pl2, 1.9);
+  check_order(kind + "p, max norm", grids, pmax, 1.9);
 }
 
 }  // namespace
@@ -147,4 +148,40 @@ BOOST_AUTO_TEST_CASE(velocity_is_second_order_in_time) {
       "velocity, max |u_dt - u_dt/2| at t = 1 on 64^2 (N = steps)", n, h, e));
   for (double order : verification::pairwise_orders(h, e)) BOOST_TEST(order > 0.0);
   BOOST_TEST(verification::finest_three_slope(h, e) >= 1.8);  // issue 2 target
+}
+
+// The same time study for the pressure: max |p_dt - p_dt/2| at t = 1 on 64^2. Expected order 1, not
+// 2: ibms uses the standard incremental update p^{n+1} = p^n + phi (README "Departures": the
+// rotational form is unstable on this collocated grid), and the standard form's pressure carries a
+// numerical boundary layer that limits it to first order in time (Guermond, Minev & Shen 2006,
+// Comput. Methods Appl. Mech. Engrg. 195:6011, §3.3). Measured: 1.32 / 1.32 / 1.24 pairwise, slope
+// 1.28. Asserted >= 0.9 (expected 1 minus the 0.1 margin of DESIGN.md §6).
+BOOST_AUTO_TEST_CASE(pressure_is_first_order_in_time) {
+  ManufacturedSolution ms;
+  ms.steady = false;
+  const std::vector<int> steps{10, 20, 40, 80, 160};
+  std::vector<FluidState> finals;
+  for (int s : steps) finals.push_back(run(ms, 64, 1.0 / s, 1.0, 0.0).state);
+  std::vector<double> h, e;
+  std::vector<int> n;
+  for (std::size_t k = 0; k + 1 < finals.size(); ++k) {
+    // Pressure is defined up to a constant: compare after removing each field's mean.
+    double mean_a = 0, mean_b = 0;
+    for (int j = 0; j < 64; ++j)
+      for (int i = 0; i < 64; ++i) {
+        mean_a += finals[k].pressure(i, j) / (64.0 * 64.0);
+        mean_b += finals[k + 1].pressure(i, j) / (64.0 * 64.0);
+      }
+    double err = 0;
+    for (int j = 0; j < 64; ++j)
+      for (int i = 0; i < 64; ++i)
+        err = std::max(err, std::abs((finals[k].pressure(i, j) - mean_a) - (finals[k + 1].pressure(i, j) - mean_b)));
+    h.push_back(1.0 / steps[k]);
+    e.push_back(err);
+    n.push_back(steps[k]);
+  }
+  BOOST_TEST_MESSAGE(verification::convergence_table(
+      "pressure, max |p_dt - p_dt/2| at t = 1 on 64^2 (N = steps)", n, h, e));
+  for (double order : verification::pairwise_orders(h, e)) BOOST_TEST(order > 0.0);
+  BOOST_TEST(verification::finest_three_slope(h, e) >= 0.9);
 }
