@@ -4,7 +4,11 @@
 // exits non-zero if a check fails:
 //   1. t <= onset: max |v_sw - v_025| / max |v_025| <= 1 %;
 //   2. after swelling ends and before wall effects (the D = 0.30 disk's gap to the bottom still
-//      > 4 D_max): |v_sw - v_030| / |v_030| at the end of that window <= 3 %;
+//      > 4 D_max), the swelling run approaches the D = 0.30 run: (a) the largest |v_sw - v_030| / |v_030|
+//      over the second half of the window <= 3 % and (b) the difference at the end of the window is
+//      at most a tenth of the one at its start. (Issue 15: this was one value at the window's end;
+//      over the whole window the largest difference is 3.1 % at n_x = 100, right after swelling
+//      ends, before the disk has adjusted to its new size; it is recorded as information.)
 //   3. bottom arrival (gap centre_y - D/2 <= 0.015 cm): t_030 < t_sw < t_025.
 // usage: swelling_sedimentation_check <onset> <swelling_end> <base_swelling> <base_d025> <base_d030> <out.csv>
 #include <algorithm>
@@ -67,12 +71,19 @@ int main(int argc, char** argv) {
     const double metric_before = diff_before / scale_before;
     // 2. Approach to the D = 0.30 run: the window ends when the D = 0.30 disk's gap reaches 4 D_max.
     const double wall_effect_time = arrival_time(d30, 4 * 0.30);
-    double metric_after = NAN, time_after = NAN;
+    double metric_after = NAN, time_after = NAN, metric_end = NAN, metric_start = NAN, metric_late = 0.0;
+    const double window_middle = 0.5 * (swelling_end + wall_effect_time);
     std::printf("  t [s]    v_sw      v_025     v_030   (v_sw - v_030)/v_030\n");
     for (std::size_t k = 0; k < t.size(); ++k) {
       if (t[k] < swelling_end || t[k] > wall_effect_time || std::isnan(v30[k])) continue;
-      metric_after = std::abs(v[k] - v30[k]) / std::abs(v30[k]);
-      time_after = t[k];
+      const double relative = std::abs(v[k] - v30[k]) / std::abs(v30[k]);
+      if (!(relative <= metric_after)) {  // also replaces the initial NaN
+        metric_after = relative;
+        time_after = t[k];
+      }
+      metric_end = relative;
+      if (std::isnan(metric_start)) metric_start = relative;
+      if (t[k] >= window_middle) metric_late = std::max(metric_late, relative);
       if (k % 50 == 0) std::printf("  %.4f  %8.4f  %8.4f  %8.4f  %+.3f %%\n", t[k], v[k], v25[k], v30[k],
                                    100 * (v[k] - v30[k]) / std::abs(v30[k]));
     }
@@ -87,13 +98,19 @@ int main(int argc, char** argv) {
     for (std::size_t k = 0; k < t.size(); ++k)
       out << t[k] << "," << sw.at("body_000/diameter")[k] << "," << v[k] << "," << v25[k] << "," << v30[k] << "\n";
     const bool pass1 = metric_before <= 0.01;
-    const bool pass2 = std::isfinite(metric_after) && metric_after <= 0.03;
+    const bool pass2a = std::isfinite(metric_after) && metric_late <= 0.03;
+    const bool pass2b = std::isfinite(metric_end) && metric_end <= 0.1 * metric_start;
+    const bool pass2 = pass2a && pass2b;
     const bool pass3 = t_30 > 0 && t_sw > 0 && t_25 > 0 && t_30 < t_sw && t_sw < t_25;
     std::printf("%s 1. t <= %.2f: max |v_sw - v_025| / max |v_025| = %.3g %% (tolerance 1 %%)\n",
                 pass1 ? "PASS" : "FAIL", onset, 100 * metric_before);
-    std::printf("%s 2. at t = %.4f (end of the window before wall effects, D=0.30 gap = 4 D_max at %.4f): "
+    std::printf("%s 2a. max over %.4f <= t <= %.4f (second half of the window before wall effects) of "
                 "|v_sw - v_030| / |v_030| = %.3g %% (tolerance 3 %%)\n",
-                pass2 ? "PASS" : "FAIL", time_after, wall_effect_time, 100 * metric_after);
+                pass2a ? "PASS" : "FAIL", window_middle, wall_effect_time, 100 * metric_late);
+    std::printf("%s 2b. approach: %.3g %% at the window's start (t = %.2f) -> %.3g %% at its end (at most a tenth); "
+                "largest over the whole window %.3g %% at t = %.4f\n",
+                pass2b ? "PASS" : "FAIL", 100 * metric_start, swelling_end, 100 * metric_end, 100 * metric_after,
+                time_after);
     std::printf("%s 3. bottom arrival (gap %.3f cm): D=0.30 %.4f s < swelling %.4f s < D=0.25 %.4f s\n",
                 pass3 ? "PASS" : "FAIL", gap, t_30, t_sw, t_25);
     // Case name = the folder name (the report and run-main.sh group lines by it); the grid goes
@@ -102,7 +119,11 @@ int main(int argc, char** argv) {
     const std::string grid = "n_x = " + base_swelling.substr(base_swelling.rfind('_') + 1) + ": ";
     const std::string name = "swelling_sedimentation";
     record(name, grid + "before onset: max|v_sw - v_0.25| / max|v_0.25|", 0.01, metric_before, pass1);
-    record(name, grid + "after swelling, before wall effects: |v_sw - v_0.30| / |v_0.30|", 0.03, metric_after, pass2);
+    record(name, grid + "second half of the window after swelling: max |v_sw - v_0.30| / |v_0.30|", 0.03,
+           metric_late, pass2a);
+    record(name, grid + "approach to the D = 0.30 run: difference at the window's end / at its start", 0.1,
+           metric_end / metric_start, pass2b);
+    record_info(name, grid + "largest |v_sw - v_0.30| / |v_0.30| over the whole window", metric_after);
     record(name, grid + "arrival order t_0.30 < t_sw < t_0.25 (measured: t_sw [s])", NAN, t_sw, pass3);
     return pass1 && pass2 && pass3 ? 0 : 1;
   } catch (const std::exception& e) {
