@@ -3,7 +3,7 @@
 // Claims, each on every grid (no single grid decides):
 //  (1) touchdown time (centre at y = 0.14) within 3 % of the read-off 0.80 s;
 //  (2) wheel and rigid body agree within 1 % in max speed.
-// And, when speed_tolerance is a number (the `slow` gate; "info" records only): (3) the Richardson
+// And, when speed_tolerance is a number ("info" records only): (3) the Richardson
 // extrapolation of the max settling speed from the finest three grids (observed order by the
 // fixed-point iteration of Celik et al. 2008 for non-uniform ratios), for the wheel and the rigid
 // disk, within speed_tolerance of Glowinski et al.'s fine-mesh value (max_settling_speed_glowinski),
