@@ -265,6 +265,7 @@ def main():
         bench.work_precision_section(out, build, fig_dir)
         bench.stability_section(out, build, fig_dir)
         bench.overhead_section(out, build)
+        bench.forcing_passes_section(out, build)
         environment_section(out, build, source, tests)
         bench.run_times_section(out, tests)
         out.append(r"\end{document}")

@@ -225,6 +225,33 @@ def overhead_section(out, build):
                                  "The one-body scene evaluates wall contacts but examines no CDS pair."))
 
 
+def forcing_passes_section(out, build):
+    """Multi-direct forcing study (BUILD/bench/forcing_passes.csv, bench/bench_forcing_passes)."""
+    out.append(r"\section{Multi-direct forcing passes}")
+    rows = _rows(os.path.join(build, "bench", "forcing_passes.csv"))
+    if not rows:
+        out.append(r"\emph{Not run: no \texttt{bench/forcing\_passes.csv} (run "
+                   r"\texttt{bench/bench\_forcing\_passes}).}" + "\n")
+        return
+    couette = [r for r in rows if r["case"] == "couette"]
+    disk = [r for r in rows if r["case"] != "couette"]
+    if couette:
+        out.append(longtable("rrrrrr", ["passes", "$D_1/h$", "L2 error", "max error", "rim slip", "ms/step"],
+                             [[r["passes"], num(r["cells_per_diameter"], 3), num(r["l2_error_or_speed_deviation"], 3),
+                               num(r["max_error_or_max_speed"], 3), num(r["rim_slip"], 3), num(r["ms_per_step"], 3)]
+                              for r in couette],
+                             caption="Circular Couette flow between prescribed cylinders ($\\nu\\Delta t/h^2 = 0.5$): "
+                                     "velocity errors in the annulus and the largest $|U - J u|$ at the markers, "
+                                     "relative to the inner rim speed."))
+    if disk:
+        out.append(longtable("rrrrrr", ["passes", "$D/h$", "max speed", "vs 5.53", "rim slip / speed", "ms/step"],
+                             [[r["passes"], num(r["cells_per_diameter"], 4), num(r["max_error_or_max_speed"], 5),
+                               "%+.2f\\,\\%%" % (100 * _float(r["l2_error_or_speed_deviation"])),
+                               num(r["rim_slip"], 3), num(r["ms_per_step"], 3)] for r in disk],
+                             caption="Rigid settling disk ($\\nu\\Delta t/h^2 \\le 0.25$): maximum settling speed "
+                                     "[cm/s] against Glowinski et al.'s 5.53 cm/s, largest rim slip over the run."))
+
+
 def run_times_section(out, tests):
     """Wall time per validation case: the sum of its ctest runs and check."""
     cases = OrderedDict()

@@ -92,6 +92,7 @@ else
   "$build/bench/bench_overhead" "$build/bench" || bench_status=1
   "$build/bench/bench_work_precision" "$bench_level" "$build/bench" || bench_status=1
   "$build/bench/bench_stability" "$build/bench" || bench_status=1
+  "$build/bench/bench_forcing_passes" "$bench_level" || bench_status=1
   if [[ $bench_status -eq 0 ]]; then echo "$bench_hash" > "$bench_stamp"; else status=1; fi
 fi
 
