@@ -94,12 +94,12 @@ BoundingCircle bounding_circle(const ContactModel& model, const MassSpringBody& 
 }  // namespace
 
 bool contact_possible_within(const ContactModel& model, const std::vector<MassSpringBody>& bodies,
-                             const WallBox& box, double dt, double acceleration) {
+                             const WallBox& box, double dt, const std::vector<double>& reach_extra) {
   if (!model.enabled()) return false;
   constexpr double travel_safety = 2.0;  // velocities change within the step; doubles the travel
   // Circles recomputed per pair (B^2 N / 2 operations, no allocation inside the step).
-  const auto reach = [&](double speed, double cds_radius) {
-    return travel_safety * speed * dt + acceleration * dt * dt + 0.5 * cds_radius;
+  const auto reach = [&](double speed, double extra, double cds_radius) {
+    return travel_safety * speed * dt + extra + 0.5 * cds_radius;
   };
   for (std::size_t a = 0; a < bodies.size(); ++a) {
     const BoundingCircle ca = bounding_circle(model, bodies[a]);
@@ -109,7 +109,7 @@ bool contact_possible_within(const ContactModel& model, const std::vector<MassSp
         if (box.periodic[d]) continue;
         const double gap = std::min(ca.centre[d] - ca.radius - box.origin[d],
                                     box.origin[d] + box.length[d] - ca.centre[d] - ca.radius);
-        if (gap < reach(ca.speed, cds_a)) return true;
+        if (gap < reach(ca.speed, reach_extra[a], cds_a)) return true;
       }
     }
     for (std::size_t b = 0; b < a; ++b) {
@@ -117,17 +117,23 @@ bool contact_possible_within(const ContactModel& model, const std::vector<MassSp
       const BoundingCircle cb = bounding_circle(model, bodies[b]);
       double distance_squared = 0.0;
       for (int d = 0; d < 2; ++d) {
-        double delta = std::abs(ca.centre[d] - cb.centre[d]);
-        if (box.periodic[d]) delta = std::min(delta, std::abs(box.length[d] - std::fmod(delta, box.length[d])));
+        double delta = ca.centre[d] - cb.centre[d];
+        // Nearest image: bodies are not wrapped back into the box, so they may be periods apart.
+        if (box.periodic[d]) delta -= box.length[d] * std::round(delta / box.length[d]);
         distance_squared += delta * delta;
       }
       const double distance = std::sqrt(distance_squared);
-      // Nested bodies (one inside a prescribed container) are close whenever the inner one nears the rim.
-      const double gap = distance + std::min(ca.radius, cb.radius) > std::max(ca.radius, cb.radius)
-                             ? distance - ca.radius - cb.radius
-                             : std::max(ca.radius, cb.radius) - distance - std::min(ca.radius, cb.radius) -
-                                   2.0 * std::max(cds_a, model.cds_radius_of(bodies[b]));
-      if (gap < reach(ca.speed + cb.speed, std::min(cds_a, model.cds_radius_of(bodies[b])))) return true;
+      // A body inside a prescribed container (a regular polygon: all rim points at one radius) is
+      // close whenever it nears the container's rim.
+      const bool a_contains_b = bodies[a].kind == BodyKind::prescribed && distance + cb.radius <= ca.radius;
+      const bool b_contains_a = bodies[b].kind == BodyKind::prescribed && distance + ca.radius <= cb.radius;
+      const double gap = a_contains_b || b_contains_a
+                             ? std::max(ca.radius, cb.radius) - distance - std::min(ca.radius, cb.radius) -
+                                   2.0 * std::max(cds_a, model.cds_radius_of(bodies[b]))
+                             : distance - ca.radius - cb.radius;
+      if (gap < reach(ca.speed + cb.speed, reach_extra[a] + reach_extra[b],
+                      std::min(cds_a, model.cds_radius_of(bodies[b]))))
+        return true;
     }
   }
   return false;

@@ -65,10 +65,11 @@ double contact_substep(const ContactModel& model, const std::vector<MassSpringBo
 // Whether a contact can begin or is under way within the next fluid step of length dt (issue 10:
 // contact sub-steps only while a contact is possible). Each body is bounded by the circle about
 // its rim points' mean holding every CDS; two bodies (or a body and a wall) can touch within dt
-// when their gap is below the reach 2 (v_a + v_b) dt + a dt^2 + r_cds / 2, with v the largest point
-// speed of each body, a a bound on the acceleration (e.g. |g|) and a safety factor 2 on the
-// travel. Prescribed bodies do not touch each other. Periodic directions use the nearest image.
+// when their gap is below the reach 2 (v_a + v_b) dt + e_a + e_b + r_cds / 2, with v the largest
+// point speed of each body, a safety factor 2 on the travel, and e_b = reach_extra[b] what the
+// caller adds for body b (travel from its acceleration bound, growth of its radius by swelling).
+// Prescribed bodies do not touch each other. Periodic directions use the nearest image.
 bool contact_possible_within(const ContactModel& model, const std::vector<MassSpringBody>& bodies,
-                             const WallBox& box, double dt, double acceleration);
+                             const WallBox& box, double dt, const std::vector<double>& reach_extra);
 
 }  // namespace ibms

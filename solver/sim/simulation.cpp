@@ -69,8 +69,33 @@ Simulation::Simulation(const Scene& scene)
 
 bool Simulation::contact_possible(double dt) const {
   if (!has_contacts()) return false;
+  // Extra reach of each body within dt (contact/contact_model.hpp), all bounds doubled:
+  //   travel from its acceleration a_b dt^2 (the exact 1/2 a dt^2 doubled), with
+  //   a_b = |F_hydro| / m + |1 - rho_f/rho_s| |g| (frozen over the step; springs and contacts act
+  //   inside the body and between bodies already touching, which the gap test catches), and for a
+  //   prescribed body the largest acceleration of its motion |A| w^2 + (R)(|Theta| w^2 + Omega^2 + ...);
+  //   and swelling: the radius grows by at most rate dt / 2 (and the CDS radius with it).
   const double gravity = std::hypot(scene_.fluid.gravity[0], scene_.fluid.gravity[1]);
-  return contact_possible_within(contact_model_, bodies_, contact_box_, dt, gravity);
+  contact_reach_.resize(bodies_.size());
+  for (std::size_t b = 0; b < bodies_.size(); ++b) {
+    const MassSpringBody& body = bodies_[b];
+    const BodySpec& spec = scene_.bodies[b];
+    double acceleration = 0.0;
+    if (body.kind == BodyKind::prescribed) {
+      const double w = spec.oscillation_period > 0 ? 2 * M_PI / spec.oscillation_period : 0.0;
+      const double radius = 0.5 * body.diameter;
+      const double omega_max = std::abs(spec.angular_velocity) + std::abs(spec.angle_amplitude) * w;
+      acceleration = std::hypot(spec.oscillation_amplitude[0], spec.oscillation_amplitude[1]) * w * w +
+                     radius * (std::abs(spec.angle_amplitude) * w * w + omega_max * omega_max);
+    } else {
+      const Vec2& f = coupling_[b].hydrodynamic_force;
+      acceleration = std::hypot(f[0], f[1]) / body.total_mass() +
+                     std::abs(1.0 - scene_.fluid.density / body.density) * gravity;
+    }
+    const double growth = spec.swelling.enabled ? spec.swelling.rate * dt * (1.0 + contact_model_.cds_radius_fraction) : 0.0;
+    contact_reach_[b] = acceleration * dt * dt + growth;
+  }
+  return contact_possible_within(contact_model_, bodies_, contact_box_, dt, contact_reach_);
 }
 
 std::vector<std::string> Simulation::stage_names() const {

@@ -92,6 +92,7 @@ class Simulation {
   std::vector<std::vector<Vec2>> contact_work_;
   ContactModel contact_model_;
   WallBox contact_box_;
+  mutable std::vector<double> contact_reach_;  // scratch of contact_possible, one entry per body
 };
 
 // Builders shared with `ibms info` and tests.

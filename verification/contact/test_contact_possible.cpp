@@ -1,0 +1,73 @@
+// The test that lets a step skip the contact sub-step bound (contact_possible_within) is
+// conservative: it answers "possible" for bodies whose contact spheres are within the reach of one
+// step, including across periodic boundaries when the bodies have drifted periods apart, walls,
+// and a body inside a prescribed container; and "not possible" for bodies far apart at rest.
+#define BOOST_TEST_MODULE contact_possible
+#include <boost/test/unit_test.hpp>
+
+#include "contact/contact_model.hpp"
+#include "solid/mass_spring_body.hpp"
+
+using namespace ibms;
+
+namespace {
+
+MassSpringBody disk(std::array<double, 2> centre, double diameter, const char* kind = "rigid") {
+  BodySpec spec;
+  spec.kind = kind;
+  spec.centre = centre;
+  spec.diameter = diameter;
+  spec.n_surface_points = 24;
+  spec.density = 2.0;
+  return build_body(spec, /*fluid_density=*/1.0);
+}
+
+ContactModel model() {
+  ContactSpec spec;
+  spec.stiffness = 1e4;
+  spec.cds_radius = 0.01;
+  return ContactModel(spec);
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(bodies_far_apart_at_rest_cannot_touch_and_near_ones_can) {
+  const WallBox box{{0.0, 0.0}, {1.0, 1.0}, {false, false}};
+  const std::vector<double> no_extra{0.0, 0.0};
+  BOOST_TEST(!contact_possible_within(model(), {disk({0.3, 0.5}, 0.2), disk({0.7, 0.5}, 0.2)}, box, 0.01, no_extra));
+  // Rims 0.015 apart: the spheres (radius 0.01) overlap already.
+  BOOST_TEST(contact_possible_within(model(), {disk({0.3, 0.5}, 0.2), disk({0.515, 0.5}, 0.2)}, box, 0.01, no_extra));
+  // Near a wall.
+  BOOST_TEST(contact_possible_within(model(), {disk({0.11, 0.5}, 0.2), disk({0.7, 0.5}, 0.2)}, box, 0.01, no_extra));
+}
+
+BOOST_AUTO_TEST_CASE(moving_bodies_within_reach_of_one_step_can_touch) {
+  const WallBox box{{0.0, 0.0}, {1.0, 1.0}, {false, false}};
+  std::vector<MassSpringBody> bodies{disk({0.3, 0.5}, 0.2), disk({0.6, 0.5}, 0.2)};  // rims 0.1 apart
+  const std::vector<double> no_extra{0.0, 0.0};
+  BOOST_TEST(!contact_possible_within(model(), bodies, box, 0.01, no_extra));
+  for (auto& u : bodies[0].velocity) u = {3.0, 0.0};  // 2 x 3 x 0.01 = 0.06 of travel ...
+  BOOST_TEST(!contact_possible_within(model(), bodies, box, 0.01, no_extra));
+  for (auto& u : bodies[0].velocity) u = {5.0, 0.0};  // ... 0.10: within reach
+  BOOST_TEST(contact_possible_within(model(), bodies, box, 0.01, no_extra));
+  // The caller's extra reach (acceleration, swelling) counts too.
+  for (auto& u : bodies[0].velocity) u = {0.0, 0.0};
+  BOOST_TEST(contact_possible_within(model(), bodies, box, 0.01, std::vector<double>{0.05, 0.05}));
+}
+
+BOOST_AUTO_TEST_CASE(periodic_neighbours_are_found_however_many_periods_apart) {
+  const WallBox box{{0.0, 0.0}, {1.0, 1.0}, {true, true}};
+  const std::vector<double> no_extra{0.0, 0.0};
+  // Centres 2.21 apart in x: the nearest images are 0.21 apart, the rims 0.01.
+  BOOST_TEST(contact_possible_within(model(), {disk({0.3, 0.5}, 0.2), disk({2.51, 0.5}, 0.2)}, box, 0.01, no_extra));
+  BOOST_TEST(contact_possible_within(model(), {disk({0.3, 0.5}, 0.2), disk({-1.91, 0.5}, 0.2)}, box, 0.01, no_extra));
+  BOOST_TEST(!contact_possible_within(model(), {disk({0.3, 0.5}, 0.2), disk({2.8, 0.5}, 0.2)}, box, 0.01, no_extra));
+}
+
+BOOST_AUTO_TEST_CASE(a_body_near_the_rim_of_its_prescribed_container_can_touch_it) {
+  const WallBox box{{0.0, 0.0}, {1.0, 1.0}, {false, false}};
+  const std::vector<double> no_extra{0.0, 0.0};
+  const MassSpringBody container = disk({0.5, 0.5}, 0.8, "prescribed");
+  BOOST_TEST(!contact_possible_within(model(), {container, disk({0.5, 0.5}, 0.2)}, box, 0.01, no_extra));
+  BOOST_TEST(contact_possible_within(model(), {container, disk({0.79, 0.5}, 0.2)}, box, 0.01, no_extra));
+}
