@@ -220,12 +220,61 @@ int compare_settling(const std::vector<std::string>& files, const std::string& r
   return verdict.pass ? 0 : 1;
 }
 
+// DKT of two disks (validation/dkt_two_disks): t [s], y and v of the trailing (upper) and leading
+// disk [cm, cm/s]; ibms's own <stem>_bodies.csv is accepted by its column names (body 0 trailing).
+// Gated as dkt_check: the trailing disk's max settling speed within 4 % of 1.70 cm/s and its time
+// within 0.1 s of 1.12 s (the drafting phase), and the pair tumbles (trailing below leading at the
+// end); the leading disk's max speed and the time the pair is horizontal are shown as information.
+const std::string dkt_case = "dkt_two_disks";
+
+int compare_dkt(const std::vector<std::string>& files, const std::string& ref_dir) {
+  if (files.size() != 1) throw InputError("dkt_two_disks: give exactly one CSV file (t,y_trailing,y_leading,v_trailing[,v_leading])");
+  const CompareTable t = read_compare_csv(files[0]);
+  const int ct = t.find({"t", "time"});
+  const int cy0 = t.find({"y_trailing", "body_000/centroid_y"});
+  const int cy1 = t.find({"y_leading", "body_001/centroid_y"});
+  const int cv0 = t.find({"v_trailing", "body_000/velocity_y"});
+  const int cv1 = t.find({"v_leading", "body_001/velocity_y"});
+  if (ct < 0 || cy0 < 0 || cy1 < 0 || cv0 < 0)
+    throw InputError(t.path + ":" + std::to_string(t.header_line) +
+                     ": header needs the columns t, y_trailing, y_leading and v_trailing (DKT history)");
+  require_rows(t, 2, "a DKT history");
+  require_increasing(t, ct);
+  const std::string ref = ref_dir + "/" + dkt_case + "/reference/wan_turek_dkt_digitized.csv";
+  const double speed_ref = validation::reference_value(ref, "max_settling_speed_trailing");
+  const double time_ref = validation::reference_value(ref, "time_of_max_speed_trailing");
+  const std::vector<double>& time = t.columns[ct];
+  std::size_t k_max = 0, k_max_leading = 0;
+  double t_level = NAN;
+  for (std::size_t k = 0; k < time.size(); ++k) {
+    if (-t.columns[cv0][k] > -t.columns[cv0][k_max]) k_max = k;
+    if (cv1 >= 0 && -t.columns[cv1][k] > -t.columns[cv1][k_max_leading]) k_max_leading = k;
+    if (std::isnan(t_level) && t.columns[cy0][k] <= t.columns[cy1][k]) t_level = time[k];
+  }
+  const double speed = -t.columns[cv0][k_max];
+  std::printf("ibms compare %s: %s\n", dkt_case.c_str(), files[0].c_str());
+  Verdict::header();
+  Verdict verdict;
+  verdict.line(fmt::format("|trailing max settling speed / {:.4g} cm/s - 1|", speed_ref), 0.04, std::abs(speed / speed_ref - 1));
+  verdict.line(fmt::format("|time of that maximum - {:.4g} s| [s]", time_ref), 0.1, std::abs(time[k_max] - time_ref));
+  verdict.gate("trailing disk ends below the leading one (1 = yes)", "= 1",
+               t.columns[cy0].back() < t.columns[cy1].back() ? 1.0 : 0.0, t.columns[cy0].back() < t.columns[cy1].back());
+  if (cv1 >= 0)
+    Verdict::info("leading max settling speed [cm/s]", -t.columns[cv1][k_max_leading],
+                  validation::reference_value(ref, "max_settling_speed_leading"));
+  Verdict::info("time the pair is horizontal [s] (set by the initial perturbation)", t_level,
+                validation::reference_value(ref, "time_pair_horizontal"));
+  std::printf("%s: %s\n", dkt_case.c_str(), verdict.pass ? "pass" : "FAIL");
+  return verdict.pass ? 0 : 1;
+}
+
 }  // namespace
 
 std::vector<std::string> compare_case_names() {
   std::vector<std::string> names;
   for (const CavityCase& c : cavity_cases()) names.push_back(c.name);
   names.push_back(settling_case);
+  names.push_back(dkt_case);
   names.push_back("cavity_swelling_particles");
   names.push_back("cavity_deformable_objects");
   return names;
@@ -249,6 +298,7 @@ int compare_case(const std::string& case_name, const std::vector<std::string>& f
   for (const CavityCase& c : cavity_cases())
     if (c.name == case_name) return compare_cavity(c, files, validation_dir);
   if (case_name == settling_case) return compare_settling(files, validation_dir);
+  if (case_name == dkt_case) return compare_dkt(files, validation_dir);
   if (case_name == "cavity_swelling_particles") return compare_swelling_particles(files, validation_dir);
   if (case_name == "cavity_deformable_objects") return compare_deformable_objects(files, validation_dir);
   std::string known;

@@ -53,5 +53,18 @@ expect_exit "settling disk: t,v file accepted" 0 "settling_disk: pass" \
 scale_column disk_tv.csv disk_fast.csv 2 1.05
 expect_exit "settling disk: v scaled by 1.05 rejected" 1 "FAIL" \
   "$ibms" compare settling_disk disk_fast.csv --validation-dir "$validation"
+# DKT of two disks: a synthetic history (the trailing disk's speed peaks at 1.69 cm/s at t = 1.12 s,
+# it ends below the leading one) passes; its speed scaled by 0.9 fails; a missing column is bad input.
+awk 'BEGIN { print "t [s],y_trailing [cm],y_leading [cm],v_trailing [cm/s],v_leading [cm/s]";
+  for (k = 0; k <= 300; ++k) { t = k / 100; v = -1.69 * exp(-((t - 1.12) / 0.5)^2);
+    printf "%.2f,%.6f,%.6f,%.6f,%.6f\n", t, 7.2 - 1.1 * t, 6.8 - 0.8 * t, v, 0.9 * v } }' > dkt.csv
+expect_exit "dkt: synthetic history accepted" 0 "dkt_two_disks: pass" \
+  "$ibms" compare dkt_two_disks dkt.csv --validation-dir "$validation"
+scale_column dkt.csv dkt_slow.csv 4 0.9
+expect_exit "dkt: trailing speed scaled by 0.9 rejected" 1 "FAIL" \
+  "$ibms" compare dkt_two_disks dkt_slow.csv --validation-dir "$validation"
+cut -d, -f1,2,4 dkt.csv > dkt_missing.csv
+expect_exit "dkt: missing y_leading is bad input" 2 "y_leading" \
+  "$ibms" compare dkt_two_disks dkt_missing.csv --validation-dir "$validation"
 echo "$failures failure(s)"
 exit $((failures > 0))
