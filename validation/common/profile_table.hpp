@@ -88,4 +88,25 @@ inline GciResult grid_convergence_index(double phi_coarse, double phi_medium, do
   return g;
 }
 
+// The same for refinement ratios r21 = h_medium / h_fine and r32 = h_coarse / h_medium that differ:
+// the observed order by the fixed-point iteration of Celik et al. (2008) eqs. (3a-c),
+// p = |ln|e32/e21| + q(p)| / ln r21, q(p) = ln((r21^p - s) / (r32^p - s)), s = sign(e32/e21).
+inline GciResult grid_convergence_index(double phi_coarse, double phi_medium, double phi_fine, double r21,
+                                        double r32) {
+  GciResult g;
+  const double e32 = phi_coarse - phi_medium, e21 = phi_medium - phi_fine;
+  g.monotone = e32 * e21 > 0;
+  const double s = g.monotone ? 1.0 : -1.0;
+  double p = std::abs(std::log(std::abs(e32 / e21))) / std::log(r21);
+  for (int k = 0; k < 100; ++k) {
+    const double q = std::log((std::pow(r21, p) - s) / (std::pow(r32, p) - s));
+    p = std::abs(std::log(std::abs(e32 / e21)) + q) / std::log(r21);
+  }
+  g.observed_order = p;
+  const double rp = std::pow(r21, p);
+  g.extrapolated = (rp * phi_fine - phi_medium) / (rp - 1);
+  g.gci_fine = 1.25 * std::abs(e21 / phi_fine) / (rp - 1);
+  return g;
+}
+
 }  // namespace ibms::validation

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "body_series.hpp"
+#include "../common/profile_table.hpp"
 #include "../common/results_csv.hpp"
 
 using namespace ibms::validation;
@@ -35,18 +36,6 @@ Settling read_run(const std::string& base) {
   for (double value : v) r.max_speed = std::max(r.max_speed, -value);
   r.touchdown = first_crossing_below(s.at("time"), s.at("body_000/centroid_y"), 0.14);
   return r;
-}
-
-// Observed order and extrapolated value from three grids h1 < h2 < h3 (Celik et al. 2008 eq. 3-4).
-void richardson(double h1, double h2, double h3, double f1, double f2, double f3, double& order, double& value) {
-  const double r21 = h2 / h1, r32 = h3 / h2, e21 = f2 - f1, e32 = f3 - f2;
-  const double s = (e32 / e21) >= 0 ? 1.0 : -1.0;
-  order = std::log(std::abs(e32 / e21)) / std::log(r21);
-  for (int k = 0; k < 100; ++k) {
-    const double q = std::log((std::pow(r21, order) - s) / (std::pow(r32, order) - s));
-    order = std::abs(std::log(std::abs(e32 / e21)) + q) / std::log(r21);
-  }
-  value = f1 + (f1 - f2) / (std::pow(r21, order) - 1.0);
 }
 
 }  // namespace
@@ -100,8 +89,8 @@ int main(int argc, char** argv) {
     }
     const std::size_t n = h.size();
     for (const auto& [name, f] : {std::pair{"wheel", wheel_speed}, std::pair{"rigid", rigid_speed}}) {
-      double order = 0, value = 0;
-      richardson(h[n - 1], h[n - 2], h[n - 3], f[n - 1], f[n - 2], f[n - 3], order, value);
+      const GciResult g = grid_convergence_index(f[n - 3], f[n - 2], f[n - 1], h[n - 2] / h[n - 1], h[n - 3] / h[n - 2]);
+      const double order = g.observed_order, value = g.extrapolated;
       std::printf("  Richardson (finest three, %s): observed order %.2f, extrapolated %.4f cm/s (%+.2f %% vs %.4g)\n",
                   name, order, value, 100 * (value / reference - 1), reference);
       const std::string what = std::string(" of the max settling speed, ") + name + ", finest three grids";
