@@ -18,7 +18,7 @@
 #include "bench/bench_paths.hpp"
 #include "scene/scene_reader.hpp"
 #include "sim/diagnostics.hpp"
-#include "verification/bodies/body_scenes.hpp"
+#include "verification/bodies/circular_couette.hpp"
 
 using namespace ibms;
 using clock_type = std::chrono::steady_clock;
@@ -33,49 +33,8 @@ struct Row {
 };
 
 Row couette(int n, int passes) {
-  constexpr double r1 = 0.15, r2 = 0.35, omega = 1.0, nu = 0.1;
-  const std::array<double, 2> c{0.503, 0.498};
-  const auto exact = [&](double r) {
-    const double den = r2 * r2 - r1 * r1;
-    return -omega * r1 * r1 / den * r + omega * r1 * r1 * r2 * r2 / den / r;
-  };
-  Scene scene;
-  scene.source_file = "(bench couette)";
-  scene.domain = {1.0, 1.0, n, n, false, false};
-  scene.fluid.kinematic_viscosity = nu;
-  scene.ibm.forcing_passes = passes;
-  scene.ibm.inner_fluid_inertia = "none";
-  const double h = 1.0 / n;
-  scene.bodies.push_back(test::prescribed_cylinder(c, 2 * r1, h, omega));
-  scene.bodies.push_back(test::prescribed_cylinder(c, 2 * r2, h, 0.0));
-  Simulation sim(scene);
-  const Grid& g = sim.grid();
-  for (int j = 0; j < g.ny; ++j)
-    for (int i = 0; i < g.nx; ++i) {
-      const double rx = g.x_centre(i) - c[0], ry = g.y_centre(j) - c[1], r = std::hypot(rx, ry);
-      const double ut = r < r1 ? omega * r : (r > r2 ? 0.0 : exact(r));
-      sim.fluid().velocity_x(i, j) = -ut * ry / std::max(r, 1e-300);
-      sim.fluid().velocity_y(i, j) = ut * rx / std::max(r, 1e-300);
-    }
-  sim.fluid_solver().initialise_faces(sim.fluid());
-  const auto start = clock_type::now();
-  test::run_to(sim, 0.4, std::min(0.5 * h / (omega * r1), 0.5 * h * h / nu));
-  Row row{"couette", passes, 2 * r1 / h};
-  row.ms_per_step = 1e3 * std::chrono::duration<double>(clock_type::now() - start).count() / sim.fluid().step;
-  double sum = 0, area = 0;
-  for (int j = 0; j < g.ny; ++j)
-    for (int i = 0; i < g.nx; ++i) {
-      const double rx = g.x_centre(i) - c[0], ry = g.y_centre(j) - c[1], r = std::hypot(rx, ry);
-      if (r < r1 || r > r2) continue;
-      const double e = std::hypot(sim.fluid().velocity_x(i, j) + exact(r) * ry / r,
-                                  sim.fluid().velocity_y(i, j) - exact(r) * rx / r);
-      sum += e * e * g.cell_area();
-      area += g.cell_area();
-      row.error_max = std::max(row.error_max, e / (omega * r1));
-    }
-  row.error_l2 = std::sqrt(sum / area) / (omega * r1);
-  row.slip = std::max(test::rim_slip(sim, 0), test::rim_slip(sim, 1)) / (omega * r1);
-  return row;
+  const test::CouetteResult r = test::run_circular_couette(n, passes);
+  return {"couette", passes, 2 * test::CircularCouette::inner_radius * n, r.l2, r.max, r.slip, r.ms_per_step};
 }
 
 Row settling(int n_x, int passes) {

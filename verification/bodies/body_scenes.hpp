@@ -14,23 +14,25 @@ inline int markers_for(double diameter, double h) {
   return std::max(8, static_cast<int>(std::lround(M_PI * diameter / h)));
 }
 
-// A prescribed cylinder turning at `angular_velocity` about its fixed centre.
-inline BodySpec prescribed_cylinder(std::array<double, 2> centre, double diameter, double h, double angular_velocity) {
+// A disk body of `kind` with markers spaced ~ h, at rest.
+inline BodySpec disk_body(const char* kind, std::array<double, 2> centre, double diameter, double h) {
   BodySpec body;
-  body.kind = "prescribed";
+  body.kind = kind;
   body.centre = centre;
   body.diameter = diameter;
   body.n_surface_points = markers_for(diameter, h);
+  return body;
+}
+
+// A prescribed cylinder turning at `angular_velocity` about its fixed centre.
+inline BodySpec prescribed_cylinder(std::array<double, 2> centre, double diameter, double h, double angular_velocity) {
+  BodySpec body = disk_body("prescribed", centre, diameter, h);
   body.angular_velocity = angular_velocity;
   return body;
 }
 
 inline BodySpec rigid_disk(std::array<double, 2> centre, double diameter, double h, double density) {
-  BodySpec body;
-  body.kind = "rigid";
-  body.centre = centre;
-  body.diameter = diameter;
-  body.n_surface_points = markers_for(diameter, h);
+  BodySpec body = disk_body("rigid", centre, diameter, h);
   body.density = density;
   return body;
 }

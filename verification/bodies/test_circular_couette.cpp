@@ -15,93 +15,22 @@
 #define BOOST_TEST_MODULE circular_couette
 #include <boost/test/unit_test.hpp>
 
-#include <cmath>
-#include <cstdlib>
-
-#include "body_scenes.hpp"
+#include "circular_couette.hpp"
 #include "../common/convergence.hpp"
 
 using namespace ibms;
 
-namespace {
-
-constexpr double inner_radius = 0.15, outer_radius = 0.35, rotation_rate = 1.0;
-// Off the grid's symmetry lines, the same physical place at every resolution.
-constexpr std::array<double, 2> centre{0.503, 0.498};
-
-double exact_u_theta(double r) {
-  const double denominator = outer_radius * outer_radius - inner_radius * inner_radius;
-  const double a = -rotation_rate * inner_radius * inner_radius / denominator;
-  const double b = rotation_rate * inner_radius * inner_radius * outer_radius * outer_radius / denominator;
-  return a * r + b / r;
-}
-
-struct CouetteResult {
-  double l2 = 0.0, max = 0.0, slip = 0.0;
-};
-
-CouetteResult run_couette(int n, int forcing_passes) {
-  Scene scene;
-  scene.source_file = "(circular Couette test)";
-  scene.domain = {1.0, 1.0, n, n, false, false};
-  scene.fluid.kinematic_viscosity = 0.1;  // Re = Omega R1 (R2 - R1) / nu = 0.3
-  scene.ibm.forcing_passes = forcing_passes;
-  // Prescribed bodies move as given: the inner-fluid term would only enter their reported force,
-  // and its fan-triangle overlaps of the large outer cylinder would cost 4x the whole run.
-  scene.ibm.inner_fluid_inertia = "none";
-  const double h = 1.0 / n;
-  scene.bodies.push_back(test::prescribed_cylinder(centre, 2 * inner_radius, h, rotation_rate));
-  scene.bodies.push_back(test::prescribed_cylinder(centre, 2 * outer_radius, h, 0.0));
-  Simulation sim(scene);
-  // Start from the exact solution (rigid rotation inside R1, rest outside R2): the run then only
-  // has to relax to the discrete steady state, whose distance from the start decays like
-  // exp(-nu pi^2 t / (R2 - R1)^2); t = 0.4 leaves e^-9.9 of it.
-  const Grid& grid = sim.grid();
-  for (int j = 0; j < grid.ny; ++j)
-    for (int i = 0; i < grid.nx; ++i) {
-      const double rx = grid.x_centre(i) - centre[0], ry = grid.y_centre(j) - centre[1];
-      const double r = std::hypot(rx, ry);
-      const double u_theta = r < inner_radius ? rotation_rate * r : (r > outer_radius ? 0.0 : exact_u_theta(r));
-      sim.fluid().velocity_x(i, j) = -u_theta * ry / std::max(r, 1e-300);
-      sim.fluid().velocity_y(i, j) = u_theta * rx / std::max(r, 1e-300);
-    }
-  sim.fluid_solver().initialise_faces(sim.fluid());
-  const double viscous_number = std::getenv("IBMS_VISCOUS_NUMBER") ? std::atof(std::getenv("IBMS_VISCOUS_NUMBER")) : 0.5;
-  const double dt = std::min(0.5 * h / (rotation_rate * inner_radius), viscous_number * h * h / scene.fluid.kinematic_viscosity);
-  test::run_to(sim, /*end_time=*/0.4, dt);
-  CouetteResult result;
-  double sum = 0.0, area = 0.0;
-  const Grid& g = sim.grid();
-  for (int j = 0; j < g.ny; ++j)
-    for (int i = 0; i < g.nx; ++i) {
-      const double rx = g.x_centre(i) - centre[0], ry = g.y_centre(j) - centre[1];
-      const double r = std::hypot(rx, ry);
-      if (r < inner_radius || r > outer_radius) continue;
-      const double u_exact = -exact_u_theta(r) * ry / r, v_exact = exact_u_theta(r) * rx / r;
-      const double error = std::hypot(sim.fluid().velocity_x(i, j) - u_exact, sim.fluid().velocity_y(i, j) - v_exact);
-      sum += error * error * g.cell_area();
-      area += g.cell_area();
-      result.max = std::max(result.max, error);
-    }
-  result.l2 = std::sqrt(sum / area);
-  result.slip = std::max(test::rim_slip(sim, 0), test::rim_slip(sim, 1));
-  return result;
-}
-
-}  // namespace
-
 BOOST_AUTO_TEST_CASE(circular_couette_velocity_is_first_order_in_l2_and_max) {
-  const int passes = std::getenv("IBMS_FORCING_PASSES") ? std::atoi(std::getenv("IBMS_FORCING_PASSES")) : 1;
   const std::vector<int> grids{32, 64, 128, 256};
   std::vector<double> h, l2, max, slip;
   for (int n : grids) {
-    const CouetteResult r = run_couette(n, passes);
+    const test::CouetteResult r = test::run_circular_couette(n, /*forcing_passes=*/1);
     h.push_back(1.0 / n);
-    l2.push_back(r.l2 / (rotation_rate * inner_radius));
-    max.push_back(r.max / (rotation_rate * inner_radius));
-    slip.push_back(r.slip / (rotation_rate * inner_radius));
+    l2.push_back(r.l2);
+    max.push_back(r.max);
+    slip.push_back(r.slip);
   }
-  BOOST_TEST_MESSAGE("forcing passes: " << passes << "; errors relative to the inner rim speed");
+  BOOST_TEST_MESSAGE("forcing passes: 1; errors relative to the inner rim speed");
   BOOST_TEST_MESSAGE(verification::convergence_table("circular Couette, L2 velocity error", grids, h, l2));
   BOOST_TEST_MESSAGE(verification::convergence_table("circular Couette, max velocity error", grids, h, max));
   BOOST_TEST_MESSAGE(verification::convergence_table("circular Couette, rim slip max|U - J u|", grids, h, slip));
