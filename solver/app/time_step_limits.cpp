@@ -37,10 +37,8 @@ double initial_body_speed(const Scene& scene) {
 double planned_time_step(const Scene& scene) {
   if (scene.run.time_step > 0) return scene.run.time_step;
   const double speed = initial_speed_scale(scene), h = grid_spacing(scene);
-  const double viscous = scene.run.max_viscous_number > 0
-                             ? scene.run.max_viscous_number * h * h / scene.fluid.kinematic_viscosity
-                             : HUGE_VAL;
-  return std::min({speed > 0 ? scene.run.cfl * h / speed : HUGE_VAL, scene.run.max_time_step, viscous});
+  return std::min({speed > 0 ? scene.run.cfl * h / speed : HUGE_VAL, scene.run.max_time_step,
+                   viscous_time_step_limit(scene.run, h, scene.fluid.kinematic_viscosity)});
 }
 
 std::vector<TimeStepLimit> time_step_limits(const Scene& scene, const Simulation& sim) {
@@ -82,12 +80,7 @@ std::vector<TimeStepLimit> time_step_limits(const Scene& scene, const Simulation
   }
   if (sim.has_contacts()) {
     const ContactModel& model = sim.contact_model();
-    double lightest = HUGE_VAL;
-    for (const MassSpringBody& body : sim.bodies()) {  // as contact_substep
-      if (body.kind == BodyKind::rigid) lightest = std::min(lightest, body.total_mass() / 3.0);
-      if (body.kind != BodyKind::mass_spring) continue;
-      for (int k = 0; k < body.n_surface; ++k) lightest = std::min(lightest, body.mass[k]);
-    }
+    const double lightest = lightest_cds_point_mass(sim.bodies());  // as contact_substep
     const double m_eff = sim.bodies().size() > 1 ? 0.5 * lightest : lightest;  // as contact_substep (A8)
     const double duration = contact_duration(m_eff, model.active_pairs_safety * model.stiffness, /*damping=*/0.0);
     limits.push_back({"contact duration t_c (DEM)", duration, 1.0 / model.steps_per_contact, true,

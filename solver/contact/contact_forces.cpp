@@ -98,16 +98,11 @@ void collect_wall_contacts(const ContactModel& model, const std::vector<MassSpri
 double effective_mass(const ContactModel& model, const std::vector<MassSpringBody>& bodies,
                       const ActiveContact& contact) {
   const bool whole_body = model.effective_mass == ContactEffectiveMass::body;
-  // A rigid body's rim point has no mass of its own: in the point convention it counts with the
-  // smallest effective mass of a point of a uniform rigid disk, m/3 (contact_substep).
-  const auto point_mass = [](const MassSpringBody& body, int point) {
-    return body.kind == BodyKind::rigid ? body.total_mass() / 3.0 : body.mass[point];
-  };
   const MassSpringBody& a = bodies[contact.body_a];
-  const double m_a = whole_body ? a.total_mass() : point_mass(a, contact.point_a);
+  const double m_a = whole_body ? a.total_mass() : cds_point_mass(a, contact.point_a);
   if (contact.body_b == wall_partner) return m_a;
   const MassSpringBody& b = bodies[contact.body_b];
-  const double m_b = whole_body ? b.total_mass() : point_mass(b, contact.point_b);
+  const double m_b = whole_body ? b.total_mass() : cds_point_mass(b, contact.point_b);
   // A prescribed body does not yield: it acts like a wall (infinite mass) on its partner.
   if (b.kind == BodyKind::prescribed) return m_a;
   if (a.kind == BodyKind::prescribed) return m_b;

@@ -31,22 +31,26 @@ double ContactModel::cds_radius_of(const MassSpringBody& body) const {
   return cds_radius > 0.0 ? cds_radius : cds_radius_fraction * body.diameter;
 }
 
+double cds_point_mass(const MassSpringBody& body, int point) {
+  return body.kind == BodyKind::rigid ? body.total_mass() / 3.0 : body.mass[point];
+}
+
+double lightest_cds_point_mass(const std::vector<MassSpringBody>& bodies) {
+  double lightest = std::numeric_limits<double>::infinity();
+  for (const MassSpringBody& body : bodies) {
+    if (body.kind == BodyKind::prescribed) continue;  // infinitely heavy: its partner's mass counts
+    for (int k = 0; k < body.n_surface; ++k) lightest = std::min(lightest, cds_point_mass(body, k));
+  }
+  return lightest;
+}
+
 double contact_substep(const ContactModel& model, const std::vector<MassSpringBody>& bodies) {
   constexpr double dashpot_safety = 0.5;      // METHOD.md §5.3 safety factor on a stability limit
   if (!model.enabled() || bodies.empty()) return std::numeric_limits<double>::infinity();
-  double lightest_point = std::numeric_limits<double>::infinity();
+  const double lightest_point = lightest_cds_point_mass(bodies);
   double heaviest_body = 0.0;
-  for (const MassSpringBody& body : bodies) {
-    if (body.kind == BodyKind::prescribed) continue;  // infinitely heavy: its partner's mass counts
-    if (body.kind == BodyKind::rigid) {
-      // A rim point of a uniform rigid disk pushed along its rim tangent has the smallest
-      // effective mass, 1/m_eff = 1/m + R^2/I = 3/m: m/3.
-      lightest_point = std::min(lightest_point, body.total_mass() / 3.0);
-    } else {
-      for (int k = 0; k < body.n_surface; ++k) lightest_point = std::min(lightest_point, body.mass[k]);
-    }
-    heaviest_body = std::max(heaviest_body, body.total_mass());
-  }
+  for (const MassSpringBody& body : bodies)
+    if (body.kind != BodyKind::prescribed) heaviest_body = std::max(heaviest_body, body.total_mass());
   if (!std::isfinite(lightest_point)) return std::numeric_limits<double>::infinity();  // prescribed only
   // Two equal lightest points in a pair have m_eff = m_p / 2; against a wall m_eff = m_p.
   const double m_eff = bodies.size() > 1 ? 0.5 * lightest_point : lightest_point;

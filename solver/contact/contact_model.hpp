@@ -62,6 +62,13 @@ struct WallBox {
 // longer than that of its lightest point. Infinity when contacts are off [time].
 double contact_substep(const ContactModel& model, const std::vector<MassSpringBody>& bodies);
 
+// Mass a CDS point brings to a contact [mass/length]: its lumped mass, or for a rigid body m/3, the
+// smallest effective mass of a rim point of a uniform rigid disk (pushed along its rim tangent,
+// 1/m_eff = 1/m + R^2/I = 3/m). Not for prescribed bodies (infinitely heavy).
+double cds_point_mass(const MassSpringBody& body, int point);
+// The lightest CDS point mass over the bodies that can move (infinity if none) [mass/length].
+double lightest_cds_point_mass(const std::vector<MassSpringBody>& bodies);
+
 // Whether a contact can begin or is under way within the next fluid step of length dt (issue 10:
 // contact sub-steps only while a contact is possible). Each body is bounded by the circle about
 // its rim points' mean holding every CDS; two bodies (or a body and a wall) can touch within dt

@@ -88,11 +88,13 @@ double next_time_step(const Simulation& sim, const VelocityScan& scan) {
     const double body_speed = max_body_point_speed(sim);
     if (body_speed > 0.0) dt = std::min(dt, max_marker_travel_cells * sim.grid().dx() / body_speed);
   }
-  if (run.max_viscous_number > 0.0) {  // nu dt / h^2 <= max_viscous_number
-    const double h = std::min(sim.grid().dx(), sim.grid().dy());
-    dt = std::min(dt, run.max_viscous_number * h * h / sim.fluid_solver().kinematic_viscosity());
-  }
+  const double h = std::min(sim.grid().dx(), sim.grid().dy());
+  dt = std::min(dt, viscous_time_step_limit(run, h, sim.fluid_solver().kinematic_viscosity()));
   return std::min({dt, run.max_time_step, time_left});
+}
+
+double viscous_time_step_limit(const RunSpec& run, double h, double kinematic_viscosity) {
+  return run.max_viscous_number > 0.0 ? run.max_viscous_number * h * h / kinematic_viscosity : HUGE_VAL;
 }
 
 CentrelineProfiles centreline_profiles(const Simulation& sim) {

@@ -30,6 +30,10 @@ void check_for_blow_up(const Simulation& sim, double dt, const VelocityScan& sca
 // run.max_time_step and by the time left to run.end_time.
 double next_time_step(const Simulation& sim, const VelocityScan& scan);
 
+// run.max_viscous_number h^2 / nu, the cap that keeps nu dt / h^2 bounded (the direct forcing's slip
+// grows like (nu dt / h^2) h); infinity when run.max_viscous_number is 0 [time].
+double viscous_time_step_limit(const RunSpec& run, double h, double kinematic_viscosity);
+
 // Marker travel limit of METHOD.md §7 step 7: a marker moves at most this fraction of h per step.
 inline constexpr double max_marker_travel_cells = 0.5;
 
