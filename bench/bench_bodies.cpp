@@ -8,8 +8,11 @@
 // solid = sub-stepped body update without contacts (springs, fluid reaction, inner-fluid inertia);
 // contacts = DEM forces and pair search inside the solid sub-steps; other = schedules,
 // diagnostics and output. Ratios are against the fluid stage of the same run.
-// Usage: bench_bodies SETTLING_SCENE [--cells 100,150,200] [--until 0.3] [--set k=v]... [EXTRA_SCENE...]
-//   (--set applies to the extra scenes, e.g. --set contact.stiffness=1e7 for the paper's DEM stiffness)
+// Usage: bench_bodies SETTLING_SCENE [--cells 100,150,200] [--until 0.3] [--set k=v]... [--substep-modes]
+//                     [EXTRA_SCENE...]
+//   (--set applies to the extra scenes, e.g. --set contact.stiffness=1e7 for the paper's DEM stiffness;
+//    --substep-modes runs each extra scene with run.solid_substeps = per_group and = global and prints
+//    the ratio of their wall times, issue 12)
 #include <unistd.h>
 
 #include <cstdio>
@@ -30,7 +33,8 @@ namespace {
 struct Figures {
   long steps = 0;
   double fluid = 0, ib = 0, solid = 0, contacts = 0, other = 0, wall = 0;
-  long substeps = 0;
+  long substeps = 0;       // most sub-steps of any body group, summed over steps
+  long body_substeps = 0;  // sub-steps summed over bodies and steps (the solid's work)
 };
 
 Figures run_and_time(const std::string& scene_path, const std::vector<std::string>& overrides) {
@@ -55,14 +59,15 @@ Figures run_and_time(const std::string& scene_path, const std::vector<std::strin
   f.other = t.seconds(Stage::schedules) + t.seconds(Stage::diagnostics) + t.seconds(Stage::output);
   f.wall = summary.wall_seconds;
   f.substeps = sim.total_substeps;
+  f.body_substeps = sim.total_body_substeps;
   return f;
 }
 
 void print_header() {
-  std::printf("   %-28s %7s %9s %9s %9s %9s %9s %7s %7s %7s %8s\n", "case", "steps", "fluid", "IB", "solid",
-              "contacts", "other", "IB/fl", "sol/fl", "con/fl", "sub/step");
-  std::printf("   %-28s %7s %9s %9s %9s %9s %9s %7s %7s %7s %8s\n", "", "", "ms/step", "ms/step", "ms/step",
-              "ms/step", "ms/step", "", "", "", "");
+  std::printf("   %-28s %7s %9s %9s %9s %9s %9s %7s %7s %7s %8s %9s\n", "case", "steps", "fluid", "IB", "solid",
+              "contacts", "other", "IB/fl", "sol/fl", "con/fl", "sub/step", "body-sub");
+  std::printf("   %-28s %7s %9s %9s %9s %9s %9s %7s %7s %7s %8s %9s\n", "", "", "ms/step", "ms/step", "ms/step",
+              "ms/step", "ms/step", "", "", "", "(most)", "/step");
 }
 
 void print_row(const std::string& name, const Figures& f) {
@@ -71,9 +76,10 @@ void print_row(const std::string& name, const Figures& f) {
     return;
   }
   const double per = 1e3 / static_cast<double>(f.steps);
-  std::printf("   %-28s %7ld %9.3f %9.3f %9.3f %9.3f %9.3f %7.3f %7.3f %7.3f %8.1f\n", name.c_str(), f.steps,
+  std::printf("   %-28s %7ld %9.3f %9.3f %9.3f %9.3f %9.3f %7.3f %7.3f %7.3f %8.1f %9.1f\n", name.c_str(), f.steps,
               f.fluid * per, f.ib * per, f.solid * per, f.contacts * per, f.other * per, f.ib / f.fluid,
-              f.solid / f.fluid, f.contacts / f.fluid, static_cast<double>(f.substeps) / f.steps);
+              f.solid / f.fluid, f.contacts / f.fluid, static_cast<double>(f.substeps) / f.steps,
+              static_cast<double>(f.body_substeps) / f.steps);
 }
 
 std::vector<int> parse_list(const std::string& text) {
@@ -93,11 +99,13 @@ int main(int argc, char** argv) {
   std::vector<int> cells{100, 150, 200};
   std::string until = "0.3";
   std::vector<std::string> extra, extra_sets;
+  bool substep_modes = false;
   for (int a = 2; a < argc; ++a) {
     const std::string arg = argv[a];
     if (arg == "--cells" && a + 1 < argc) cells = parse_list(argv[++a]);
     else if (arg == "--until" && a + 1 < argc) until = argv[++a];
     else if (arg == "--set" && a + 1 < argc) extra_sets.push_back(argv[++a]);
+    else if (arg == "--substep-modes") substep_modes = true;
     else extra.push_back(arg);
   }
   try {
@@ -115,11 +123,18 @@ int main(int argc, char** argv) {
       print_row(name, f);
     }
     for (const std::string& path : extra) {
+      const std::string name = std::filesystem::path(path).parent_path().filename().string().substr(0, 14) + "/" +
+                               std::filesystem::path(path).stem().string();
       const Figures f = run_and_time(path, extra_sets);
-      print_row(std::filesystem::path(path).parent_path().filename().string().substr(0, 14) + "/" +
-                    std::filesystem::path(path).stem().string(),
-                f);
+      print_row(name, f);
       std::printf("   %-28s wall %.1f s\n", "", f.wall);
+      if (!substep_modes) continue;
+      std::vector<std::string> global_sets = extra_sets;
+      global_sets.push_back("run.solid_substeps=global");
+      const Figures g = run_and_time(path, global_sets);
+      print_row(name.substr(0, 21) + " global", g);
+      std::printf("   %-28s wall %.1f s; global / per_group: wall %.2f, body sub-steps %.2f\n", "", g.wall,
+                  g.wall / f.wall, static_cast<double>(g.body_substeps) / static_cast<double>(f.body_substeps));
     }
   } catch (const std::exception& error) {
     std::fprintf(stderr, "bench_bodies: %s\n", error.what());

@@ -28,9 +28,16 @@ std::string describe_scene(const Scene& scene) {
       const MassSpringBody& body = sim.bodies()[b];
       const BodySpec& spec = scene.bodies[b];
       std::string cost;
-      if (body.kind == BodyKind::mass_spring)
+      const double dt = planned_time_step(scene);
+      const double spring_substep = stable_substep(body, /*safety=*/0.5);
+      if (body.kind == BodyKind::mass_spring && std::isfinite(dt) && dt > 0 && uses_implicit_springs(body, dt, spring_substep))
+        cost = fmt::format("{} points, {} springs, implicit spring steps (spring_integrator = {}; explicit would need "
+                           "{:.0f} sub-steps per fluid step){}",
+                           body.n_points(), body.springs.size(), spec.spring_integrator, std::ceil(dt / spring_substep),
+                           spec.swelling.enabled ? ", swelling schedule" : "");
+      else if (body.kind == BodyKind::mass_spring)
         cost = fmt::format("{} points, {} springs, sub-stepped to its spring period (stable sub-step {:.4g}){}",
-                           body.n_points(), body.springs.size(), stable_substep(body, /*safety=*/0.5),
+                           body.n_points(), body.springs.size(), spring_substep,
                            spec.swelling.enabled ? ", swelling schedule" : "");
       else if (body.kind == BodyKind::rigid)
         cost = fmt::format("{} rim points, Newton-Euler (m = {:.4g}, I = {:.4g}); no spring sub-steps", body.n_surface,

@@ -122,11 +122,21 @@ std::string describe_time_step_limits(const Scene& scene, const Simulation& sim)
                                            : "");
     if (std::isfinite(dt) && dt > 0) {
       const bool touching = sim.contact_possible(dt);
-      text += fmt::format("sub-steps per fluid step at dt = {:.4g}: {} (automatic{})\n", dt,
-                          substeps_for(sim.bodies(), dt, touching ? contact_limit : HUGE_VAL),
-                          sim.has_contacts() ? (touching ? ", a contact is possible at t = 0"
-                                                         : "; no contact possible at t = 0")
-                                             : "");
+      SubstepGroups groups;
+      sim.plan_substep_groups(dt, groups);
+      SolidStepInputs in;
+      in.dt = dt;
+      in.max_substep = groups.group_of.empty() ? sim.global_contact_limit(dt) : HUGE_VAL;
+      in.fixed_substeps = sim.fixed_solid_substeps;
+      const SolidStepCount count = count_substeps(in, groups, sim.bodies());
+      const std::size_t n_groups = groups.group_of.empty() ? 1 : groups.max_substep.size();
+      text += fmt::format("sub-steps per fluid step at dt = {:.4g}: {} at most, {} summed over the {} bodies "
+                          "({} {}{})\n",
+                          dt, count.max_substeps, count.body_substeps, sim.bodies().size(),
+                          groups.group_of.empty() ? "global:" : fmt::format("per group: {} group(s);", n_groups),
+                          sim.has_contacts() ? (touching ? "a contact is possible at t = 0" : "no contact possible at t = 0")
+                                             : "no contacts",
+                          "");
     }
   }
   // A fixed step above the safe fraction of a limit the fluid step itself must respect is a warning;

@@ -9,13 +9,16 @@
 
 #include "contact/contact_forces.hpp"
 #include "contact/contact_model.hpp"
+#include "solid/implicit_euler.hpp"
 #include "solid/mass_spring_body.hpp"
 
 namespace ibms {
 
-// frozen_force_per_body: one vector of n_points per body, held over the fluid step.
+// frozen_force_per_body: one vector of n_points per body, held over the fluid step. implicit: if
+// given (one per body), the springs take the linearly implicit Euler step (solid/implicit_euler.hpp).
 ContactStats advance_bodies_substep(const ContactModel& model, const WallBox& box, double dt_sub,
                                     const std::vector<std::vector<std::array<double, 2>>>& frozen_force_per_body,
-                                    std::vector<MassSpringBody>& bodies);
+                                    std::vector<MassSpringBody>& bodies,
+                                    std::vector<ImplicitSpringSystem>* implicit = nullptr);
 
 }  // namespace ibms

@@ -15,12 +15,13 @@ ContactSpheres gather_contact_spheres(const ContactModel& model,
 }
 
 void gather_contact_spheres(const ContactModel& model, const std::vector<MassSpringBody>& bodies,
-                            ContactSpheres& spheres) {
+                            ContactSpheres& spheres, const BodyMask& members) {
   spheres.centre.clear();
   spheres.radius.clear();
   spheres.body.clear();
   spheres.point.clear();
   for (int b = 0; b < static_cast<int>(bodies.size()); ++b) {
+    if (!selected(members, b)) continue;
     const double radius = model.cds_radius_of(bodies[b]);
     for (int k = 0; k < bodies[b].n_surface; ++k) {  // surface points only; the centre has no CDS
       spheres.centre.push_back(bodies[b].position[k]);

@@ -34,12 +34,12 @@ struct ActiveContact {
 };
 
 void collect_pair_contacts(const ContactModel& model, const std::vector<MassSpringBody>& bodies,
-                           const WallBox& box, std::vector<ActiveContact>& contacts,
+                           const BodyMask& members, const WallBox& box, std::vector<ActiveContact>& contacts,
                            ContactStats& stats) {
   // Scratch kept across calls (as the pair search's own bins): no allocation once grown.
   thread_local ContactSpheres spheres;
   thread_local PairSearchResult search;
-  gather_contact_spheres(model, bodies, spheres);
+  gather_contact_spheres(model, bodies, spheres, members);
   find_touching_pairs_body_bounds(spheres, box, search);
   stats.n_pair_checks = search.n_pair_checks;
   for (const SpherePair& pair : search.pairs) {
@@ -66,9 +66,10 @@ void collect_pair_contacts(const ContactModel& model, const std::vector<MassSpri
 
 // Walls 0..3: x = x0, x = x0 + Lx, y = y0, y = y0 + Ly; only in non-periodic directions.
 void collect_wall_contacts(const ContactModel& model, const std::vector<MassSpringBody>& bodies,
-                           const WallBox& box, std::vector<ActiveContact>& contacts,
+                           const BodyMask& members, const WallBox& box, std::vector<ActiveContact>& contacts,
                            ContactStats& stats) {
   for (int b = 0; b < static_cast<int>(bodies.size()); ++b) {
+    if (!selected(members, b)) continue;
     if (bodies[b].kind == BodyKind::prescribed) continue;  // its motion is given, walls cannot push it
     const double radius = model.cds_radius_of(bodies[b]);
     for (int k = 0; k < bodies[b].n_surface; ++k) {
@@ -155,7 +156,8 @@ void count_parallel_pairs(const std::vector<ActiveContact>& contacts, std::vecto
 
 ContactStats add_contact_forces(const ContactModel& model, const std::vector<MassSpringBody>& bodies,
                                 const WallBox& box,
-                                std::vector<std::vector<std::array<double, 2>>>& force_per_body) {
+                                std::vector<std::vector<std::array<double, 2>>>& force_per_body,
+                                const BodyMask& members) {
   ContactStats stats;
   if (!model.enabled()) return stats;
   if (force_per_body.size() != bodies.size())
@@ -167,8 +169,10 @@ ContactStats add_contact_forces(const ContactModel& model, const std::vector<Mas
   thread_local std::vector<double> parallel_pairs;
   contacts.clear();
   // One body has no partner: skip the pair search entirely, walls only.
-  if (bodies.size() > 1) collect_pair_contacts(model, bodies, box, contacts, stats);
-  if (model.walls) collect_wall_contacts(model, bodies, box, contacts, stats);
+  const std::size_t n_members =
+      members.empty() ? bodies.size() : static_cast<std::size_t>(std::count(members.begin(), members.end(), 1));
+  if (n_members > 1) collect_pair_contacts(model, bodies, members, box, contacts, stats);
+  if (model.walls) collect_wall_contacts(model, bodies, members, box, contacts, stats);
 
   count_parallel_pairs(contacts, groups, group_of, parallel_pairs);
   for (std::size_t k = 0; k < contacts.size(); ++k) {

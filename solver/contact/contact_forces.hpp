@@ -24,9 +24,11 @@ struct ContactStats {
 };
 
 // Adds the contact forces to force_per_body (one vector of n_points per body; not cleared; the
-// centre points receive nothing). Does nothing when the model is off.
+// centre points receive nothing). Does nothing when the model is off. members: only contacts among
+// these bodies and of these bodies with the walls (a contact group, contact_model.hpp); empty = all.
 ContactStats add_contact_forces(const ContactModel& model, const std::vector<MassSpringBody>& bodies,
                                 const WallBox& box,
-                                std::vector<std::vector<std::array<double, 2>>>& force_per_body);
+                                std::vector<std::vector<std::array<double, 2>>>& force_per_body,
+                                const BodyMask& members = {});
 
 }  // namespace ibms

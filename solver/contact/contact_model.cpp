@@ -35,25 +35,30 @@ double cds_point_mass(const MassSpringBody& body, int point) {
   return body.kind == BodyKind::rigid ? body.total_mass() / 3.0 : body.mass[point];
 }
 
-double lightest_cds_point_mass(const std::vector<MassSpringBody>& bodies) {
+double lightest_cds_point_mass(const std::vector<MassSpringBody>& bodies, const BodyMask& members) {
   double lightest = std::numeric_limits<double>::infinity();
-  for (const MassSpringBody& body : bodies) {
-    if (body.kind == BodyKind::prescribed) continue;  // infinitely heavy: its partner's mass counts
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    const MassSpringBody& body = bodies[b];
+    if (!selected(members, b) || body.kind == BodyKind::prescribed) continue;  // infinitely heavy: its partner's mass counts
     for (int k = 0; k < body.n_surface; ++k) lightest = std::min(lightest, cds_point_mass(body, k));
   }
   return lightest;
 }
 
-double contact_substep(const ContactModel& model, const std::vector<MassSpringBody>& bodies) {
+double contact_substep(const ContactModel& model, const std::vector<MassSpringBody>& bodies, const BodyMask& members) {
   constexpr double dashpot_safety = 0.5;      // METHOD.md §5.3 safety factor on a stability limit
   if (!model.enabled() || bodies.empty()) return std::numeric_limits<double>::infinity();
-  const double lightest_point = lightest_cds_point_mass(bodies);
+  const double lightest_point = lightest_cds_point_mass(bodies, members);
   double heaviest_body = 0.0;
-  for (const MassSpringBody& body : bodies)
-    if (body.kind != BodyKind::prescribed) heaviest_body = std::max(heaviest_body, body.total_mass());
+  std::size_t n_members = 0;
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    if (!selected(members, b)) continue;
+    ++n_members;
+    if (bodies[b].kind != BodyKind::prescribed) heaviest_body = std::max(heaviest_body, bodies[b].total_mass());
+  }
   if (!std::isfinite(lightest_point)) return std::numeric_limits<double>::infinity();  // prescribed only
   // Two equal lightest points in a pair have m_eff = m_p / 2; against a wall m_eff = m_p.
-  const double m_eff = bodies.size() > 1 ? 0.5 * lightest_point : lightest_point;
+  const double m_eff = n_members > 1 ? 0.5 * lightest_point : lightest_point;
   const double n_active = model.active_pairs_safety;
   const double stiffness = n_active * model.stiffness;
   // Damping of n_active pairs as add_contact_forces builds it; the heaviest body pair gives the
@@ -97,50 +102,99 @@ BoundingCircle bounding_circle(const ContactModel& model, const MassSpringBody& 
 
 }  // namespace
 
-bool contact_possible_within(const ContactModel& model, const std::vector<MassSpringBody>& bodies,
-                             const WallBox& box, double dt, const std::vector<double>& reach_extra) {
-  if (!model.enabled()) return false;
-  constexpr double travel_safety = 2.0;  // velocities change within the step; doubles the travel
-  // Circles recomputed per pair (B^2 N / 2 operations, no allocation inside the step).
-  const auto reach = [&](double speed, double extra, double cds_radius) {
-    return travel_safety * speed * dt + extra + 0.5 * cds_radius;
-  };
-  for (std::size_t a = 0; a < bodies.size(); ++a) {
-    const BoundingCircle ca = bounding_circle(model, bodies[a]);
-    const double cds_a = model.cds_radius_of(bodies[a]);
-    if (model.walls && bodies[a].kind != BodyKind::prescribed) {
-      for (int d = 0; d < 2; ++d) {
-        if (box.periodic[d]) continue;
-        const double gap = std::min(ca.centre[d] - ca.radius - box.origin[d],
-                                    box.origin[d] + box.length[d] - ca.centre[d] - ca.radius);
-        if (gap < reach(ca.speed, reach_extra[a], cds_a)) return true;
+bool ContactGroups::any_contact() const {
+  return std::any_of(may_touch.begin(), may_touch.end(), [](char touch) { return touch != 0; });
+}
+
+namespace {
+
+int root_of(std::vector<int>& parent, int b) {
+  while (parent[b] != b) b = parent[b] = parent[parent[b]];  // path halving
+  return b;
+}
+
+}  // namespace
+
+void find_contact_groups(const ContactModel& model, const std::vector<MassSpringBody>& bodies, const WallBox& box,
+                         double dt, const std::vector<double>& reach_extra, ContactGroups& groups) {
+  const int n_bodies = static_cast<int>(bodies.size());
+  // Union-find in group_of (parents), then relabelled to 0 .. n_groups - 1.
+  std::vector<int>& parent = groups.group_of;
+  parent.resize(n_bodies);
+  for (int b = 0; b < n_bodies; ++b) parent[b] = b;
+  groups.may_touch.assign(n_bodies, 0);  // per body first, per group after relabelling
+  std::vector<char>& touches = groups.may_touch;
+  if (model.enabled()) {
+    constexpr double travel_safety = 2.0;  // velocities change within the step; doubles the travel
+    // Circles recomputed per pair (B^2 N / 2 operations, no allocation inside the step).
+    const auto reach = [&](double speed, double extra, double cds_radius) {
+      return travel_safety * speed * dt + extra + 0.5 * cds_radius;
+    };
+    for (int a = 0; a < n_bodies; ++a) {
+      const BoundingCircle ca = bounding_circle(model, bodies[a]);
+      const double cds_a = model.cds_radius_of(bodies[a]);
+      if (model.walls && bodies[a].kind != BodyKind::prescribed) {
+        for (int d = 0; d < 2; ++d) {
+          if (box.periodic[d]) continue;
+          const double gap = std::min(ca.centre[d] - ca.radius - box.origin[d],
+                                      box.origin[d] + box.length[d] - ca.centre[d] - ca.radius);
+          if (gap < reach(ca.speed, reach_extra[a], cds_a)) touches[a] = 1;
+        }
       }
-    }
-    for (std::size_t b = 0; b < a; ++b) {
-      if (bodies[a].kind == BodyKind::prescribed && bodies[b].kind == BodyKind::prescribed) continue;
-      const BoundingCircle cb = bounding_circle(model, bodies[b]);
-      double distance_squared = 0.0;
-      for (int d = 0; d < 2; ++d) {
-        double delta = ca.centre[d] - cb.centre[d];
-        // Nearest image: bodies are not wrapped back into the box, so they may be periods apart.
-        if (box.periodic[d]) delta -= box.length[d] * std::round(delta / box.length[d]);
-        distance_squared += delta * delta;
+      for (int b = 0; b < a; ++b) {
+        if (bodies[a].kind == BodyKind::prescribed && bodies[b].kind == BodyKind::prescribed) continue;
+        const BoundingCircle cb = bounding_circle(model, bodies[b]);
+        double distance_squared = 0.0;
+        for (int d = 0; d < 2; ++d) {
+          double delta = ca.centre[d] - cb.centre[d];
+          // Nearest image: bodies are not wrapped back into the box, so they may be periods apart.
+          if (box.periodic[d]) delta -= box.length[d] * std::round(delta / box.length[d]);
+          distance_squared += delta * delta;
+        }
+        const double distance = std::sqrt(distance_squared);
+        // A body inside a prescribed container (a regular polygon: all rim points at one radius) is
+        // close whenever it nears the container's rim.
+        const bool a_contains_b = bodies[a].kind == BodyKind::prescribed && distance + cb.radius <= ca.radius;
+        const bool b_contains_a = bodies[b].kind == BodyKind::prescribed && distance + ca.radius <= cb.radius;
+        const double gap = a_contains_b || b_contains_a
+                               ? std::max(ca.radius, cb.radius) - distance - std::min(ca.radius, cb.radius) -
+                                     2.0 * std::max(cds_a, model.cds_radius_of(bodies[b]))
+                               : distance - ca.radius - cb.radius;
+        if (gap < reach(ca.speed + cb.speed, reach_extra[a] + reach_extra[b],
+                        std::min(cds_a, model.cds_radius_of(bodies[b])))) {
+          touches[a] = touches[b] = 1;
+          const int ra = root_of(parent, a), rb = root_of(parent, b);
+          if (ra != rb) parent[std::max(ra, rb)] = std::min(ra, rb);  // the lowest index is the root
+        }
       }
-      const double distance = std::sqrt(distance_squared);
-      // A body inside a prescribed container (a regular polygon: all rim points at one radius) is
-      // close whenever it nears the container's rim.
-      const bool a_contains_b = bodies[a].kind == BodyKind::prescribed && distance + cb.radius <= ca.radius;
-      const bool b_contains_a = bodies[b].kind == BodyKind::prescribed && distance + ca.radius <= cb.radius;
-      const double gap = a_contains_b || b_contains_a
-                             ? std::max(ca.radius, cb.radius) - distance - std::min(ca.radius, cb.radius) -
-                                   2.0 * std::max(cds_a, model.cds_radius_of(bodies[b]))
-                             : distance - ca.radius - cb.radius;
-      if (gap < reach(ca.speed + cb.speed, reach_extra[a] + reach_extra[b],
-                      std::min(cds_a, model.cds_radius_of(bodies[b]))))
-        return true;
     }
   }
-  return false;
+  // Every parent has a lower index than its child (unions point to the lower root, path halving
+  // to an ancestor), so one ascending pass makes each entry its root, and a second relabels the
+  // roots 0, 1, ... in order. touches[] is per body until its slot is reused per group: slots
+  // written while relabelling body b are <= b, so a later body's own entry is still intact.
+  for (int b = 0; b < n_bodies; ++b) parent[b] = parent[parent[b]];
+  groups.n_groups = 0;
+  for (int b = 0; b < n_bodies; ++b) {
+    if (parent[b] == b) {
+      const char touch = touches[b];
+      parent[b] = groups.n_groups;
+      touches[groups.n_groups] = touch;
+      ++groups.n_groups;
+    } else {
+      const char touch = touches[b];
+      parent[b] = parent[parent[b]];  // the root, relabelled already
+      if (touch) touches[parent[b]] = 1;
+    }
+  }
+  touches.resize(groups.n_groups);
+}
+
+bool contact_possible_within(const ContactModel& model, const std::vector<MassSpringBody>& bodies,
+                             const WallBox& box, double dt, const std::vector<double>& reach_extra) {
+  ContactGroups groups;
+  find_contact_groups(model, bodies, box, dt, reach_extra, groups);
+  return groups.any_contact();
 }
 
 }  // namespace ibms

@@ -47,6 +47,10 @@ struct ContactModel {
   double cds_radius_of(const MassSpringBody& body) const;
 };
 
+// A set of bodies: mask[b] != 0 selects body b; an empty mask selects every body.
+using BodyMask = std::vector<char>;
+inline bool selected(const BodyMask& mask, std::size_t body) { return mask.empty() || mask[body] != 0; }
+
 // The box the bodies live in: [origin_x, origin_x + length_x] x [origin_y, origin_y + length_y].
 // A periodic direction has no walls and contacts across it use the minimum image.
 struct WallBox {
@@ -60,14 +64,16 @@ struct WallBox {
 // safety 0.5). t_c uses the lightest CDS point mass (m_p / 2 if there are two bodies, m_p with
 // walls only) and active_pairs_safety * k_Dn: conservative, because a stiff body's contact lasts
 // longer than that of its lightest point. Infinity when contacts are off [time].
-double contact_substep(const ContactModel& model, const std::vector<MassSpringBody>& bodies);
+// members: the bodies of one contact group (contact_groups below); empty = all bodies.
+double contact_substep(const ContactModel& model, const std::vector<MassSpringBody>& bodies,
+                       const BodyMask& members = {});
 
 // Mass a CDS point brings to a contact [mass/length]: its lumped mass, or for a rigid body m/3, the
 // smallest effective mass of a rim point of a uniform rigid disk (pushed along its rim tangent,
 // 1/m_eff = 1/m + R^2/I = 3/m). Not for prescribed bodies (infinitely heavy).
 double cds_point_mass(const MassSpringBody& body, int point);
 // The lightest CDS point mass over the bodies that can move (infinity if none) [mass/length].
-double lightest_cds_point_mass(const std::vector<MassSpringBody>& bodies);
+double lightest_cds_point_mass(const std::vector<MassSpringBody>& bodies, const BodyMask& members = {});
 
 // Whether a contact can begin or is under way within the next fluid step of length dt (issue 10:
 // contact sub-steps only while a contact is possible). Each body is bounded by the circle about
@@ -78,5 +84,21 @@ double lightest_cds_point_mass(const std::vector<MassSpringBody>& bodies);
 // Prescribed bodies do not touch each other. Periodic directions use the nearest image.
 bool contact_possible_within(const ContactModel& model, const std::vector<MassSpringBody>& bodies,
                              const WallBox& box, double dt, const std::vector<double>& reach_extra);
+
+// Contact groups for the multi-rate sub-steps (issue 12): the bodies joined, directly or through
+// others, by a pair that may touch within dt (the test of contact_possible_within, pair by pair).
+// Bodies of different groups cannot exert a contact force on each other within the step, so each
+// group may take its own sub-step; a group that may touch something (a pair inside it or a wall)
+// needs the contact sub-step, the others only their springs'. Numbering: by the lowest body index.
+struct ContactGroups {
+  std::vector<int> group_of;    // group of each body, 0 .. n_groups - 1
+  std::vector<char> may_touch;  // per group: a contact (pair or wall) is possible within dt
+  int n_groups = 0;
+  bool any_contact() const;
+};
+// Fills groups (its vectors are reused: no allocation once sized). With contacts off every body is
+// a group of its own that touches nothing.
+void find_contact_groups(const ContactModel& model, const std::vector<MassSpringBody>& bodies, const WallBox& box,
+                         double dt, const std::vector<double>& reach_extra, ContactGroups& groups);
 
 }  // namespace ibms

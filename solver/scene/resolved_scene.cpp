@@ -68,6 +68,7 @@ void append_body(std::string& out, const BodySpec& body) {
   out += fmt::format("restitution_coefficient = {}\n", toml_float(body.restitution_coefficient));
   out += fmt::format("cross_springs = {}\n", toml_bool(body.cross_springs));
   out += fmt::format("mass_lumping = {}\n", toml_string(body.mass_lumping));
+  out += fmt::format("spring_integrator = {}\n", toml_string(body.spring_integrator));
   if (body.swelling.enabled) {
     out += fmt::format("swelling = {{ onset_time = {}, rate = {}, max_diameter = {} }}\n",
                        toml_float(body.swelling.onset_time), toml_float(body.swelling.rate),
@@ -92,6 +93,7 @@ std::string resolved_scene_toml(const Scene& scene) {
   out += fmt::format("max_steps = {}\n", run.max_steps);
   out += fmt::format("max_cfl = {}\n", toml_float(run.max_cfl));
   out += fmt::format("max_viscous_number = {}\n", toml_float(run.max_viscous_number));
+  out += fmt::format("solid_substeps = {}\n", toml_string(run.solid_substeps));
 
   const DomainSpec& domain = scene.domain;
   out += "\n[domain]\n";

@@ -22,6 +22,10 @@ struct RunSpec {
   // the direct forcing's slip at the markers grows like (nu dt / h^2) h, so with dt ~ h alone
   // it stops converging (settling disk: validation/settling_disk/README.md).
   double max_viscous_number = 0.0;
+  // Solid sub-steps (sim/body_update.hpp): "per_group" (each group of bodies that may touch within
+  // the step takes its own sub-step; contact sub-steps only for a group that may touch something)
+  // or "global" (every body takes the smallest sub-step of all, the first version's scheme).
+  std::string solid_substeps = "per_group";
 };
 
 struct DomainSpec {
@@ -91,6 +95,10 @@ struct BodySpec {
   double restitution_coefficient = 1.0;  // e_s in (0, 1] [-], used when spring_damping < 0
   bool cross_springs = false;        // extra (l, l+2) rim springs
   std::string mass_lumping = "equal";  // equal (M = rho_s V / (N_l + 1)) | uniform_disk
+  // explicit: symplectic-Euler sub-steps below the springs' stability limit; implicit: one
+  // linearly implicit Euler step per solid sub-step, no spring limit (solid/implicit_euler.hpp);
+  // auto: implicit when the springs would need more than 50 explicit sub-steps per fluid step.
+  std::string spring_integrator = "auto";
   SwellingSpec swelling;
 };
 

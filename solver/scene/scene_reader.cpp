@@ -34,6 +34,7 @@ void read_run(const TomlTableReader& table, RunSpec& run) {
   table.read_integer("max_steps", run.max_steps, Need::optional, /*lower=*/0);
   table.read_real("max_cfl", run.max_cfl, Need::optional, positive);
   table.read_real("max_viscous_number", run.max_viscous_number, Need::optional, non_negative);
+  table.read_choice("solid_substeps", run.solid_substeps, schema::solid_substeps_choices);
 }
 
 void read_domain(const TomlTableReader& table, DomainSpec& domain) {
@@ -118,6 +119,7 @@ void read_body(const TomlTableReader& table, BodySpec& body) {
                   unit_interval_open_closed);
   table.read_bool("cross_springs", body.cross_springs);
   table.read_choice("mass_lumping", body.mass_lumping, schema::mass_lumping_choices);
+  table.read_choice("spring_integrator", body.spring_integrator, schema::spring_integrator_choices);
   read_swelling(table.sub_table("swelling"), body.diameter, body.swelling);
 }
 

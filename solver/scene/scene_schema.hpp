@@ -14,7 +14,8 @@ inline constexpr std::string_view section_names[] = {"run",    "domain", "fluid"
 inline constexpr std::string_view run_keys[] = {"end_time",         "time_step", "cfl",
                                                 "max_time_step",    "steady_tolerance",
                                                 "max_steps",        "max_cfl",
-                                                "max_viscous_number"};
+                                                "max_viscous_number", "solid_substeps"};
+inline constexpr std::string_view solid_substeps_choices[] = {"per_group", "global"};
 inline constexpr std::string_view domain_keys[] = {"length_x", "length_y",   "cells_x",
                                                    "cells_y",  "periodic_x", "periodic_y"};
 inline constexpr std::string_view fluid_keys[] = {"density", "kinematic_viscosity", "gravity"};
@@ -26,7 +27,7 @@ inline constexpr std::string_view forcing_stage_choices[] = {"explicit_estimate"
 inline constexpr std::string_view body_keys[] = {
     "kind",          "centre",           "velocity",       "angular_velocity",
     "diameter",      "n_surface_points", "density",        "spring_stiffness",
-    "spring_damping", "restitution_coefficient", "cross_springs", "mass_lumping",
+    "spring_damping", "restitution_coefficient", "cross_springs", "mass_lumping", "spring_integrator",
     "swelling",      "oscillation_amplitude", "angle_amplitude", "oscillation_period",
     "oscillation_phase", "reference_speed", "reference_length"};
 // The keys each body kind accepts (a subset of body_keys); any other key is an error naming the kind.
@@ -34,7 +35,7 @@ inline constexpr std::string_view body_kind_choices[] = {"mass_spring", "rigid",
 inline constexpr std::string_view mass_spring_body_keys[] = {
     "kind",          "centre",           "velocity",       "angular_velocity",
     "diameter",      "n_surface_points", "density",        "spring_stiffness",
-    "spring_damping", "restitution_coefficient", "cross_springs", "mass_lumping",
+    "spring_damping", "restitution_coefficient", "cross_springs", "mass_lumping", "spring_integrator",
     "swelling",      "reference_speed",  "reference_length"};
 inline constexpr std::string_view rigid_body_keys[] = {
     "kind", "centre", "velocity", "angular_velocity", "diameter", "n_surface_points", "density",
@@ -52,6 +53,7 @@ inline constexpr std::string_view output_keys[] = {"file", "series_every", "snap
 inline constexpr std::string_view kernel_choices[] = {"roma3", "peskin4", "cosine4", "bkp6"};
 inline constexpr std::string_view inner_fluid_inertia_choices[] = {"kempe", "none"};
 inline constexpr std::string_view mass_lumping_choices[] = {"equal", "uniform_disk"};
+inline constexpr std::string_view spring_integrator_choices[] = {"auto", "explicit", "implicit"};
 
 // Keys a body of this kind accepts (empty for an unknown kind).
 std::span<const std::string_view> keys_of_body_kind(std::string_view kind);

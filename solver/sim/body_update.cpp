@@ -10,7 +10,7 @@
 
 namespace ibms {
 
-void no_contact_forces(const std::vector<MassSpringBody>&, double, std::vector<std::vector<Vec2>>&) {}
+void no_contact_forces(const std::vector<MassSpringBody>&, const BodyMask&, double, std::vector<std::vector<Vec2>>&) {}
 
 void apply_swelling_schedules(const std::vector<SwellingSchedule>& swelling, double time,
                               std::vector<MassSpringBody>& bodies) {
@@ -18,13 +18,14 @@ void apply_swelling_schedules(const std::vector<SwellingSchedule>& swelling, dou
     if (swelling[b].enabled) apply_swelling(bodies[b], swelling[b].diameter(time));
 }
 
-int substeps_for(const std::vector<MassSpringBody>& bodies, double dt, double max_substep, SpectralWorkspace* work) {
-  SpectralWorkspace local;
-  SpectralWorkspace& scratch = work != nullptr ? *work : local;
-  double dt_s = max_substep;
-  for (const MassSpringBody& body : bodies) dt_s = std::min(dt_s, stable_substep(body, /*safety=*/0.5, scratch));
-  if (!(dt_s > 0.0)) throw std::runtime_error("advance_bodies: non-positive stable sub-step");
-  return std::max(1, static_cast<int>(std::ceil(dt / dt_s * (1.0 - 1e-12))));
+bool uses_implicit_springs(const MassSpringBody& body, double dt, double spring_substep) {
+  if (body.kind != BodyKind::mass_spring || body.springs.empty()) return false;
+  switch (body.integrator) {
+    case SpringIntegrator::explicit_euler: return false;
+    case SpringIntegrator::implicit_euler: return true;
+    case SpringIntegrator::automatic: return dt > implicit_springs_above_substeps * spring_substep;
+  }
+  return false;
 }
 
 namespace {
@@ -50,21 +51,28 @@ void advance_rigid(const SolidStepInputs& in, double dt_sub, const BodyCoupling&
 
 }  // namespace
 
-int advance_bodies(const SolidStepInputs& in, const std::vector<SwellingSchedule>& swelling,
-                   const ContactForces& contact_forces, std::vector<BodyCoupling>& coupling,
-                   std::vector<std::vector<Vec2>>& contact_work, std::vector<RigidBody>& rigid,
-                   std::vector<MassSpringBody>& bodies) {
-  const int n_sub =
-      in.fixed_substeps > 0 ? in.fixed_substeps : substeps_for(bodies, in.dt, in.max_substep, in.spectral_workspace);
+namespace {
+
+// One group (groups.members) from t^n to t^n + dt in n_sub sub-steps.
+void advance_group(const SolidStepInputs& in, const std::vector<SwellingSchedule>& swelling,
+                   const ContactForces& contact_forces, const BodyMask& members, const std::vector<char>& implicit_of_body,
+                   std::vector<ImplicitSpringSystem>& implicit, int n_sub,
+                   std::vector<BodyCoupling>& coupling, std::vector<std::vector<Vec2>>& contact_work,
+                   std::vector<RigidBody>& rigid, std::vector<MassSpringBody>& bodies) {
   const double dt_sub = in.dt / n_sub;
-  contact_work.resize(bodies.size());
-  for (std::size_t b = 0; b < bodies.size(); ++b) contact_work[b].resize(bodies[b].n_points());
   for (int k = 0; k < n_sub; ++k) {
     const double time_k = in.time + k*dt_sub;
-    apply_swelling_schedules(swelling, time_k, bodies);  // L0 and M follow s(t), §1.8
-    for (auto& forces : contact_work) std::fill(forces.begin(), forces.end(), Vec2{0.0, 0.0});
-    contact_forces(bodies, time_k, contact_work);
     for (std::size_t b = 0; b < bodies.size(); ++b) {
+      if (!selected(members, b)) continue;
+      if (swelling[b].enabled) apply_swelling(bodies[b], swelling[b].diameter(time_k));  // L0, M follow s(t), §1.8
+      std::fill(contact_work[b].begin(), contact_work[b].end(), Vec2{0.0, 0.0});
+    }
+    // Evaluated in every group, also in one that cannot touch anything by the reach test: a
+    // contact the test did not foresee still acts (at that group's sub-step), and the walls and
+    // the pairs inside a group of one cost little.
+    contact_forces(bodies, members, time_k, contact_work);
+    for (std::size_t b = 0; b < bodies.size(); ++b) {
+      if (!selected(members, b)) continue;
       MassSpringBody& body = bodies[b];
       BodyCoupling& c = coupling[b];
       if (body.kind == BodyKind::rigid) {
@@ -84,11 +92,94 @@ int advance_bodies(const SolidStepInputs& in, const std::vector<SwellingSchedule
         for (int d = 0; d < 2; ++d)
           c.external_force[p][d] = c.fluid_force[p][d] + c.inner_fluid_force[p][d] + contact_work[b][p][d] +
                                    body.mass[p] * buoyancy_factor * in.gravity[d];
-      advance_symplectic_euler_in_place(body, dt_sub, c.external_force);  // rebuilt every sub-step above
+      if (implicit_of_body[b]) implicit[b].advance(body, dt_sub, c.external_force);  // no spring limit
+      else advance_symplectic_euler_in_place(body, dt_sub, c.external_force);  // rebuilt every sub-step above
     }
   }
+}
+
+}  // namespace
+
+namespace {
+
+// Sets groups.members to group g (global mode, g = -1: the empty mask, all bodies), decides the
+// spring integrator of its mass-spring bodies (groups.implicit_of_body) and returns the sub-steps
+// the group needs in this step (0: no members).
+int group_substeps(const SolidStepInputs& in, SubstepGroups& groups, int g, const std::vector<MassSpringBody>& bodies,
+                   SpectralWorkspace& scratch) {
+  if (g < 0) groups.members.clear();
+  else groups.members.resize(bodies.size());
+  groups.implicit_of_body.resize(bodies.size());
+  double dt_s = g < 0 ? in.max_substep : groups.max_substep[g];
+  int n_members = 0;
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    if (g >= 0) groups.members[b] = groups.group_of[b] == g ? 1 : 0;
+    if (!selected(groups.members, b)) continue;
+    ++n_members;
+    const double spring_substep = stable_substep(bodies[b], /*safety=*/0.5, scratch);
+    groups.implicit_of_body[b] = uses_implicit_springs(bodies[b], in.dt, spring_substep) ? 1 : 0;
+    if (!groups.implicit_of_body[b]) dt_s = std::min(dt_s, spring_substep);
+  }
+  if (n_members == 0) return 0;
+  if (in.fixed_substeps > 0) return in.fixed_substeps;
+  if (!(dt_s > 0.0)) throw std::runtime_error("advance_bodies: non-positive stable sub-step");
+  return std::max(1, static_cast<int>(std::ceil(in.dt / dt_s * (1.0 - 1e-12))));
+}
+
+// Group numbers to visit: -1 alone in the global mode, else 0 .. n_groups - 1.
+int first_group(const SubstepGroups& groups, const std::vector<MassSpringBody>& bodies) {
+  return groups.group_of.size() == bodies.size() ? 0 : -1;
+}
+int end_group(const SubstepGroups& groups, const std::vector<MassSpringBody>& bodies) {
+  return groups.group_of.size() == bodies.size() ? static_cast<int>(groups.max_substep.size()) : 0;
+}
+
+void record(const SubstepGroups& groups, int n_sub, std::vector<int>& substeps_of_body, SolidStepCount& count) {
+  count.max_substeps = std::max(count.max_substeps, n_sub);
+  for (std::size_t b = 0; b < substeps_of_body.size(); ++b) {
+    if (!selected(groups.members, b)) continue;
+    substeps_of_body[b] = n_sub;
+    count.body_substeps += n_sub;
+  }
+}
+
+}  // namespace
+
+SolidStepCount count_substeps(const SolidStepInputs& in, SubstepGroups& groups,
+                              const std::vector<MassSpringBody>& bodies) {
+  SpectralWorkspace local;
+  SpectralWorkspace& scratch = in.spectral_workspace != nullptr ? *in.spectral_workspace : local;
+  SolidStepCount count;
+  groups.substeps_of_body.assign(bodies.size(), 0);
+  for (int g = first_group(groups, bodies); g < end_group(groups, bodies); ++g)
+    record(groups, group_substeps(in, groups, g, bodies, scratch), groups.substeps_of_body, count);
+  return count;
+}
+
+SolidStepCount advance_bodies(const SolidStepInputs& in, const std::vector<SwellingSchedule>& swelling,
+                              const ContactForces& contact_forces, SubstepGroups& groups,
+                              std::vector<BodyCoupling>& coupling, std::vector<std::vector<Vec2>>& contact_work,
+                              std::vector<RigidBody>& rigid, std::vector<MassSpringBody>& bodies) {
+  SpectralWorkspace local;
+  SpectralWorkspace& scratch = in.spectral_workspace != nullptr ? *in.spectral_workspace : local;
+  std::vector<ImplicitSpringSystem> local_implicit;
+  std::vector<ImplicitSpringSystem>& implicit = in.implicit_systems != nullptr ? *in.implicit_systems : local_implicit;
+  implicit.resize(bodies.size());
+  contact_work.resize(bodies.size());
+  for (std::size_t b = 0; b < bodies.size(); ++b) contact_work[b].resize(bodies[b].n_points());
+  groups.substeps_of_body.resize(bodies.size());
+  SolidStepCount count;
+  // Groups cannot touch one another within the step (contact_model.hpp), so they advance one
+  // after the other, each over the whole step with its own sub-step.
+  for (int g = first_group(groups, bodies); g < end_group(groups, bodies); ++g) {
+    const int n_sub = group_substeps(in, groups, g, bodies, scratch);
+    if (n_sub == 0) continue;
+    advance_group(in, swelling, contact_forces, groups.members, groups.implicit_of_body, implicit, n_sub, coupling,
+                  contact_work, rigid, bodies);
+    record(groups, n_sub, groups.substeps_of_body, count);
+  }
   apply_swelling_schedules(swelling, in.time + in.dt, bodies);  // state at t^{n+1}
-  return n_sub;
+  return count;
 }
 
 }  // namespace ibms

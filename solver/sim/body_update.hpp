@@ -1,6 +1,12 @@
-// The solid part of the step (METHOD.md §5.3, §7 step 6): n_sub = ceil(dt / dt_s) symplectic-Euler
-// sub-steps of all bodies together, dt_s the smallest stable sub-step of any body (§5.1, safety
-// 0.5), with springs and dashpots, buoyancy-corrected gravity F_e = M (1 - rho_f/rho_s) g (§1.7
+// The solid part of the step (METHOD.md §5.3, §7 step 6), multi-rate (issue 12): the bodies are
+// split into groups that cannot touch one another within the step (contact_model.hpp,
+// find_contact_groups); each group takes n_sub = ceil(dt / dt_s) symplectic-Euler sub-steps, dt_s
+// the smallest stable sub-step of its members (§5.1, safety 0.5) and, if the group may touch
+// something, the contact sub-step of its members. Bodies in contact share their sub-steps, so pair
+// forces stay equal and opposite. A mass-spring body whose springs would need more than
+// implicit_springs_above_substeps explicit sub-steps (or spring_integrator = "implicit") takes
+// linearly implicit Euler steps instead (solid/implicit_euler.hpp) and sets no sub-step of its own.
+// Each sub-step re-evaluates springs and dashpots, buoyancy-corrected gravity F_e = M (1 - rho_f/rho_s) g (§1.7
 // step 5, §2.6), contact forces (the hook below) and the swelling law (natural lengths and
 // masses, §1.8) re-evaluated every sub-step, while the fluid reaction F_f and the inner-fluid
 // force F_int stay frozen at their values from the projection.
@@ -11,6 +17,8 @@
 #include <vector>
 
 #include "sim/body_coupling.hpp"
+#include "contact/contact_model.hpp"
+#include "solid/implicit_euler.hpp"
 #include "solid/rigid_motion.hpp"
 #include "solid/stable_substep.hpp"
 
@@ -19,39 +27,69 @@ namespace ibms {
 // Contact seam: adds the contact force on every point of every body [force/length] at `time`
 // (forces[b][p], sized like the bodies, zeroed by the caller). Called once per sub-step.
 // The default is no_contact_forces; solver/contact provides the DEM version.
-using ContactForces = std::function<void(const std::vector<MassSpringBody>& bodies, double time,
-                                         std::vector<std::vector<Vec2>>& forces)>;
-void no_contact_forces(const std::vector<MassSpringBody>& bodies, double time,
+// members: the contact group being sub-stepped; only contacts among its bodies and with the walls.
+using ContactForces = std::function<void(const std::vector<MassSpringBody>& bodies, const BodyMask& members,
+                                         double time, std::vector<std::vector<Vec2>>& forces)>;
+void no_contact_forces(const std::vector<MassSpringBody>& bodies, const BodyMask& members, double time,
                        std::vector<std::vector<Vec2>>& forces);
 
 // Sets every body's diameter (natural lengths) and masses (constant density) to D(time).
 void apply_swelling_schedules(const std::vector<SwellingSchedule>& swelling, double time,
                               std::vector<MassSpringBody>& bodies);
 
-// Number of sub-steps the next fluid step of length dt needs, from stable_substep (§5.3).
-// work: scratch of the spectral bounds (null: a local one, which allocates).
-int substeps_for(const std::vector<MassSpringBody>& bodies, double dt, double max_substep = HUGE_VAL,
-                 SpectralWorkspace* work = nullptr);
+// How the bodies are sub-stepped in one fluid step: group_of[b] the group of body b (bodies of one
+// group advance together), max_substep[g] the contact sub-step bound of group g (HUGE_VAL when it
+// cannot touch anything). Empty group_of: all bodies one group bounded by SolidStepInputs::max_substep
+// (the global sub-step of the first version, run.solid_substeps = "global").
+struct SubstepGroups {
+  std::vector<int> group_of;
+  std::vector<double> max_substep;
+  BodyMask members;  // scratch: the group being advanced
+  std::vector<int> substeps_of_body;  // out: the sub-steps body b took in the latest step
+  std::vector<char> implicit_of_body; // out: body b's springs took implicit steps in the latest step
+};
 
+// spring_integrator = "auto" chooses the implicit step when the explicit one would need more than
+// this many sub-steps per fluid step: the springs' fastest period is then below dt / 25 (the
+// explicit limit is ~ 1 / omega_max with safety 0.5), far from what the fluid step resolves, and the
+// implicit step's damping of such modes is what a stiff body should show. Below it the explicit
+// sub-steps are cheap and keep the elastic vibrations.
+inline constexpr double implicit_springs_above_substeps = 50.0;
+// Whether body b's springs take the implicit step in a fluid step of length dt, given their
+// explicit stable sub-step (only mass_spring bodies with springs can).
+bool uses_implicit_springs(const MassSpringBody& body, double dt, double spring_substep);
+
+// What advance_bodies did: the most sub-steps of any group, and the sub-steps summed over bodies
+// (the work of the springs: with one group, n_bodies * max_substeps).
+struct SolidStepCount {
+  int max_substeps = 0;
+  long body_substeps = 0;
+};
 struct SolidStepInputs {
   double time = 0.0;                 // t^n [time]
   double dt = 0.0;                   // fluid step [time]
   double fluid_density = 0.0;        // rho_f [mass/length^3]
   Vec2 gravity{0.0, 0.0};            // g [length/time^2]
-  double max_substep = HUGE_VAL;     // further sub-step bound, e.g. the contact duration / 20 [time]
+  double max_substep = HUGE_VAL;     // further sub-step bound of the global mode (no groups) [time]
   int fixed_substeps = 0;            // > 0: exactly this many sub-steps, no stability bound (stability studies)
   SpectralWorkspace* spectral_workspace = nullptr;  // scratch of the sub-step bound (null: allocates)
+  std::vector<ImplicitSpringSystem>* implicit_systems = nullptr;  // per body, reused (null: allocates)
 };
 
-// Advances all bodies from t^n to t^n + dt; returns the number of sub-steps taken. Each sub-step
+// Advances all bodies from t^n to t^n + dt, group by group (groups.group_of; empty: one group).
+// Each sub-step
 // moves each body by its kind (DESIGN.md §11): mass_spring by symplectic Euler of its points;
 // rigid by Newton-Euler with the total hydrodynamic force and torque (frozen over the step),
 // the contact forces summed to force and torque about X_c, and m (1 - rho_f/rho_s) g; prescribed
 // to its scene motion at the sub-step's end. rigid[b] holds the motion of rigid and prescribed
 // bodies (unused for mass_spring). contact_work is scratch (resized once).
-int advance_bodies(const SolidStepInputs& in, const std::vector<SwellingSchedule>& swelling,
-                   const ContactForces& contact_forces, std::vector<BodyCoupling>& coupling,
-                   std::vector<std::vector<Vec2>>& contact_work, std::vector<RigidBody>& rigid,
-                   std::vector<MassSpringBody>& bodies);
+// The sub-steps advance_bodies would take with these groups (fills groups.substeps_of_body).
+SolidStepCount count_substeps(const SolidStepInputs& in, SubstepGroups& groups,
+                              const std::vector<MassSpringBody>& bodies);
+
+SolidStepCount advance_bodies(const SolidStepInputs& in, const std::vector<SwellingSchedule>& swelling,
+                              const ContactForces& contact_forces, SubstepGroups& groups,
+                              std::vector<BodyCoupling>& coupling, std::vector<std::vector<Vec2>>& contact_work,
+                              std::vector<RigidBody>& rigid, std::vector<MassSpringBody>& bodies);
 
 }  // namespace ibms

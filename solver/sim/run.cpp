@@ -128,7 +128,7 @@ std::vector<SeriesValue> body_series(const Simulation& sim) {
     row.push_back({name + "/area", "length^2 per unit depth", polygon_area(body)});
     row.push_back({name + "/deformation", "-", deformation_parameter(body)});
     row.push_back({name + "/spring_energy", "energy per unit depth", spring_energy(body, body.length_scale())});
-    row.push_back({name + "/n_substeps", "-", static_cast<double>(sim.last_n_substeps)});
+    row.push_back({name + "/n_substeps", "-", static_cast<double>(sim.body_substeps(b))});
     double max_target = 0.0;
     for (const auto& u : sim.coupling()[b].target_velocity) max_target = std::max(max_target, std::hypot(u[0], u[1]));
     row.push_back({name + "/max_target_speed", "length/time", max_target});

@@ -54,10 +54,10 @@ Simulation::Simulation(const Scene& scene)
     contact_box_ = WallBox{{grid_.origin_x, grid_.origin_y}, {grid_.length_x, grid_.length_y},
                            {grid_.periodic_x, grid_.periodic_y}};
     // The contact seam of body_update.hpp: DEM forces every sub-step, stats merged per step.
-    contact_forces = [this](const std::vector<MassSpringBody>& bodies, double /*time*/,
+    contact_forces = [this](const std::vector<MassSpringBody>& bodies, const BodyMask& members, double /*time*/,
                             std::vector<std::vector<Vec2>>& forces) {
       auto timer = timers_.time(Stage::contacts);
-      const ContactStats stats = add_contact_forces(contact_model_, bodies, contact_box_, forces);
+      const ContactStats stats = add_contact_forces(contact_model_, bodies, contact_box_, forces, members);
       total_pair_checks += stats.n_pair_checks;
       last_contact_stats.include(stats);
     };
@@ -69,6 +69,36 @@ Simulation::Simulation(const Scene& scene)
 
 bool Simulation::contact_possible(double dt) const {
   if (!has_contacts()) return false;
+  find_groups(dt);
+  return contact_groups_.any_contact();
+}
+
+double Simulation::global_contact_limit(double dt) const {
+  return contact_possible(dt) ? contact_substep(contact_model_, bodies_) : HUGE_VAL;
+}
+
+SubstepGroups& Simulation::substep_groups(double dt) {
+  plan_substep_groups(dt, substep_groups_);
+  return substep_groups_;
+}
+
+void Simulation::plan_substep_groups(double dt, SubstepGroups& groups) const {
+  if (scene_.run.solid_substeps == "global") {
+    groups.group_of.clear();
+    return;
+  }
+  find_groups(dt);
+  groups.group_of.assign(contact_groups_.group_of.begin(), contact_groups_.group_of.end());
+  groups.max_substep.assign(contact_groups_.n_groups, HUGE_VAL);
+  for (int g = 0; g < contact_groups_.n_groups; ++g) {
+    if (!contact_groups_.may_touch[g]) continue;
+    groups.members.resize(bodies_.size());
+    for (std::size_t b = 0; b < bodies_.size(); ++b) groups.members[b] = groups.group_of[b] == g ? 1 : 0;
+    groups.max_substep[g] = contact_substep(contact_model_, bodies_, groups.members);
+  }
+}
+
+void Simulation::find_groups(double dt) const {
   // Extra reach of each body within dt (contact/contact_model.hpp), all bounds doubled:
   //   travel from its acceleration a_b dt^2 (the exact 1/2 a dt^2 doubled), with
   //   a_b = |F_hydro| / m + |1 - rho_f/rho_s| |g| (frozen over the step; springs and contacts act
@@ -95,7 +125,7 @@ bool Simulation::contact_possible(double dt) const {
     const double growth = spec.swelling.enabled ? spec.swelling.rate * dt * (1.0 + contact_model_.cds_radius_fraction) : 0.0;
     contact_reach_[b] = acceleration * dt * dt + growth;
   }
-  return contact_possible_within(contact_model_, bodies_, contact_box_, dt, contact_reach_);
+  find_contact_groups(contact_model_, bodies_, contact_box_, dt, contact_reach_, contact_groups_);
 }
 
 std::vector<std::string> Simulation::stage_names() const {
@@ -116,11 +146,16 @@ std::vector<std::string> Simulation::stage_names() const {
                          ? "inner-fluid inertia (variant K: exact triangle-cell overlaps, Reynolds-transport form)"
                          : "inner-fluid inertia off (variant A)");
     std::string kinds;
-    if (scene_.has_kind("mass_spring")) kinds += "mass-spring: sub-stepped symplectic Euler (springs, buoyant gravity, swelling); ";
+    if (scene_.has_kind("mass_spring"))
+      kinds += "mass-spring: symplectic Euler sub-steps, or implicit Euler for stiff springs (springs, buoyant gravity, "
+               "swelling); ";
     if (scene_.has_kind("rigid")) kinds += "rigid: Newton-Euler (force, torque, buoyant gravity); ";
     if (scene_.has_kind("prescribed")) kinds += "prescribed: scene motion; ";
     stages.push_back("hydrodynamic force and torque on each body");
-    stages.push_back("bodies (" + kinds + "contact hook)");
+    stages.push_back("bodies (" + kinds + "contact hook" +
+                     (scene_.run.solid_substeps == "per_group" ? "; each group of bodies that may touch within the step "
+                                                                 "at its own sub-step)"
+                                                               : "; all bodies at the smallest sub-step)"));
     if (has_contacts()) stages.push_back("  contacts (DEM spring-dashpots on CDS, every sub-step; walls)");
     if (has_pair_search()) stages.push_back("  pair search (CDS: body-box broad phase, cell list in periodic boxes; every sub-step)");
   }

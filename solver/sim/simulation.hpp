@@ -65,6 +65,17 @@ class Simulation {
   // Whether a contact can be under way within the next step of length dt (contact/contact_model.hpp);
   // false without contacts. Only then does the contact sub-step bound apply.
   bool contact_possible(double dt) const;
+  // How the bodies sub-step in the next step of length dt (sim/body_update.hpp): the contact groups
+  // with the contact sub-step bound of each group that may touch something; with
+  // run.solid_substeps = "global", no groups (one group, bound global_contact_limit(dt)).
+  SubstepGroups& substep_groups(double dt);
+  void plan_substep_groups(double dt, SubstepGroups& groups) const;  // the same into `groups`
+  // Sub-steps body b took in the latest step (0 before the first).
+  int body_substeps(std::size_t b) const {
+    return b < substep_groups_.substeps_of_body.size() ? substep_groups_.substeps_of_body[b] : 0;
+  }
+  // The first version's bound: the contact sub-step of all bodies if any contact is possible.
+  double global_contact_limit(double dt) const;
   ContactStats last_contact_stats;  // merged over the sub-steps of the latest step
   long total_pair_checks = 0;       // CDS pairs examined by the pair search over the run [-]
   // Pair search runs only with contacts and two or more bodies (DESIGN.md §3: one body, no pair search).
@@ -73,10 +84,13 @@ class Simulation {
   // (bench/bench_stability.cpp's fixed-step runs); 0: automatic sub-stepping (METHOD.md §5.3).
   int fixed_solid_substeps = 0;
   SpectralWorkspace spectral_workspace;  // scratch of the solid sub-step bound, reused every step
+  std::vector<ImplicitSpringSystem> implicit_systems;  // per body: storage of the implicit spring step
 
   ProjectionStats last_projection;  // diagnostics of the latest step
-  int last_n_substeps = 0;          // solid sub-steps of the latest step [-]
-  long total_substeps = 0;          // solid sub-steps since the Simulation was built [-]
+  int last_n_substeps = 0;          // solid sub-steps of the latest step, most of any group [-]
+  long last_body_substeps = 0;      // solid sub-steps of the latest step summed over bodies [-]
+  long total_substeps = 0;          // solid sub-steps since the Simulation was built (most of any group) [-]
+  long total_body_substeps = 0;     // the same summed over bodies: the work of the solid [-]
 
  private:
   Scene scene_;
@@ -93,6 +107,9 @@ class Simulation {
   ContactModel contact_model_;
   WallBox contact_box_;
   mutable std::vector<double> contact_reach_;  // scratch of contact_possible, one entry per body
+  mutable ContactGroups contact_groups_;       // scratch of contact_possible and substep_groups
+  SubstepGroups substep_groups_;
+  void find_groups(double dt) const;           // contact_groups_ for a step of length dt
 };
 
 // Builders shared with `ibms info` and tests.

@@ -41,13 +41,19 @@ void advance_one_step(Simulation& sim, double dt) {
                             sim.coupling());  // F_int = rho_f dI/dt (variant K) or 0 (A), §1.7
     compute_hydrodynamic_loads(sim.bodies(), sim.coupling());  // F, T of the fluid on each body (eq. 1.7a)
     sim.last_contact_stats = ContactStats{};
-    // Contact sub-steps only while a contact is possible within this step (issue 10).
-    const double contact_limit = sim.contact_possible(dt) ? contact_substep(sim.contact_model(), sim.bodies()) : HUGE_VAL;
-    sim.last_n_substeps = advance_bodies({time_n, dt, sim.fluid_density(), sim.scene().fluid.gravity, contact_limit,
-                                          sim.fixed_solid_substeps, &sim.spectral_workspace},
-                                         sim.swelling(), sim.contact_forces, sim.coupling(), sim.contact_work(),
-                                         sim.rigid(), sim.bodies());  // sub-steps by body kind, §5.3
-    sim.total_substeps += sim.last_n_substeps;
+    // Each group of bodies that may touch within the step takes its own sub-step; contact sub-steps
+    // only for a group that may touch something (issues 10 and 12).
+    SubstepGroups& groups = sim.substep_groups(dt);
+    const double global_limit = groups.group_of.empty() ? sim.global_contact_limit(dt) : HUGE_VAL;
+    const SolidStepCount count =
+        advance_bodies({time_n, dt, sim.fluid_density(), sim.scene().fluid.gravity, global_limit,
+                        sim.fixed_solid_substeps, &sim.spectral_workspace, &sim.implicit_systems},
+                       sim.swelling(), sim.contact_forces, groups, sim.coupling(), sim.contact_work(), sim.rigid(),
+                       sim.bodies());  // sub-steps by body kind, §5.3
+    sim.last_n_substeps = count.max_substeps;
+    sim.last_body_substeps = count.body_substeps;
+    sim.total_substeps += count.max_substeps;
+    sim.total_body_substeps += count.body_substeps;
   }
 }
 

@@ -92,6 +92,13 @@ BodyKind body_kind_from_name(const std::string& name) {
   throw std::invalid_argument("unknown body kind '" + name + "' (mass_spring | rigid | prescribed)");
 }
 
+SpringIntegrator spring_integrator_from_name(const std::string& name) {
+  if (name == "auto") return SpringIntegrator::automatic;
+  if (name == "explicit") return SpringIntegrator::explicit_euler;
+  if (name == "implicit") return SpringIntegrator::implicit_euler;
+  throw std::invalid_argument("unknown spring_integrator '" + name + "' (auto | explicit | implicit)");
+}
+
 const char* body_kind_name(BodyKind kind) {
   switch (kind) {
     case BodyKind::mass_spring: return "mass_spring";
@@ -108,6 +115,7 @@ MassSpringBody build_body(const BodySpec& spec, double fluid_density) {
   if (kind != BodyKind::mass_spring) point_set.spring_stiffness = 0.0;
   MassSpringBody body = build_wheel(point_set);
   body.kind = kind;
+  body.integrator = spring_integrator_from_name(spec.spring_integrator);
   if (kind != BodyKind::mass_spring) body.springs.clear();
   // Initial rotation about the centre: U_i = V + Omega e_z x (x_i - X_c).
   const auto& centre = body.position[body.centre_index()];

@@ -24,11 +24,16 @@ struct Spring {
 // Newton-Euler, or a motion given by the scene (solid/rigid_motion.hpp). Rigid and prescribed
 // bodies carry no springs; a prescribed body is infinitely heavy for contacts.
 enum class BodyKind { mass_spring, rigid, prescribed };
+
+// How a mass_spring body's springs are integrated (scene key spring_integrator; sim/body_update.hpp).
+enum class SpringIntegrator { automatic, explicit_euler, implicit_euler };
+SpringIntegrator spring_integrator_from_name(const std::string& name);  // auto | explicit | implicit
 BodyKind body_kind_from_name(const std::string& name);  // scene names (std::invalid_argument if unknown)
 const char* body_kind_name(BodyKind kind);
 
 struct MassSpringBody {
   BodyKind kind = BodyKind::mass_spring;
+  SpringIntegrator integrator = SpringIntegrator::automatic;
   std::vector<std::array<double, 2>> position;  // x_i [length]; rim 0..n_surface-1, centre n_surface
   std::vector<std::array<double, 2>> velocity;  // U_i [length/time]
   std::vector<double> mass;                     // M_i [mass/length] = density * solid_area() * mass_fraction_i

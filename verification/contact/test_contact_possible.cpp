@@ -71,3 +71,42 @@ BOOST_AUTO_TEST_CASE(a_body_near_the_rim_of_its_prescribed_container_can_touch_i
   BOOST_TEST(!contact_possible_within(model(), {container, disk({0.5, 0.5}, 0.2)}, box, 0.01, no_extra));
   BOOST_TEST(contact_possible_within(model(), {container, disk({0.79, 0.5}, 0.2)}, box, 0.01, no_extra));
 }
+
+// Contact groups (issue 12, multi-rate sub-steps): bodies joined through a chain of pairs that may
+// touch form one group, whatever the order of the bodies; a group touches if a pair in it or one
+// of its bodies and a wall may; groups are numbered by their lowest body.
+BOOST_AUTO_TEST_CASE(groups_join_chains_of_close_pairs_and_keep_far_bodies_apart) {
+  const WallBox box{{0.0, 0.0}, {2.0, 1.0}, {false, false}};
+  // 0 and 3 close (rims 0.015 apart), 3 and 1 close, 2 alone in the middle, 4 alone near a wall.
+  const std::vector<MassSpringBody> bodies{disk({0.3, 0.5}, 0.2),  disk({0.73, 0.5}, 0.2), disk({1.3, 0.5}, 0.2),
+                                           disk({0.515, 0.5}, 0.2), disk({1.89, 0.5}, 0.2)};
+  const std::vector<double> no_extra(bodies.size(), 0.0);
+  ContactGroups groups;
+  find_contact_groups(model(), bodies, box, 0.01, no_extra, groups);
+  BOOST_TEST(groups.n_groups == 3);
+  BOOST_TEST(groups.group_of == (std::vector<int>{0, 0, 1, 0, 2}), boost::test_tools::per_element());
+  BOOST_TEST(groups.may_touch == (std::vector<char>{1, 0, 1}), boost::test_tools::per_element());
+  BOOST_TEST(groups.any_contact());
+  // Reused: far apart, each body its own group, nothing to touch.
+  const std::vector<MassSpringBody> apart{disk({0.3, 0.5}, 0.2), disk({1.0, 0.5}, 0.2), disk({1.6, 0.5}, 0.2)};
+  find_contact_groups(model(), apart, box, 0.01, std::vector<double>(3, 0.0), groups);
+  BOOST_TEST(groups.n_groups == 3);
+  BOOST_TEST(groups.group_of == (std::vector<int>{0, 1, 2}), boost::test_tools::per_element());
+  BOOST_TEST(!groups.any_contact());
+  // Contacts off: groups of one, never touching, even for overlapping bodies.
+  find_contact_groups(ContactModel{}, bodies, box, 0.01, no_extra, groups);
+  BOOST_TEST(groups.n_groups == 5);
+  BOOST_TEST(!groups.any_contact());
+}
+
+BOOST_AUTO_TEST_CASE(a_chain_listed_backwards_is_one_group) {
+  // 4 - 3 - 2 - 1 - 0 touching in a row, listed so that each union joins two existing roots.
+  const WallBox box{{0.0, 0.0}, {3.0, 1.0}, {false, false}};
+  std::vector<MassSpringBody> bodies;
+  const double x[] = {0.5, 1.38, 0.72, 1.16, 0.94};  // 0 - 2 - 4 - 3 - 1 along x, 0.02 gaps
+  for (double xc : x) bodies.push_back(disk({xc, 0.5}, 0.2));
+  ContactGroups groups;
+  find_contact_groups(model(), bodies, box, 0.01, std::vector<double>(bodies.size(), 0.0), groups);
+  BOOST_TEST(groups.n_groups == 1);
+  BOOST_TEST(groups.group_of == (std::vector<int>(5, 0)), boost::test_tools::per_element());
+}

@@ -74,11 +74,14 @@ inline double relative_velocity_x(const std::vector<std::array<double, 2>>& v) {
 }
 
 // Runs until the bodies have been apart for as long as they touched (so a re-contact would show).
+// implicit_springs: the springs take implicit Euler steps (no spring limit on the sub-step).
 inline CollisionRecord collide(const ContactModel& model, const WallBox& box,
-                               std::vector<MassSpringBody> bodies) {
+                               std::vector<MassSpringBody> bodies, bool implicit_springs = false) {
   CollisionRecord record;
+  std::vector<ImplicitSpringSystem> implicit;
   record.substep = contact_substep(model, bodies);
-  for (const auto& body : bodies) record.substep = std::min(record.substep, stable_substep(body));
+  if (!implicit_springs)
+    for (const auto& body : bodies) record.substep = std::min(record.substep, stable_substep(body));
   const auto total_momentum = [&] {
     std::array<double, 2> p{0.0, 0.0};
     for (const auto& body : bodies)
@@ -97,7 +100,8 @@ inline CollisionRecord collide(const ContactModel& model, const WallBox& box,
   const double relative_before = relative_velocity_x(record.velocity_before);
   long first_contact = -1;
   for (long step = 0; step < 100000000; ++step) {
-    const ContactStats stats = advance_bodies_substep(model, box, record.substep, no_external, bodies);
+    const ContactStats stats = advance_bodies_substep(model, box, record.substep, no_external, bodies,
+                                                      implicit_springs ? &implicit : nullptr);
     const int n_active = stats.n_active_pairs + stats.n_wall_contacts;
     record.max_active = std::max(record.max_active, n_active);
     record.max_overlap = std::max(record.max_overlap, stats.max_overlap);

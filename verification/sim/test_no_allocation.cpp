@@ -7,6 +7,8 @@
 
 #include <cstdlib>
 #include <new>
+#include <string>
+#include <vector>
 
 #include "scene/scene_reader.hpp"
 #include "sim/simulation.hpp"
@@ -26,8 +28,9 @@ void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
 namespace {
 
-long allocations_in_steps(const char* scene_path, int warm_up, int counted) {
-  const ibms::Scene scene = ibms::read_scene_file(scene_path, {});
+long allocations_in_steps(const char* scene_path, int warm_up, int counted,
+                          const std::vector<std::string>& overrides = {}) {
+  const ibms::Scene scene = ibms::read_scene_file(scene_path, overrides);
   ibms::Simulation sim(scene);
   const double dt = scene.run.time_step;
   for (int k = 0; k < warm_up; ++k) ibms::advance_one_step(sim, dt);
@@ -47,6 +50,14 @@ long allocations_in_steps(const char* scene_path, int warm_up, int counted) {
 BOOST_AUTO_TEST_CASE(mass_spring_bodies_with_swelling_and_contacts_step_without_allocating) {
   // Wheel-wheel contact from step 34, wheel-wall from step 70 (restart_scene.toml).
   BOOST_TEST(allocations_in_steps(IBMS_SCENE_MASS_SPRING, /*warm_up=*/100, /*counted=*/150) == 0);
+}
+
+BOOST_AUTO_TEST_CASE(implicit_springs_and_global_substeps_step_without_allocating) {
+  // The same scene with the springs' implicit step (its LDL^T storage is made once per body) and
+  // with the first version's global sub-steps.
+  BOOST_TEST(allocations_in_steps(IBMS_SCENE_MASS_SPRING, 100, 150,
+                                  {"bodies.0.spring_integrator=implicit", "bodies.1.spring_integrator=implicit"}) == 0);
+  BOOST_TEST(allocations_in_steps(IBMS_SCENE_MASS_SPRING, 100, 150, {"run.solid_substeps=global"}) == 0);
 }
 
 BOOST_AUTO_TEST_CASE(rigid_and_prescribed_bodies_with_contacts_step_without_allocating) {

@@ -66,8 +66,25 @@ BOOST_AUTO_TEST_CASE(two_body_scene_searches_pairs) {
   scene.bodies[0].centre = {0.35, 0.5};
   scene.bodies.push_back(scene.bodies[0]);
   scene.bodies[1].centre = {0.65, 0.5};
-  Simulation sim(scene);
-  BOOST_TEST(lists_stage(sim, "pair search"));
-  run_steps(sim, 5, 0.005);
-  BOOST_TEST(sim.total_pair_checks > 0);
+  {  // global sub-steps (the first version): the pair search runs every sub-step
+    scene.run.solid_substeps = "global";
+    Simulation sim(scene);
+    BOOST_TEST(lists_stage(sim, "pair search"));
+    run_steps(sim, 5, 0.005);
+    BOOST_TEST(sim.total_pair_checks > 0);
+  }
+  {  // per group (default): bodies 0.1 apart cannot touch within a step, so each is a group of
+     // one and no pair is searched (issue 12)
+    scene.run.solid_substeps = "per_group";
+    Simulation sim(scene);
+    run_steps(sim, 5, 0.005);
+    BOOST_TEST(sim.total_pair_checks == 0);
+  }
+  {  // per group, bodies 0.004 apart: one group, searched
+    scene.bodies[0].centre = {0.398, 0.5};
+    scene.bodies[1].centre = {0.602, 0.5};
+    Simulation sim(scene);
+    run_steps(sim, 5, 0.005);
+    BOOST_TEST(sim.total_pair_checks > 0);
+  }
 }
