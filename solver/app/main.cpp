@@ -59,9 +59,11 @@ int run_command(const std::string& scene_path, const std::vector<std::string>& o
                  summary.output_path.c_str());
     return exit_interrupted;
   }
-  if (!quiet)
+  if (!quiet) {
     std::fprintf(stderr, "ibms: %ld steps to t = %.6g (%s) in %.2f s; output %s\n", summary.steps, summary.time,
                  summary.stop_reason.c_str(), summary.wall_seconds, summary.output_path.c_str());
+    std::fprintf(stderr, "%s", ibms::stage_timing_table(sim, summary.wall_seconds).c_str());
+  }
   return 0;
 }
 

@@ -210,8 +210,33 @@ void write_timing(OutputFile& out, const Simulation& sim, double wall_seconds) {
     entries.push_back({std::string(stage_names[s]), sim.timers().seconds(static_cast<Stage>(s)),
                        sim.timers().calls(static_cast<Stage>(s))});
   entries.push_back({"run", wall_seconds, sim.fluid().step});
+  if (sim.has_bodies()) {  // the solid's work: seconds of the bodies stage, calls = sub-step totals
+    entries.push_back({"solid_substeps", sim.timers().seconds(Stage::bodies), sim.total_substeps});
+    entries.push_back({"body_substeps", sim.timers().seconds(Stage::bodies), sim.total_body_substeps});
+  }
   out.write_timing(entries);
 }
+
+}  // namespace
+
+std::string stage_timing_table(const Simulation& sim, double wall_seconds) {
+  std::string text = fmt::format("{:<14} {:>10} {:>7} {:>10}\n", "stage", "seconds", "share", "calls");
+  for (int s = 0; s < static_cast<int>(Stage::count); ++s) {
+    const double seconds = sim.timers().seconds(static_cast<Stage>(s));
+    const long calls = sim.timers().calls(static_cast<Stage>(s));
+    if (calls == 0) continue;
+    text += fmt::format("{:<14} {:>10.3f} {:>6.1f}% {:>10}{}\n", stage_names[s], seconds,
+                        wall_seconds > 0 ? 100.0 * seconds / wall_seconds : 0.0, calls,
+                        static_cast<Stage>(s) == Stage::contacts ? "  (inside bodies)" : "");
+  }
+  text += fmt::format("{:<14} {:>10.3f} {:>6.1f}% {:>10}  (steps)\n", "run", wall_seconds, 100.0, sim.fluid().step);
+  if (sim.has_bodies())
+    text += fmt::format("solid sub-steps: {} (most of any body group, summed over steps), {} summed over bodies\n",
+                        sim.total_substeps, sim.total_body_substeps);
+  return text;
+}
+
+namespace {
 
 std::string format_seconds(double s) {
   if (!std::isfinite(s)) return "?";

@@ -31,4 +31,8 @@ struct RunSummary {
 
 RunSummary run_simulation(Simulation& sim, const RunOptions& options);
 
+// The /timing figures as a table (stage, seconds, share of the wall time, calls; the solid
+// sub-step totals): what `ibms run` prints at the end unless --quiet.
+std::string stage_timing_table(const Simulation& sim, double wall_seconds);
+
 }  // namespace ibms

@@ -49,6 +49,19 @@ BOOST_AUTO_TEST_CASE(run_output_carries_wall_seconds_and_calls_per_stage) {
       BOOST_TEST(stage_calls >= summary.steps);
   }
   BOOST_TEST(stages <= run * 1.001 + 1e-6);  // stages are inside the run's wall time
+  // The solid sub-step totals, as the Simulation counted them (>= one per step; summed over the
+  // bodies at least as many).
+  long substeps = 0, body_substeps = 0;
+  read_scalar(file, "/timing/solid_substeps", substeps);
+  read_scalar(file, "/timing/body_substeps", body_substeps);
+  BOOST_TEST(substeps == sim.total_substeps);
+  BOOST_TEST(body_substeps == sim.total_body_substeps);
+  BOOST_TEST(substeps >= summary.steps);
+  BOOST_TEST(body_substeps >= substeps);
+  // The printed table names every stage that ran and the totals.
+  const std::string table = ibms::stage_timing_table(sim, summary.wall_seconds);
+  for (const char* name : {"predictor", "projection", "bodies", "run", "solid sub-steps"})
+    BOOST_TEST(table.find(name) != std::string::npos);
   H5Fclose(file);
   std::filesystem::remove(out);
 }
