@@ -91,7 +91,8 @@ Scene settling_scene(double dt, double spring_stiffness) {
   Scene s = read_scene_file(std::string(IBMS_SOURCE_DIR) + "/validation/settling_disk/scene.toml",
                             {"domain.cells_x=40", "domain.cells_y=120", "bodies.0.n_surface_points=16",
                              "run.end_time=0.1", "run.time_step=" + std::to_string(dt),
-                             "bodies.0.spring_stiffness=" + std::to_string(spring_stiffness)});
+                             "bodies.0.spring_stiffness=" + std::to_string(spring_stiffness),
+                             "bodies.0.spring_integrator=explicit"});  // the map of the explicit springs
   return s;
 }
 
@@ -101,7 +102,7 @@ Scene collision_scene(double dt, double spring_stiffness, double dem_stiffness) 
                              "bodies.0.n_surface_points=16", "fluid.gravity=[0.0, 0.0]", "run.end_time=0.08",
                              "run.time_step=" + std::to_string(dt), "bodies.0.spring_stiffness=" + std::to_string(spring_stiffness),
                              "contact.stiffness=" + std::to_string(dem_stiffness), "contact.restitution_coefficient=0.9",
-                             "contact.cds_radius_fraction=0.05"});
+                             "contact.cds_radius_fraction=0.05", "bodies.0.spring_integrator=explicit"});
   s.bodies.push_back(s.bodies[0]);
   s.bodies[0].centre = {0.85, 0.5};  // rim gap 0.05 cm: the CDS touch after a few ms
   s.bodies[0].velocity = {5.0, 0.0};

@@ -29,6 +29,8 @@ cmake --build "$build" -j "$jobs"
 status=0
 rm -f "$build/verification_results/convergence.csv" "$build/verification_results/kernel_moments.csv"
 echo "== unit and convergence tests"
+# Tests and cases run side by side on all cores: one OpenMP thread each.
+export OMP_NUM_THREADS=${OMP_NUM_THREADS:-1}
 (cd "$build" && ctest --output-on-failure -j "$jobs" -L "unit|convergence") || status=1
 # ctest keeps only the last run's log; keep this one for the report's run times.
 cp "$build/Testing/Temporary/LastTest.log" "$build/Testing/Temporary/LastTest_verification.log" || true

@@ -22,7 +22,7 @@ built=$SECONDS
 echo "run-sanitizers: ASan+UBSan build ($jobs jobs) took $((built - start)) s"
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
-(cd "$asan" && ctest -L "unit|convergence" --output-on-failure -j"$jobs")
+(cd "$asan" && OMP_NUM_THREADS=1 ctest -L "unit|convergence" --output-on-failure -j"$jobs")
 unset ASAN_OPTIONS UBSAN_OPTIONS
 # A report from a process whose exit code a test does not check would not fail that test: count them.
 reports=$(grep -c -E "ERROR: (AddressSanitizer|LeakSanitizer)|runtime error:" "$asan/Testing/Temporary/LastTest.log" || true)

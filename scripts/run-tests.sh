@@ -9,4 +9,5 @@ scripts/install-deps.sh
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release
 cmake --build "$build" -j "$(nproc)"
 cd "$build"
-ctest --output-on-failure -j "$(nproc)" -LE slow
+# The tests run side by side on all cores: one OpenMP thread each (no oversubscription).
+OMP_NUM_THREADS=1 ctest --output-on-failure -j "$(nproc)" -LE slow

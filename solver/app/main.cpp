@@ -13,6 +13,7 @@
 #include "app/compare.hpp"
 #include "app/info.hpp"
 #include "core/errors.hpp"
+#include "fluid/threads.hpp"
 #include "scene/scene_reader.hpp"
 #include "sim/run.hpp"
 #include "sim/simulation_checkpoint.hpp"
@@ -84,6 +85,10 @@ int main(int argc, char** argv) {
                   "continue from the /checkpoint of this ibms output file (same scene; [run] and [output] may "
                   "change); the output goes to a new file");
   run->add_flag("-q,--quiet", quiet, "no progress line");
+  int threads = 0;
+  run->add_option("--threads", threads,
+                  "threads of the fluid's loops and FFTs (default 0: OMP_NUM_THREADS if set, else one per core); "
+                  "the result does not depend on it");
 
   CLI::App* info = app.add_subcommand("info", "print the resolved scene, grid, stages and time-step limits");
   info->add_option("scene", scene_path, "scene file (TOML)")->required();
@@ -103,7 +108,12 @@ int main(int argc, char** argv) {
 
   CLI11_PARSE(app, argc, argv);
   try {
-    if (run->parsed()) return run_command(scene_path, overrides, output, restart, quiet);
+    if (run->parsed()) {
+      // Before the Simulation plans its FFTs; otherwise OpenMP's own default (OMP_NUM_THREADS, else
+      // one thread per core) holds for the loops and the FFTs alike (fluid/threads.hpp).
+      if (threads > 0) ibms::set_thread_count(threads);
+      return run_command(scene_path, overrides, output, restart, quiet);
+    }
     if (compare->parsed())
       return ibms::compare_case(case_name, compare_files,
                                 validation_dir.empty() ? ibms::default_validation_dir() : validation_dir);

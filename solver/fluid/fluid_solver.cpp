@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "fluid/operators.hpp"
+#include "fluid/threads.hpp"
 
 namespace ibms {
 namespace {
@@ -99,6 +100,7 @@ void FluidSolver::predict_explicit(FluidState& state, double dt) {
   // The explicit estimate u~_e = u^n + dt (-N_ext + nu L u^n - G_c p^n) (Uhlmann 2005, step 1).
   const double r = state.has_convection_prev ? dt / state.time_step_prev : 0.0;
   const double c_new = 1.0 + 0.5 * r, c_old = -0.5 * r;
+  IBMS_PARALLEL_ROWS
   for (int j = 0; j < grid_.ny; ++j)
     for (int i = 0; i < grid_.nx; ++i) {
       const double nx_ext = c_new * conv_x_(i, j) + c_old * state.convection_x_prev(i, j);
@@ -111,6 +113,7 @@ void FluidSolver::predict_explicit(FluidState& state, double dt) {
 void FluidSolver::complete_prediction(FluidState& state, double dt) {
   // velocity_star now holds u~_e + dt f: take back the implicit half of the viscous term, so that
   // it is the Crank-Nicolson right-hand side u^n + dt (-N_ext + nu L u^n / 2 - G_c p^n + f).
+  IBMS_PARALLEL_ROWS
   for (int j = 0; j < grid_.ny; ++j)
     for (int i = 0; i < grid_.nx; ++i) {
       star_x_(i, j) -= 0.5 * dt * nu_ * lap_x_(i, j);
@@ -158,6 +161,7 @@ ProjectionStats FluidSolver::project_smac(FluidState& state, double dt) {
   // cell velocity, average to the face, add the compact face gradient back.
   //   U*_{i-1/2} = mean(u* + dt G_c p^n) - dt (p_i - p_{i-1})/dx
   // grad_x_/grad_y_ still hold G_c p^n from the predictor; p^n ghosts are filled.
+  IBMS_PARALLEL_ROWS
   for (int j = 0; j < grid_.ny; ++j)
     for (int i = 0; i < grid_.nx; ++i) {
       phi_(i, j) = star_x_(i, j) + dt * grad_x_(i, j);  // phi_ and work_ as scratch for u-hat
@@ -167,11 +171,13 @@ ProjectionStats FluidSolver::project_smac(FluidState& state, double dt) {
   fill_neumann_ghosts(grid_, work_);
   const CellField& p = state.pressure;
   const int i_first = grid_.periodic_x ? 0 : 1, j_first = grid_.periodic_y ? 0 : 1;
+  IBMS_PARALLEL_ROWS
   for (int j = 0; j < grid_.ny; ++j) {
     for (int i = i_first; i < grid_.nx; ++i)
       star_face_x_(i, j) = 0.5 * (phi_(i - 1, j) + phi_(i, j)) - dt * (p(i, j) - p(i - 1, j)) * inv_dx;
     if (!grid_.periodic_x) star_face_x_(0, j) = star_face_x_(grid_.nx, j) = 0.0;  // no flow through walls
   }
+  IBMS_PARALLEL_ROWS
   for (int j = j_first; j < grid_.ny; ++j)
     for (int i = 0; i < grid_.nx; ++i)
       star_face_y_(i, j) = 0.5 * (work_(i, j - 1) + work_(i, j)) - dt * (p(i, j) - p(i, j - 1)) * inv_dy;
@@ -187,11 +193,13 @@ ProjectionStats FluidSolver::project_smac(FluidState& state, double dt) {
   fill_neumann_ghosts(grid_, phi_);
 
   // Step 5: U^{n+1} = U* - dt G_f phi (wall faces are not corrected).
+  IBMS_PARALLEL_ROWS
   for (int j = 0; j < grid_.ny; ++j)
     for (int i = i_first; i < grid_.nx; ++i)
       state.velocity_face_x(i, j) = star_face_x_(i, j) - dt * (phi_(i, j) - phi_(i - 1, j)) * inv_dx;
   if (!grid_.periodic_x)
     for (int j = 0; j < grid_.ny; ++j) state.velocity_face_x(0, j) = state.velocity_face_x(grid_.nx, j) = 0.0;
+  IBMS_PARALLEL_ROWS
   for (int j = j_first; j < grid_.ny; ++j)
     for (int i = 0; i < grid_.nx; ++i)
       state.velocity_face_y(i, j) = star_face_y_(i, j) - dt * (phi_(i, j) - phi_(i, j - 1)) * inv_dy;
@@ -202,19 +210,23 @@ ProjectionStats FluidSolver::project_smac(FluidState& state, double dt) {
 
   // u^{n+1} = u* - dt G_c phi;  p^{n+1} = p^n + phi (standard incremental form, see header).
   centre_gradient(grid_, phi_, grad_x_, grad_y_);
+  double max_change = 0.0, max_velocity = 0.0;  // maxima: exact in any order, so thread-independent
+#if defined(_OPENMP)
+#pragma omp parallel for schedule(static) reduction(max : max_change, max_velocity)
+#endif
   for (int j = 0; j < grid_.ny; ++j)
     for (int i = 0; i < grid_.nx; ++i) {
       const double u_new = star_x_(i, j) - dt * grad_x_(i, j);
       const double v_new = star_y_(i, j) - dt * grad_y_(i, j);
-      stats.max_velocity_change = std::max({stats.max_velocity_change,
-                                            std::abs(u_new - state.velocity_x(i, j)),
-                                            std::abs(v_new - state.velocity_y(i, j))});
-      stats.max_velocity = std::max({stats.max_velocity, std::abs(u_new), std::abs(v_new)});
+      max_change = std::max({max_change, std::abs(u_new - state.velocity_x(i, j)), std::abs(v_new - state.velocity_y(i, j))});
+      max_velocity = std::max({max_velocity, std::abs(u_new), std::abs(v_new)});
       state.velocity_x(i, j) = u_new;
       state.velocity_y(i, j) = v_new;
       state.pressure(i, j) += phi_(i, j);
     }
 
+  stats.max_velocity_change = max_change;
+  stats.max_velocity = max_velocity;
   // N^n becomes N^{n-1} of the next step.
   std::swap(state.convection_x_prev, conv_x_);
   std::swap(state.convection_y_prev, conv_y_);

@@ -1,6 +1,8 @@
 // Finite-volume operators of METHOD.md §2.2 (compact Laplacian, conservative convection with face
-// velocities, wide centre gradient, face divergence). Loops run x fastest over contiguous rows.
+// velocities, wide centre gradient, face divergence). Loops run x fastest over contiguous rows;
+// rows are shared among the OpenMP threads (fluid/threads.hpp), each cell written by one thread.
 #include "fluid/operators.hpp"
+#include "fluid/threads.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -9,6 +11,7 @@ namespace ibms {
 
 void laplacian(const Grid& grid, const CellField& q, CellField& out) {
   const double inv_dx2 = 1.0 / (grid.dx() * grid.dx()), inv_dy2 = 1.0 / (grid.dy() * grid.dy());
+  IBMS_PARALLEL_ROWS
   for (int j = 0; j < grid.ny; ++j)
     for (int i = 0; i < grid.nx; ++i)
       out(i, j) = (q(i - 1, j) - 2.0 * q(i, j) + q(i + 1, j)) * inv_dx2 +
@@ -18,6 +21,7 @@ void laplacian(const Grid& grid, const CellField& q, CellField& out) {
 void convection(const Grid& grid, const FaceField& velocity_face_x, const FaceField& velocity_face_y,
                 const CellField& q, CellField& out) {
   const double inv_dx = 1.0 / grid.dx(), inv_dy = 1.0 / grid.dy();
+  IBMS_PARALLEL_ROWS
   for (int j = 0; j < grid.ny; ++j)
     for (int i = 0; i < grid.nx; ++i) {
       // METHOD.md §2.2: (1/h)[U_{i+1/2} (q_{i+1}+q_i)/2 - U_{i-1/2} (q_i+q_{i-1})/2 + y-faces]
@@ -31,6 +35,7 @@ void convection(const Grid& grid, const FaceField& velocity_face_x, const FaceFi
 
 void centre_gradient(const Grid& grid, const CellField& p, CellField& grad_x, CellField& grad_y) {
   const double half_inv_dx = 0.5 / grid.dx(), half_inv_dy = 0.5 / grid.dy();
+  IBMS_PARALLEL_ROWS
   for (int j = 0; j < grid.ny; ++j)
     for (int i = 0; i < grid.nx; ++i) {
       grad_x(i, j) = (p(i + 1, j) - p(i - 1, j)) * half_inv_dx;
@@ -41,6 +46,7 @@ void centre_gradient(const Grid& grid, const CellField& p, CellField& grad_x, Ce
 void divergence(const Grid& grid, const FaceField& velocity_face_x, const FaceField& velocity_face_y,
                 double scale, double* out) {
   const double sx = scale / grid.dx(), sy = scale / grid.dy();
+  IBMS_PARALLEL_ROWS
   for (int j = 0; j < grid.ny; ++j)
     for (int i = 0; i < grid.nx; ++i)
       out[grid.index(i, j)] = (velocity_face_x(i + 1, j) - velocity_face_x(i, j)) * sx +
@@ -60,6 +66,7 @@ double max_abs_divergence(const Grid& grid, const FaceField& velocity_face_x,
 
 void vorticity(const Grid& grid, const CellField& velocity_x, const CellField& velocity_y, CellField& out) {
   const double half_inv_dx = 0.5 / grid.dx(), half_inv_dy = 0.5 / grid.dy();
+  IBMS_PARALLEL_ROWS
   for (int j = 0; j < grid.ny; ++j)
     for (int i = 0; i < grid.nx; ++i)
       out(i, j) = (velocity_y(i + 1, j) - velocity_y(i - 1, j)) * half_inv_dx -

@@ -1,7 +1,9 @@
 // FFTW real-to-real Poisson/Helmholtz solver (METHOD.md §6; transform kinds and eigenvalues as in
 // CaNS src/initsolver_eigenvalues-inc.f90 and src/fft.f90).
 #include "fluid/spectral_solver.hpp"
+#include "fluid/threads.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -54,6 +56,7 @@ SpectralSolver::SpectralSolver(const Grid& grid, SpectralBoundary boundary_x, Sp
   lambda_x_ = eigenvalues(boundary_x, nx_, grid.dx());
   lambda_y_ = eigenvalues(boundary_y, ny_, grid.dy());
   buffer_ = fftw_alloc_real(static_cast<std::size_t>(nx_) * ny_);
+  prepare_fft_threads();  // plans below use thread_count() threads
   // Row-major (ny, nx): the first FFTW dimension is y.
   forward_ = fftw_plan_r2r_2d(ny_, nx_, buffer_, buffer_, forward_kind(boundary_y),
                               forward_kind(boundary_x), FFTW_MEASURE);
@@ -71,9 +74,11 @@ SpectralSolver::~SpectralSolver() {
 SpectralSolveStats SpectralSolver::solve(double a, double b, const double* rhs, double* solution) {
   SpectralSolveStats stats;
   const std::size_t n = static_cast<std::size_t>(nx_) * ny_;
-  for (std::size_t k = 0; k < n; ++k) buffer_[k] = rhs[k];
+  std::copy(rhs, rhs + n, buffer_);
   fftw_execute(forward_);
-  // Diagonal solve; the normalisation of the transform pair is folded into the divisor.
+  // Diagonal solve; the normalisation of the transform pair is folded into the divisor. The one
+  // singular (constant) mode is in row 0, so the rows are shared among threads without a race.
+  IBMS_PARALLEL_ROWS
   for (int l = 0; l < ny_; ++l) {
     double* row = buffer_ + static_cast<std::size_t>(nx_) * l;
     for (int k = 0; k < nx_; ++k) {
@@ -90,7 +95,7 @@ SpectralSolveStats SpectralSolver::solve(double a, double b, const double* rhs, 
     }
   }
   fftw_execute(inverse_);
-  for (std::size_t k = 0; k < n; ++k) solution[k] = buffer_[k];
+  std::copy(buffer_, buffer_ + n, solution);
   return stats;
 }
 

@@ -58,7 +58,7 @@ void advance_group(const SolidStepInputs& in, const std::vector<SwellingSchedule
                    const ContactForces& contact_forces, const BodyMask& members, const std::vector<char>& implicit_of_body,
                    std::vector<ImplicitSpringSystem>& implicit, int n_sub,
                    std::vector<BodyCoupling>& coupling, std::vector<std::vector<Vec2>>& contact_work,
-                   std::vector<RigidBody>& rigid, std::vector<MassSpringBody>& bodies) {
+                   std::vector<RigidBody>& rigid, std::vector<MassSpringBody>& bodies, double& contact_energy) {
   const double dt_sub = in.dt / n_sub;
   for (int k = 0; k < n_sub; ++k) {
     const double time_k = in.time + k*dt_sub;
@@ -94,6 +94,14 @@ void advance_group(const SolidStepInputs& in, const std::vector<SwellingSchedule
                                    body.mass[p] * buoyancy_factor * in.gravity[d];
       if (implicit_of_body[b]) implicit[b].advance(body, dt_sub, c.external_force);  // no spring limit
       else advance_symplectic_euler_in_place(body, dt_sub, c.external_force);  // rebuilt every sub-step above
+    }
+    // Work of the contact forces on every member over the sub-step, F . U^{k+1} dt_sub (the
+    // displacement the position update made), prescribed bodies included.
+    for (std::size_t b = 0; b < bodies.size(); ++b) {
+      if (!selected(members, b)) continue;
+      for (int p = 0; p < bodies[b].n_surface; ++p)
+        contact_energy += dt_sub * (contact_work[b][p][0] * bodies[b].velocity[p][0] +
+                                    contact_work[b][p][1] * bodies[b].velocity[p][1]);
     }
   }
 }
@@ -168,6 +176,7 @@ SolidStepCount advance_bodies(const SolidStepInputs& in, const std::vector<Swell
   contact_work.resize(bodies.size());
   for (std::size_t b = 0; b < bodies.size(); ++b) contact_work[b].resize(bodies[b].n_points());
   groups.substeps_of_body.resize(bodies.size());
+  groups.contact_work = 0.0;
   SolidStepCount count;
   // Groups cannot touch one another within the step (contact_model.hpp), so they advance one
   // after the other, each over the whole step with its own sub-step.
@@ -175,7 +184,7 @@ SolidStepCount advance_bodies(const SolidStepInputs& in, const std::vector<Swell
     const int n_sub = group_substeps(in, groups, g, bodies, scratch);
     if (n_sub == 0) continue;
     advance_group(in, swelling, contact_forces, groups.members, groups.implicit_of_body, implicit, n_sub, coupling,
-                  contact_work, rigid, bodies);
+                  contact_work, rigid, bodies, groups.contact_work);
     record(groups, n_sub, groups.substeps_of_body, count);
   }
   apply_swelling_schedules(swelling, in.time + in.dt, bodies);  // state at t^{n+1}

@@ -47,6 +47,8 @@ struct SubstepGroups {
   BodyMask members;  // scratch: the group being advanced
   std::vector<int> substeps_of_body;  // out: the sub-steps body b took in the latest step
   std::vector<char> implicit_of_body; // out: body b's springs took implicit steps in the latest step
+  double contact_work = 0.0;          // out: work of all contact forces on all bodies in the latest step
+                                      // [energy/length]; <= 0 for a dissipative contact law, walls at rest
 };
 
 // spring_integrator = "auto" chooses the implicit step when the explicit one would need more than

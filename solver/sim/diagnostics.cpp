@@ -5,8 +5,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "core/errors.hpp"
+#include "solid/spring_forces.hpp"
 
 namespace ibms {
 
@@ -33,6 +35,18 @@ double max_body_point_speed(const Simulation& sim) {
 
 namespace {
 
+// Stops the run (run.on_body_instability = "stop") or warns once ("warn").
+void report_body_instability(const Simulation& sim, const std::string& what) {
+  const FluidState& f = sim.fluid();
+  const std::string advice = "; reduce run.time_step, or do not fix the solid sub-steps";
+  if (sim.scene().run.on_body_instability == "stop")
+    throw BlowUpError(fmt::format("blow-up at step {}, t = {:.6g}: {}{}", f.step, f.time, what, advice));
+  if (sim.instability_warned) return;
+  sim.instability_warned = true;
+  std::fprintf(stderr, "ibms: warning at step %ld, t = %.6g: %s%s (run.on_body_instability = \"warn\": said once, "
+               "the run goes on)\n", f.step, f.time, what.c_str(), advice.c_str());
+}
+
 // Non-finite body points, or points outside the box in a wall direction (the IB stencil and the
 // inner-fluid region need them inside).
 void check_bodies_for_blow_up(const Simulation& sim) {
@@ -51,7 +65,33 @@ void check_bodies_for_blow_up(const Simulation& sim) {
           "blow-up at step {}, t = {:.6g}: body {} point {} {} at x = {:.6g}, y = {:.6g} (u = {:.3g}, v = {:.3g})",
           f.step, f.time, b, p, finite ? "left the box" : "is non-finite", x[0], x[1], u[0], u[1]));
     }
+    // Energy no driver of the scene can supply (issue 12 item 5): an unstable spring or contact
+    // that pumps energy into the body while its points stay finite and inside the box.
+    if (body.kind == BodyKind::prescribed) continue;
+    // Kinetic only: an unstable mode grows in its kinetic and its spring energy alike, while the
+    // spring energy alone also holds the load of a swelling step (the natural lengths jump by
+    // rate dt at each step's end, ~ k (rate dt)^2 / 2 per spring: 2.2 for the stiff swelling disk).
+    const double energy = kinetic_energy(body);
+    const double bound = sim.body_energy_bound()[b];
+    if (energy > bound)
+      report_body_instability(sim, fmt::format(
+          "body {} has kinetic energy {:.4g}, above the {:.4g} the scene can give it "
+          "(4 (M V^2 / 2 + initial spring energy), V = {:.4g} the fastest driver: walls, initial and prescribed "
+          "speeds, swelling, buoyant free fall across the box): an unstable spring or contact",
+          b, energy, bound, sim.driving_speed()));
   }
+  // The contacts have given the bodies more energy than they took: more than a quarter of the
+  // energy scale sum_b M_b V^2 / 2 (a stable contact gives back at most what it stored, less its
+  // integration error of a few per cent of one collision's energy).
+  double energy_scale = 0.0;
+  for (std::size_t b = 0; b < sim.bodies().size(); ++b)
+    if (sim.bodies()[b].kind != BodyKind::prescribed) energy_scale += sim.body_energy_bound()[b] / 4.0;
+  constexpr double returned_fraction = 0.25;
+  if (sim.total_contact_work > returned_fraction * energy_scale)
+    report_body_instability(sim, fmt::format(
+        "the contacts have returned {:.4g} more energy to the bodies than they received (more than {} of the bodies' "
+        "energy scale {:.4g}): an unstable contact",
+        sim.total_contact_work, returned_fraction, energy_scale));
 }
 
 }  // namespace

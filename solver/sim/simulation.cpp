@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/errors.hpp"
+#include "solid/spring_forces.hpp"
 
 namespace ibms {
 
@@ -49,6 +50,7 @@ Simulation::Simulation(const Scene& scene)
                                                : static_cast<std::size_t>(spec.n_surface_points));
   }
   apply_swelling_schedules(swelling_, fluid_.time, bodies_);
+  set_instability_bounds();
   if (scene.contact.stiffness > 0.0) {
     contact_model_ = ContactModel(scene.contact);
     contact_box_ = WallBox{{grid_.origin_x, grid_.origin_y}, {grid_.length_x, grid_.length_y},
@@ -65,6 +67,40 @@ Simulation::Simulation(const Scene& scene)
   // Variant K: I_T at t = 0 (region X^0, velocity u^0), the first "previous" value.
   if (inner_fluid_inertia == &kempe_inner_fluid_inertia)
     sample_inner_fluid_momentum(grid_, fluid_, bodies_, coupling_);
+}
+
+void Simulation::set_instability_bounds() {
+  const WallsSpec& w = scene_.walls;
+  double speed = std::max({std::abs(w.left.speed), std::abs(w.right.speed), std::abs(w.bottom.speed),
+                           std::abs(w.top.speed)});
+  const double gravity = std::hypot(scene_.fluid.gravity[0], scene_.fluid.gravity[1]);
+  const double diagonal = std::hypot(grid_.length_x, grid_.length_y);
+  for (std::size_t b = 0; b < bodies_.size(); ++b) {
+    const BodySpec& spec = scene_.bodies[b];
+    const MassSpringBody& body = bodies_[b];
+    for (const auto& u : body.velocity) speed = std::max(speed, std::hypot(u[0], u[1]));
+    if (spec.swelling.enabled) speed = std::max(speed, spec.swelling.rate);
+    if (body.kind == BodyKind::prescribed) {
+      const double w_osc = spec.oscillation_period > 0 ? 2 * M_PI / spec.oscillation_period : 0.0;
+      speed = std::max(speed, std::hypot(spec.velocity[0], spec.velocity[1]) +
+                                  std::hypot(spec.oscillation_amplitude[0], spec.oscillation_amplitude[1]) * w_osc +
+                                  0.5 * body.diameter * (std::abs(spec.angular_velocity) + std::abs(spec.angle_amplitude) * w_osc));
+    } else {
+      speed = std::max(speed, std::sqrt(2.0 * std::abs(1.0 - scene_.fluid.density / body.density) * gravity * diagonal));
+    }
+  }
+  // A scene with nothing driving it still needs a non-zero scale (round-off moves the bodies):
+  // crossing a thousandth of the box in the whole run.
+  driving_speed_ = std::max(speed, 1e-3 * diagonal / scene_.run.end_time);
+  body_energy_bound_.clear();
+  for (std::size_t b = 0; b < bodies_.size(); ++b) {
+    const BodySpec& spec = scene_.bodies[b];
+    const double largest = spec.swelling.enabled ? std::max(spec.diameter, spec.swelling.max_diameter) : spec.diameter;
+    const double mass = bodies_[b].density * M_PI * largest * largest / 4.0;
+    constexpr double energy_factor = 4.0;  // twice every speed
+    body_energy_bound_.push_back(energy_factor * (0.5 * mass * driving_speed_ * driving_speed_ +
+                                                  spring_energy(bodies_[b], bodies_[b].length_scale())));
+  }
 }
 
 bool Simulation::contact_possible(double dt) const {

@@ -65,6 +65,18 @@ class Simulation {
   // Whether a contact can be under way within the next step of length dt (contact/contact_model.hpp);
   // false without contacts. Only then does the contact sub-step bound apply.
   bool contact_possible(double dt) const;
+  // The instability guard (sim/diagnostics.cpp): the speed that drives the scene, V_drive = the
+  // largest of the wall speeds, the initial body point speeds, the prescribed bodies' point speeds,
+  // the swelling rates and the free-fall speed sqrt(2 |1 - rho_f/rho_s| |g| L) over the box
+  // diagonal L (at least L / 1000 per end_time); and per body the most kinetic energy it can physically reach,
+  // E_max = 4 (M V_drive^2 / 2 + E_spring(t = 0)) with M its largest (swollen) mass.
+  double driving_speed() const { return driving_speed_; }
+  const std::vector<double>& body_energy_bound() const { return body_energy_bound_; }
+  mutable bool instability_warned = false;  // run.on_body_instability = "warn": said once
+  // Work of the contact forces on all bodies since t = 0 [energy/length]: never positive for the
+  // dissipative spring-dashpot law with walls at rest, apart from the integration error; a contact
+  // that returns more energy than it received makes it grow (the guard in sim/diagnostics.cpp).
+  double total_contact_work = 0.0;
   // How the bodies sub-step in the next step of length dt (sim/body_update.hpp): the contact groups
   // with the contact sub-step bound of each group that may touch something; with
   // run.solid_substeps = "global", no groups (one group, bound global_contact_limit(dt)).
@@ -107,6 +119,9 @@ class Simulation {
   ContactModel contact_model_;
   WallBox contact_box_;
   mutable std::vector<double> contact_reach_;  // scratch of contact_possible, one entry per body
+  double driving_speed_ = 0.0;
+  std::vector<double> body_energy_bound_;
+  void set_instability_bounds();
   mutable ContactGroups contact_groups_;       // scratch of contact_possible and substep_groups
   SubstepGroups substep_groups_;
   void find_groups(double dt) const;           // contact_groups_ for a step of length dt

@@ -130,6 +130,7 @@ void write_simulation_checkpoint(OutputFile& out, const Simulation& sim, double 
       {"time_step_prev", f.time_step_prev},
       {"has_convection_prev", f.has_convection_prev ? 1.0 : 0.0},
       {"next_snapshot_time", next_snapshot_time},
+      {"total_contact_work", sim.total_contact_work},
       {"nx", static_cast<double>(sim.grid().nx)},
       {"ny", static_cast<double>(sim.grid().ny)},
       {"n_bodies", static_cast<double>(sim.bodies().size())},
@@ -190,6 +191,8 @@ double restore_simulation(const Checkpoint& checkpoint, const std::string& path,
   f.step = read.count("step");
   f.time_step_prev = read.non_negative("time_step_prev");
   f.has_convection_prev = read.scalar("has_convection_prev") != 0.0;
+  // The instability guard's contact-work sum (absent from checkpoints of ibms <= 0.2: starts at 0).
+  if (checkpoint.scalars.count("total_contact_work") != 0) sim.total_contact_work = read.scalar("total_contact_work");
   read.into("fluid_velocity_x", f.velocity_x);
   read.into("fluid_velocity_y", f.velocity_y);
   read.into("fluid_pressure", f.pressure);

@@ -54,6 +54,7 @@ void advance_one_step(Simulation& sim, double dt) {
     sim.last_body_substeps = count.body_substeps;
     sim.total_substeps += count.max_substeps;
     sim.total_body_substeps += count.body_substeps;
+    sim.total_contact_work += groups.contact_work;
   }
 }
 

@@ -13,6 +13,7 @@
 
 #include "../../validation/settling_disk/body_series.hpp"
 #include "core/errors.hpp"
+#include "scene/scene_reader.hpp"
 #include "sim/run.hpp"
 #include "sim_scenes.hpp"
 #include "solid/stable_substep.hpp"
@@ -33,6 +34,19 @@ Scene stiff_wheel_scene(const std::string& output) {
   return scene;
 }
 
+// Runs with one solid step per fluid step; the blow-up message, empty if the run reached its end.
+std::string message_of_fixed_step_run(Simulation& sim, const std::string& out) {
+  sim.fixed_solid_substeps = 1;
+  std::string message;
+  try {
+    run_simulation(sim, {out, /*quiet=*/true});
+  } catch (const BlowUpError& e) {
+    message = e.what();
+  }
+  BOOST_TEST_MESSAGE("stop message: " << message);
+  return message;
+}
+
 }  // namespace
 
 BOOST_AUTO_TEST_CASE(fixed_step_instability_stops_with_message_and_no_nan_output) {
@@ -42,14 +56,7 @@ BOOST_AUTO_TEST_CASE(fixed_step_instability_stops_with_message_and_no_nan_output
   Simulation sim(stiff_wheel_scene(out));
   // The fixed step is far beyond the stable one: 2e-3 against a spring sub-step of ~1e-5.
   BOOST_TEST(2.0e-3 > 10 * stable_substep(sim.bodies()[0], /*safety=*/1.0));
-  sim.fixed_solid_substeps = 1;
-  std::string message;
-  try {
-    run_simulation(sim, {out, /*quiet=*/true});
-  } catch (const BlowUpError& e) {
-    message = e.what();
-  }
-  BOOST_TEST_MESSAGE("stop message: " << message);
+  const std::string message = message_of_fixed_step_run(sim, out);
   BOOST_TEST(message.find("blow-up at step") != std::string::npos);
   BOOST_TEST(message.find("t = ") != std::string::npos);
   BOOST_TEST(message.find("body 0 point") != std::string::npos);
@@ -76,5 +83,57 @@ BOOST_AUTO_TEST_CASE(automatic_substeps_run_the_same_scene_to_its_end) {
   const RunSummary implicit_summary = run_simulation(implicit, {out, /*quiet=*/true});
   BOOST_TEST(implicit_summary.stop_reason == "end_time");
   BOOST_TEST(implicit.last_n_substeps == 1);
+  std::filesystem::remove_all(dir);
+}
+
+// The instability guard of issue 12 item 5 on the collision of bench_stability that used to run to
+// its end unflagged: two wheels approaching at 5 cm/s each, contact stiffness 1e3, fluid step
+// 3e-3 s with one explicit solid step per fluid step. The contact returns more energy than it
+// received (restitution > 1): the run stops naming it; with run.on_body_instability = "warn" it
+// goes on; with automatic sub-steps the contact work stays <= 0 up to its integration error.
+namespace {
+
+Scene collision_scene(double dem_stiffness, double dt) {
+  Scene s = read_scene_file(IBMS_SETTLING_SCENE,
+                            {"domain.length_y=1.0", "domain.cells_x=40", "domain.cells_y=20", "bodies.0.centre=[0.85, 0.5]",
+                             "bodies.0.density=2.0",
+                             "bodies.0.n_surface_points=16", "fluid.gravity=[0.0, 0.0]", "run.end_time=0.08",
+                             "run.time_step=" + std::to_string(dt), "contact.stiffness=" + std::to_string(dem_stiffness),
+                             "contact.restitution_coefficient=0.9", "contact.cds_radius_fraction=0.05",
+                             "bodies.0.spring_stiffness=100", "bodies.0.spring_integrator=explicit", "output.progress=false",
+                             "output.centreline_profiles=false"});
+  s.bodies.push_back(s.bodies[0]);
+  s.bodies[0].centre = {0.85, 0.5};
+  s.bodies[0].velocity = {5.0, 0.0};
+  s.bodies[1].centre = {1.15, 0.5};
+  s.bodies[1].velocity = {-5.0, 0.0};
+  return s;
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(a_contact_returning_more_energy_than_it_received_stops_the_run) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "ibms_test_contact_guard";
+  std::filesystem::create_directories(dir);
+  const std::string out = (dir / "guard.h5").string();
+  {
+    Simulation sim(collision_scene(1e3, 3e-3));
+    BOOST_TEST(message_of_fixed_step_run(sim, out).find("the contacts have returned") != std::string::npos);
+  }
+  {
+    Scene scene = collision_scene(1e3, 3e-3);
+    scene.run.on_body_instability = "warn";
+    Simulation sim(scene);
+    sim.fixed_solid_substeps = 1;
+    BOOST_TEST(run_simulation(sim, {out, /*quiet=*/true}).stop_reason == "end_time");
+    BOOST_TEST(sim.instability_warned);
+  }
+  {
+    Simulation sim(collision_scene(1e3, 3e-3));
+    const RunSummary summary = run_simulation(sim, {out, /*quiet=*/true});
+    BOOST_TEST(summary.stop_reason == "end_time");
+    BOOST_TEST(sim.total_contact_work < 0.0);  // they met, and the contact (e = 0.9) took energy
+    BOOST_TEST(!sim.instability_warned);
+  }
   std::filesystem::remove_all(dir);
 }

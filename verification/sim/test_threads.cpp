@@ -1,0 +1,75 @@
+// Both cores (issue 13): the fluid's cell loops and FFTs on 1 and on 2 threads give the same run.
+// Each parallel loop writes every cell from one thread and its only reductions are maxima (exact in
+// any order); FFTW's threaded plans may split a transform differently, so the two runs are
+// compared to round-off (1e-12 of the largest value) rather than bit for bit. One lid-driven
+// cavity (fluid only, 64^2, 60 steps) and one scene with bodies, contacts and swelling
+// (verification/sim/restart_scene.toml, 150 steps: contacts from step 34).
+#define BOOST_TEST_MODULE threads
+#include <boost/test/unit_test.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "fluid/threads.hpp"
+#include "scene/scene_reader.hpp"
+#include "sim/simulation.hpp"
+
+using namespace ibms;
+
+namespace {
+
+struct State {
+  std::vector<double> fluid;   // u, v, p of every cell
+  std::vector<double> bodies;  // x, y of every body point
+};
+
+State run(const Scene& scene, int threads, int steps, double dt) {
+  set_thread_count(threads);
+  Simulation sim(scene);  // plans its FFTs with `threads` threads
+  for (int n = 0; n < steps; ++n) advance_one_step(sim, dt);
+  State s;
+  const Grid& g = sim.grid();
+  for (int j = 0; j < g.ny; ++j)
+    for (int i = 0; i < g.nx; ++i)
+      for (const CellField* f : {&sim.fluid().velocity_x, &sim.fluid().velocity_y, &sim.fluid().pressure})
+        s.fluid.push_back((*f)(i, j));
+  for (const MassSpringBody& body : sim.bodies())
+    for (const auto& x : body.position) s.bodies.insert(s.bodies.end(), {x[0], x[1]});
+  return s;
+}
+
+double relative_difference(const std::vector<double>& a, const std::vector<double>& b) {
+  double scale = 0.0, difference = 0.0;
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    scale = std::max(scale, std::abs(a[k]));
+    difference = std::max(difference, std::abs(a[k] - b[k]));
+  }
+  return scale > 0.0 ? difference / scale : difference;
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(one_and_two_threads_give_the_same_cavity_and_body_runs) {
+  BOOST_TEST_MESSAGE("built with OpenMP: " << (built_with_openmp() ? "yes" : "no"));
+  Scene cavity;
+  cavity.source_file = "(test scene)";
+  cavity.domain = {1.0, 1.0, 64, 64, false, false};
+  cavity.fluid.kinematic_viscosity = 1e-3;
+  cavity.walls.top.speed = 1.0;
+  const State one = run(cavity, 1, 60, 0.005);
+  const State two = run(cavity, 2, 60, 0.005);
+  if (built_with_openmp()) BOOST_TEST(thread_count() == 2);
+  const double fluid_difference = relative_difference(one.fluid, two.fluid);
+  BOOST_TEST_MESSAGE("cavity: largest difference 1 vs 2 threads " << fluid_difference << " of max |u, p|");
+  BOOST_TEST(fluid_difference <= 1e-12);
+
+  const Scene bodies = read_scene_file(IBMS_SCENE_BODIES, {});
+  const State body_one = run(bodies, 1, 150, bodies.run.time_step);
+  const State body_two = run(bodies, 2, 150, bodies.run.time_step);
+  const double body_difference = relative_difference(body_one.bodies, body_two.bodies);
+  BOOST_TEST_MESSAGE("bodies: largest difference of the point positions " << body_difference);
+  BOOST_TEST(body_difference <= 1e-12);
+  BOOST_TEST(relative_difference(body_one.fluid, body_two.fluid) <= 1e-11);
+  set_thread_count(1);
+}
