@@ -16,8 +16,9 @@ SpectralBoundary kind(bool periodic, SpectralBoundary wall_kind) {
 
 }  // namespace
 
-FluidSolver::FluidSolver(const Grid& grid, double kinematic_viscosity, const FluidBoundaries& boundaries)
-    : grid_(grid), nu_(kinematic_viscosity), boundaries_(boundaries),
+FluidSolver::FluidSolver(const Grid& grid, double kinematic_viscosity, const FluidBoundaries& boundaries,
+                         FluidSchemes schemes)
+    : grid_(grid), nu_(kinematic_viscosity), boundaries_(boundaries), schemes_(schemes),
       star_x_(grid), star_y_(grid), conv_x_(grid), conv_y_(grid), lap_x_(grid), lap_y_(grid),
       grad_x_(grid), grad_y_(grid), phi_(grid), work_(grid),
       star_face_x_(FaceField::x_faces(grid)), star_face_y_(FaceField::y_faces(grid)),
@@ -82,6 +83,34 @@ void FluidSolver::solve_helmholtz_component(double dt, CellField& rhs_and_soluti
   rhs_and_solution.copy_interior_from(buffer_.data());
 }
 
+void FluidSolver::add_wall_closure(const CellField& u, const CellField& v, double t, double scale, CellField& out_x,
+                                   CellField& out_y) const {
+  // scale (u_g,quadratic - u_g,linear) / h^2 = scale (2 u_w - 3 u_1 + u_2) / (3 h^2) in each wall cell,
+  // for the velocity component tangential to the wall only: applied to the normal one as well, it
+  // cost the pressure its order on the manufactured solution (max norm 1.21, L2 1.60; tangential
+  // only: 1.91, 1.98, with half the default's velocity and pressure errors).
+  CellField& explicit_x = out_x;
+  CellField& explicit_y = out_y;
+  const int nx = grid_.nx, ny = grid_.ny;
+  const auto closure = [](double wall, double first, double second) { return (2.0 * wall - 3.0 * first + second) / 3.0; };
+  if (!grid_.periodic_y && ny >= 2) {
+    const double c = scale / (grid_.dy() * grid_.dy());
+    const double u_bottom = boundaries_.bottom.at(t), u_top = boundaries_.top.at(t);
+    for (int i = 0; i < nx; ++i) {
+      explicit_x(i, 0) += c * closure(u_bottom, u(i, 0), u(i, 1));
+      explicit_x(i, ny - 1) += c * closure(u_top, u(i, ny - 1), u(i, ny - 2));
+    }
+  }
+  if (!grid_.periodic_x && nx >= 2) {
+    const double c = scale / (grid_.dx() * grid_.dx());
+    const double v_left = boundaries_.left.at(t), v_right = boundaries_.right.at(t);
+    for (int j = 0; j < ny; ++j) {
+      explicit_y(0, j) += c * closure(v_left, v(0, j), v(1, j));
+      explicit_y(nx - 1, j) += c * closure(v_right, v(nx - 1, j), v(nx - 2, j));
+    }
+  }
+}
+
 void FluidSolver::predict_explicit(FluidState& state, double dt) {
   // Ghosts of u^n with the wall velocities at t^n, of p^n with zero normal gradient.
   CellField& u = state.velocity_x;
@@ -90,10 +119,15 @@ void FluidSolver::predict_explicit(FluidState& state, double dt) {
   fill_velocity_ghosts(grid_, boundaries_, state.time, u, v);
   fill_neumann_ghosts(grid_, p);
 
-  convection(grid_, state.velocity_face_x, state.velocity_face_y, u, conv_x_);  // N^n
-  convection(grid_, state.velocity_face_x, state.velocity_face_y, v, conv_y_);
+  const auto convect = schemes_.quick_convection ? convection_quick : convection;
+  convect(grid_, state.velocity_face_x, state.velocity_face_y, u, conv_x_);  // N^n
+  convect(grid_, state.velocity_face_x, state.velocity_face_y, v, conv_y_);
+
   laplacian(grid_, u, lap_x_);
   laplacian(grid_, v, lap_y_);
+  // Quadratic wall closure: L u^n with the quadratic ghost (the explicit half keeps it after
+  // complete_prediction takes back half of lap_).
+  if (schemes_.quadratic_wall) add_wall_closure(u, v, state.time, 1.0, lap_x_, lap_y_);
   centre_gradient(grid_, p, grad_x_, grad_y_);
 
   // Variable-step AB2: N_ext = (1 + r/2) N^n - (r/2) N^{n-1}, r = dt^n/dt^{n-1}; Euler first step.
@@ -138,8 +172,30 @@ void FluidSolver::complete_prediction(FluidState& state, double dt) {
       star_y_(grid_.nx - 1, j) += cx * v_right;
     }
   }
-  solve_helmholtz_component(dt, star_x_);
-  solve_helmholtz_component(dt, star_y_);
+  if (!schemes_.quadratic_wall) {
+    solve_helmholtz_component(dt, star_x_);
+    solve_helmholtz_component(dt, star_y_);
+    return;
+  }
+  // Quadratic wall closure in the implicit half: (I - nu dt/2 L_lin) u~ = r + (nu dt/2) C(u~), C the
+  // wall-cell difference of the closures, by defect correction from C(u^n). C touches only the
+  // wall cells and is at most 4/3 of L_lin's wall diagonal (3/h^2): each sweep reduces the defect
+  // by at least (nu dt/2)(4/3) / (1 + (nu dt/2) 3) h^-2 < 4/9 for every dt; wall_closure_sweeps
+  // sweeps leave (4/9)^sweeps of the first guess's defect, whatever the viscous number.
+  phi_ = star_x_;  // r (phi_, work_ and lap_ are free until project_smac)
+  work_ = star_y_;
+  const double half = 0.5 * nu_ * dt;
+  add_wall_closure(state.velocity_x, state.velocity_y, t_new, half, star_x_, star_y_);  // first guess u^n
+  for (int sweep = 0;; ++sweep) {
+    solve_helmholtz_component(dt, star_x_);
+    solve_helmholtz_component(dt, star_y_);
+    if (sweep + 1 == wall_closure_sweeps) break;
+    lap_x_ = phi_;
+    lap_y_ = work_;
+    add_wall_closure(star_x_, star_y_, t_new, half, lap_x_, lap_y_);  // r + (nu dt/2) C(u~ of this sweep)
+    std::swap(star_x_, lap_x_);
+    std::swap(star_y_, lap_y_);
+  }
 }
 
 void FluidSolver::predict_momentum(FluidState& state, double dt, const CellField* force_x,

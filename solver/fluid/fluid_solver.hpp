@@ -44,9 +44,31 @@ struct ProjectionStats {
   double max_velocity = 0.0;             // max |u^{n+1}| over both components [length/time]
 };
 
+// Spatial options (issue 13, scene keys fluid.convection and fluid.wall_closure; the defaults are
+// the first version's scheme):
+//  quick_convection: face values of the convected velocity by QUICK (Leonard 1979: quadratic
+//    upwind-biased, (6 q_up + 3 q_down - q_upup) / 8) instead of the central mean; a fourth-
+//    derivative dissipation of order |U| h^3 in place of the central scheme's dispersion;
+//  quadratic_wall: the viscous term's wall ghost of the tangential velocity from the quadratic
+//    through the wall value and the two first cells, u_g = (8 u_w - 6 u_1 + u_2) / 3, instead of the
+//    linear 2 u_w - u_1 (the normal component keeps it: see add_wall_closure), whose
+//    wall-cell Laplacian has an O(1) truncation error (-u''/4). Crank-Nicolson on the quadratic
+//    closure: the explicit half directly; the implicit half by defect correction around the linear
+//    operator the DST diagonalises, wall_closure_sweeps Helmholtz solves per component (each sweep
+//    shrinks the defect by < 4/9 at any viscous number; an explicit AB2 treatment of the difference
+//    was unstable above nu dt / h^2 ~ 0.5, found by the MMS test).
+// Measured on the Re 1000 cavity against Botella & Peyret (docs/fluid-accuracy.md).
+struct FluidSchemes {
+  bool quick_convection = false;
+  bool quadratic_wall = false;
+};
+
 class FluidSolver {
  public:
-  FluidSolver(const Grid& grid, double kinematic_viscosity, const FluidBoundaries& boundaries);
+  FluidSolver(const Grid& grid, double kinematic_viscosity, const FluidBoundaries& boundaries,
+              FluidSchemes schemes = {});
+  const FluidSchemes& schemes() const { return schemes_; }
+  static constexpr int wall_closure_sweeps = 3;  // Helmholtz solves per component with quadratic_wall
 
   const Grid& grid() const { return grid_; }
   const FluidBoundaries& boundaries() const { return boundaries_; }
@@ -90,6 +112,11 @@ class FluidSolver {
   Grid grid_;
   double nu_;
   FluidBoundaries boundaries_;
+  FluidSchemes schemes_;
+  // Adds scale (u_g,quadratic - u_g,linear) / h^2 of (u, v) with the wall velocities at t to the
+  // wall cells of out_x, out_y (FluidSchemes::quadratic_wall).
+  void add_wall_closure(const CellField& u, const CellField& v, double t, double scale, CellField& out_x,
+                        CellField& out_y) const;
   std::unique_ptr<SpectralSolver> poisson_;    // Neumann/periodic
   std::unique_ptr<SpectralSolver> helmholtz_;  // Dirichlet/periodic
   // Work fields, allocated once.

@@ -108,6 +108,8 @@ std::string resolved_scene_toml(const Scene& scene) {
   out += "\n[fluid]\n";
   out += fmt::format("density = {}\n", toml_float(scene.fluid.density));
   out += fmt::format("kinematic_viscosity = {}\n", toml_float(scene.fluid.kinematic_viscosity));
+  out += fmt::format("convection = {}\n", toml_string(scene.fluid.convection));
+  out += fmt::format("wall_closure = {}\n", toml_string(scene.fluid.wall_closure));
   out += fmt::format("gravity = {}\n", toml_pair(scene.fluid.gravity));
 
   out += "\n[walls]\n";

@@ -42,6 +42,10 @@ struct FluidSpec {
   double density = 1.0;              // rho_f [mass/length^3]
   double kinematic_viscosity = 0.01; // nu [length^2/time]
   std::array<double, 2> gravity{0.0, 0.0};  // g [length/time^2]; acts on bodies only (METHOD.md §2.6)
+  // Spatial options (fluid/fluid_solver.hpp, FluidSchemes; docs/fluid-accuracy.md): convected face
+  // values central | quick, and the viscous wall closure linear | quadratic.
+  std::string convection = "central";
+  std::string wall_closure = "linear";
 };
 
 // Tangential velocity of one wall: speed for ramp_time <= ... ; see fluid/wall_motion.hpp.

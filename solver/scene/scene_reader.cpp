@@ -54,6 +54,8 @@ void read_fluid(const TomlTableReader& table, FluidSpec& fluid) {
   table.read_real("density", fluid.density, Need::optional, positive);
   table.read_real("kinematic_viscosity", fluid.kinematic_viscosity, Need::required, positive);
   table.read_pair("gravity", fluid.gravity, Need::optional);
+  table.read_choice("convection", fluid.convection, schema::convection_choices);
+  table.read_choice("wall_closure", fluid.wall_closure, schema::wall_closure_choices);
 }
 
 void read_walls(const TomlTableReader& table, WallsSpec& walls) {

@@ -19,7 +19,10 @@ inline constexpr std::string_view on_body_instability_choices[] = {"stop", "warn
 inline constexpr std::string_view solid_substeps_choices[] = {"per_group", "global"};
 inline constexpr std::string_view domain_keys[] = {"length_x", "length_y",   "cells_x",
                                                    "cells_y",  "periodic_x", "periodic_y"};
-inline constexpr std::string_view fluid_keys[] = {"density", "kinematic_viscosity", "gravity"};
+inline constexpr std::string_view fluid_keys[] = {"density", "kinematic_viscosity", "gravity", "convection",
+                                                  "wall_closure"};
+inline constexpr std::string_view convection_choices[] = {"central", "quick"};
+inline constexpr std::string_view wall_closure_choices[] = {"linear", "quadratic"};
 inline constexpr std::string_view wall_names[] = {"left", "right", "bottom", "top"};
 inline constexpr std::string_view wall_keys[] = {"speed", "stop_time"};
 inline constexpr std::string_view ibm_keys[] = {"kernel", "forcing_passes", "forcing_stage",

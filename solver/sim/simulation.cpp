@@ -29,7 +29,8 @@ FluidBoundaries boundaries_from_scene(const Scene& scene) {
 Simulation::Simulation(const Scene& scene)
     : scene_(scene),
       grid_(grid_from_scene(scene)),
-      fluid_solver_(grid_, scene.fluid.kinematic_viscosity, boundaries_from_scene(scene)),
+      fluid_solver_(grid_, scene.fluid.kinematic_viscosity, boundaries_from_scene(scene),
+                    FluidSchemes{scene.fluid.convection == "quick", scene.fluid.wall_closure == "quadratic"}),
       fluid_(fluid_solver_.make_state()),
       kernel_(kernel_from_name(scene.ibm.kernel)) {
   inner_fluid_inertia = inner_fluid_inertia_from_name(scene.ibm.inner_fluid_inertia);
@@ -168,7 +169,12 @@ std::vector<std::string> Simulation::stage_names() const {
   std::vector<std::string> stages;
   if (has_bodies()) stages.push_back("schedules (wall velocities, swelling)");
   else stages.push_back("schedules (wall velocities)");
-  stages.push_back("predictor (AB2 convection, Crank-Nicolson diffusion by DST Helmholtz)");
+  stages.push_back(std::string("predictor (AB2 ") + (scene_.fluid.convection == "quick" ? "QUICK" : "central") +
+                   " convection, Crank-Nicolson diffusion by DST Helmholtz" +
+                   (scene_.fluid.wall_closure == "quadratic"
+                        ? ", quadratic wall closure by " + std::to_string(FluidSolver::wall_closure_sweeps) +
+                              " defect-correction sweeps)"
+                        : ")"));
   if (has_bodies())
     stages.push_back("immersed-boundary forcing (" + scene_.ibm.kernel + ", " + std::to_string(scene_.ibm.forcing_passes) +
                      " pass(es) on the " +

@@ -26,9 +26,10 @@ struct Run {
 
 // Runs the solver from the exact initial field to `end_time` (or to steady state when
 // steady_tolerance > 0) with a fixed dt, forcing evaluated at t^{n+1/2}.
-Run run(const ManufacturedSolution& ms, int n, double dt, double end_time, double steady_tolerance) {
+Run run(const ManufacturedSolution& ms, int n, double dt, double end_time, double steady_tolerance,
+        FluidSchemes schemes = {}) {
   const Grid g(n, n, 1.0, 1.0);
-  FluidSolver solver(g, ms.viscosity, FluidBoundaries{});
+  FluidSolver solver(g, ms.viscosity, FluidBoundaries{}, schemes);
   Run r{solver.make_state(), {}, 0};
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
@@ -87,16 +88,15 @@ void check_order(const std::string& name, const std::vector<int>& n, const std::
   BOOST_TEST(verification::finest_three_slope(h, e) >= required);
 }
 
-void spatial_study(bool steady) {
+void spatial_study(bool steady, FluidSchemes schemes = {}, std::vector<int> grids = {16, 32, 64, 128}) {
   ManufacturedSolution ms;
   ms.steady = steady;
-  const std::vector<int> grids{16, 32, 64, 128};
   std::vector<double> ul2, umax, vl2, vmax, pl2, pmax;
   for (int n : grids) {
     // dt proportional to h (CFL about 0.25 at |u| = 1) so time error shrinks like h^2 too.
     const double dt = 0.25 / n;
-    const Run r = steady ? run(ms, n, dt, /*end_time=*/40.0, /*steady_tolerance=*/1e-9)
-                         : run(ms, n, dt, /*end_time=*/1.0, 0.0);
+    const Run r = steady ? run(ms, n, dt, /*end_time=*/40.0, /*steady_tolerance=*/1e-9, schemes)
+                         : run(ms, n, dt, /*end_time=*/1.0, 0.0, schemes);
     BOOST_TEST_MESSAGE("N = " << n << ": " << r.steps << " steps to t = " << r.state.time);
     ul2.push_back(r.errors.u_l2); umax.push_back(r.errors.u_max);
     vl2.push_back(r.errors.v_l2); vmax.push_back(r.errors.v_max);
@@ -105,7 +105,9 @@ void spatial_study(bool steady) {
   // Velocity and pressure >= 1.9 (formal order 2 minus the 0.1 margin of DESIGN.md §6). METHOD.md
   // A10b expected O(h^1.5) for p near walls on a collocated grid and issue 2 asserted 1.5; measured
   // 1.94-1.99 in both norms (issue 15), so the design's rule applies to p as well.
-  const std::string kind = steady ? "steady MMS, " : "unsteady MMS (t = 1), ";
+  const std::string kind = std::string(steady ? "steady MMS, " : "unsteady MMS (t = 1), ") +
+                           (schemes.quick_convection ? "QUICK convection, " : "") +
+                           (schemes.quadratic_wall ? "quadratic wall closure, " : "");
   check_order(kind + "u, L2 norm", grids, ul2, 1.9);
   check_order(kind + "u, max norm", grids, umax, 1.9);
   check_order(kind + "v, L2 norm", grids, vl2, 1.9);
@@ -194,4 +196,34 @@ BOOST_AUTO_TEST_CASE(pressure_is_first_order_in_time) {
       "pressure, max |p_dt - p_dt/2| at t = 1 on 64^2 (N = steps)", n, h, e));
   for (double order : verification::pairwise_orders(h, e)) BOOST_TEST(order > 0.0);
   BOOST_TEST(verification::finest_three_slope(h, e) >= 0.9);
+}
+
+// The spatial options of issue 13 (QUICK convection, quadratic wall closure, fluid_solver.hpp)
+// keep the asserted orders: second order in space for u, v, p (>= 1.9, both norms) and in time
+// for the velocity (>= 1.8). The errors are about half the default's at 128^2 (u max 1.2e-4
+// against 2.4e-4, p max 9.7e-5 against 1.8e-4), but the pressure's max norm approaches its order
+// from below (pairwise 1.79, 1.85, 1.92 from 16^2 to 128^2: slope 1.89 over 32-128), so this
+// study adds 256^2 and takes the slope over 64-256.
+BOOST_AUTO_TEST_CASE(quick_convection_and_quadratic_wall_closure_keep_second_order) {
+  const FluidSchemes options{/*quick_convection=*/true, /*quadratic_wall=*/true};
+  spatial_study(/*steady=*/false, options, {16, 32, 64, 128, 256});
+  ManufacturedSolution ms;
+  ms.steady = false;
+  std::vector<FluidState> finals;
+  for (int s : time_study_steps) finals.push_back(run(ms, 64, 1.0 / s, 1.0, 0.0, options).state);
+  std::vector<double> h, e;
+  std::vector<int> n;
+  for (std::size_t k = 0; k + 1 < finals.size(); ++k) {
+    double err = 0;
+    for (int j = 0; j < 64; ++j)
+      for (int i = 0; i < 64; ++i)
+        err = std::max({err, std::abs(finals[k].velocity_x(i, j) - finals[k + 1].velocity_x(i, j)),
+                        std::abs(finals[k].velocity_y(i, j) - finals[k + 1].velocity_y(i, j))});
+    n.push_back(time_study_steps[k]);
+    h.push_back(1.0 / time_study_steps[k]);
+    e.push_back(err);
+  }
+  BOOST_TEST_MESSAGE(verification::convergence_table(
+      "QUICK + quadratic wall: velocity, max |u_dt - u_dt/2| at t = 1 on 64^2 (N = steps)", n, h, e));
+  BOOST_TEST(verification::finest_three_slope(h, e) >= 1.8);
 }

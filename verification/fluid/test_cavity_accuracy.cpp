@@ -1,0 +1,73 @@
+// Accuracy per cell of the lid-driven cavity at Re 1000 against the spectral extrema of Botella &
+// Peyret (1998) (issue 13): the largest error of u_min (x = 1/2), v_max and v_min (y = 1/2), each
+// from the parabola through the discrete extremum and its neighbours, run to the case's steady
+// criterion at 64^2. Measured (docs/fluid-accuracy.md): central + linear wall closure (the default)
+// 2.81e-2, QUICK 2.01e-2, quadratic wall closure 2.19e-2, both 1.44e-2 (Basilisk, same rule:
+// 1.54e-2). Asserted: each option lowers the error by at least 15 %, both together by at least
+// 40 % and below Basilisk's 64^2 figure; the default stays within 5 % of its measured 2.81e-2 (a
+// change of the default scheme must update this test and the documented table).
+#define BOOST_TEST_MODULE cavity_accuracy
+#include <boost/test/unit_test.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "scene/scene_reader.hpp"
+#include "sim/diagnostics.hpp"
+#include "sim/simulation.hpp"
+
+using namespace ibms;
+
+namespace {
+
+// Vertex of the parabola through the discrete extremum of f(s) and its two neighbours.
+double parabola_extremum(const std::vector<double>& s, const std::vector<double>& f, bool minimum) {
+  const auto it = minimum ? std::min_element(f.begin() + 1, f.end() - 1) : std::max_element(f.begin() + 1, f.end() - 1);
+  const std::size_t k = static_cast<std::size_t>(it - f.begin());
+  const double d01 = (f[k] - f[k - 1]) / (s[k] - s[k - 1]), d12 = (f[k + 1] - f[k]) / (s[k + 1] - s[k]);
+  const double d012 = (d12 - d01) / (s[k + 1] - s[k - 1]);
+  const double xv = 0.5 * (s[k - 1] + s[k]) - d01 / (2.0 * d012);
+  return f[k - 1] + d01 * (xv - s[k - 1]) + d012 * (xv - s[k - 1]) * (xv - s[k]);
+}
+
+double botella_peyret_error(const std::vector<std::string>& options) {
+  std::vector<std::string> sets{"domain.cells_x=64", "domain.cells_y=64"};
+  sets.insert(sets.end(), options.begin(), options.end());
+  Simulation sim(read_scene_file(IBMS_CAVITY_RE1000_SCENE, sets));
+  const double tolerance = sim.scene().run.steady_tolerance;
+  VelocityScan scan = scan_velocity(sim.grid(), sim.fluid());
+  for (long n = 0; n < 200000; ++n) {
+    const double dt = next_time_step(sim, scan);
+    advance_one_step(sim, dt);
+    scan = scan_velocity(sim.grid(), sim.fluid());
+    const ProjectionStats& ps = sim.last_projection;
+    if (ps.max_velocity > 0 && ps.max_velocity_change / (dt * ps.max_velocity) < tolerance) break;
+  }
+  const CentrelineProfiles p = centreline_profiles(sim);
+  // Botella & Peyret (1998), Re = 1000 (validation/lid_driven_cavity_re1000/reference/botella_peyret_extrema.csv).
+  const double published[3] = {-0.3885698, 0.3769447, -0.5270771};
+  const double measured[3] = {parabola_extremum(p.y, p.u, true), parabola_extremum(p.x, p.v, false),
+                              parabola_extremum(p.x, p.v, true)};
+  double worst = 0.0;
+  for (int q = 0; q < 3; ++q) worst = std::max(worst, std::abs(measured[q] - published[q]));
+  BOOST_TEST_MESSAGE("64^2 " << (options.empty() ? std::string("default") : options[0] + (options.size() > 1 ? " " + options[1] : ""))
+                             << ": u_min " << measured[0] << ", v_max " << measured[1] << ", v_min " << measured[2]
+                             << ", largest error " << worst);
+  return worst;
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(quick_convection_and_quadratic_wall_closure_bring_the_re1000_cavity_closer_to_the_spectral_values) {
+  const double central = botella_peyret_error({});
+  const double quick = botella_peyret_error({"fluid.convection=quick"});
+  const double wall = botella_peyret_error({"fluid.wall_closure=quadratic"});
+  const double both = botella_peyret_error({"fluid.convection=quick", "fluid.wall_closure=quadratic"});
+  BOOST_TEST(std::abs(central / 2.81e-2 - 1.0) <= 0.05);
+  BOOST_TEST(quick <= 0.85 * central);
+  BOOST_TEST(wall <= 0.85 * central);
+  BOOST_TEST(both <= 0.60 * central);
+  BOOST_TEST(both <= 1.54e-2);  // Basilisk at 64^2 (issue 13's table)
+}
