@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <stdexcept>
 
 #include "solid/stable_substep.hpp"
@@ -176,17 +177,52 @@ SolidStepCount advance_bodies(const SolidStepInputs& in, const std::vector<Swell
   contact_work.resize(bodies.size());
   for (std::size_t b = 0; b < bodies.size(); ++b) contact_work[b].resize(bodies[b].n_points());
   groups.substeps_of_body.resize(bodies.size());
-  groups.contact_work = 0.0;
   SolidStepCount count;
-  // Groups cannot touch one another within the step (contact_model.hpp), so they advance one
-  // after the other, each over the whole step with its own sub-step.
-  for (int g = first_group(groups, bodies); g < end_group(groups, bodies); ++g) {
-    const int n_sub = group_substeps(in, groups, g, bodies, scratch);
-    if (n_sub == 0) continue;
-    advance_group(in, swelling, contact_forces, groups.members, groups.implicit_of_body, implicit, n_sub, coupling,
-                  contact_work, rigid, bodies, groups.contact_work);
-    record(groups, n_sub, groups.substeps_of_body, count);
+  // Plan, in group order: the sub-steps of each group and the spring integrator of each body.
+  const int first = first_group(groups, bodies), end = end_group(groups, bodies);
+  groups.group_substeps.reserve(bodies.size());  // at most one group per body: sized once
+  groups.group_work.reserve(bodies.size());
+  groups.group_substeps.clear();
+  for (int g = first; g < end; ++g) {
+    groups.group_substeps.push_back(group_substeps(in, groups, g, bodies, scratch));
+    record(groups, groups.group_substeps.back(), groups.substeps_of_body, count);
   }
+  // Groups cannot touch one another within the step (contact_model.hpp): each advances over the
+  // whole step with its own sub-step, independently, so on several threads (issue 12 item 4, one
+  // group per thread at a time). A group's result does not depend on the thread that ran it, and
+  // the per-group contact work is summed in group order afterwards: bitwise the same for any
+  // thread count. Exceptions (a blow-up) are caught per group; the lowest group's is rethrown.
+  const int n_groups = end - first;
+  groups.group_work.assign(n_groups, 0.0);
+  std::exception_ptr error;
+  int error_group = n_groups;
+#if defined(_OPENMP)
+#pragma omp parallel for schedule(dynamic, 1) if (n_groups > 1)
+#endif
+  for (int k = 0; k < n_groups; ++k) {
+    if (groups.group_substeps[k] == 0) continue;
+    thread_local BodyMask mask;  // this thread's group (empty: all bodies, the global mode)
+    if (first < 0) mask.clear();
+    else {
+      mask.assign(bodies.size(), 0);
+      for (std::size_t b = 0; b < bodies.size(); ++b) mask[b] = groups.group_of[b] == first + k ? 1 : 0;
+    }
+    try {
+      advance_group(in, swelling, contact_forces, mask, groups.implicit_of_body, implicit, groups.group_substeps[k],
+                    coupling, contact_work, rigid, bodies, groups.group_work[k]);
+    } catch (...) {
+#if defined(_OPENMP)
+#pragma omp critical(ibms_group_error)
+#endif
+      if (k < error_group) {
+        error_group = k;
+        error = std::current_exception();
+      }
+    }
+  }
+  if (error) std::rethrow_exception(error);
+  groups.contact_work = 0.0;
+  for (double work : groups.group_work) groups.contact_work += work;
   apply_swelling_schedules(swelling, in.time + in.dt, bodies);  // state at t^{n+1}
   return count;
 }

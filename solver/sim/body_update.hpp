@@ -28,6 +28,8 @@ namespace ibms {
 // (forces[b][p], sized like the bodies, zeroed by the caller). Called once per sub-step.
 // The default is no_contact_forces; solver/contact provides the DEM version.
 // members: the contact group being sub-stepped; only contacts among its bodies and with the walls.
+// Called concurrently for different groups (advance_bodies runs groups on several threads): it
+// must only write the forces of its members and guard any shared state.
 using ContactForces = std::function<void(const std::vector<MassSpringBody>& bodies, const BodyMask& members,
                                          double time, std::vector<std::vector<Vec2>>& forces)>;
 void no_contact_forces(const std::vector<MassSpringBody>& bodies, const BodyMask& members, double time,
@@ -47,6 +49,8 @@ struct SubstepGroups {
   BodyMask members;  // scratch: the group being advanced
   std::vector<int> substeps_of_body;  // out: the sub-steps body b took in the latest step
   std::vector<char> implicit_of_body; // out: body b's springs took implicit steps in the latest step
+  std::vector<int> group_substeps;    // scratch: sub-steps of each group in the latest step
+  std::vector<double> group_work;     // scratch: contact work of each group
   double contact_work = 0.0;          // out: work of all contact forces on all bodies in the latest step
                                       // [energy/length]; <= 0 for a dissipative contact law, walls at rest
 };

@@ -31,6 +31,11 @@ class StageTimers {
     std::chrono::steady_clock::time_point start_;
   };
   Scope time(Stage stage) { return Scope(*this, stage); }
+  // Adds time measured elsewhere (e.g. on another thread, under the caller's lock).
+  void add(Stage stage, double seconds, long calls) {
+    seconds_[static_cast<int>(stage)] += seconds;
+    calls_[static_cast<int>(stage)] += calls;
+  }
   double seconds(Stage stage) const { return seconds_[static_cast<int>(stage)]; }
   long calls(Stage stage) const { return calls_[static_cast<int>(stage)]; }
 
