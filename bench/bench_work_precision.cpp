@@ -29,6 +29,7 @@
 #include "scene/scene_reader.hpp"
 #include "sim/diagnostics.hpp"
 #include "sim/run.hpp"
+#include "validation/common/centreline_extrema.hpp"
 #include "validation/common/profile_table.hpp"
 #include "validation/settling_disk/body_series.hpp"
 #include "verification/fluid/manufactured_solution.hpp"
@@ -86,35 +87,6 @@ Point run_mms(int n) {
   return {n, 1.0 / n, n_steps, seconds, std::sqrt(sum / (n * n))};
 }
 
-// Vertex of the parabola through the discrete extremum of f(s) and its neighbours (s increasing).
-double parabola_extremum(const std::vector<double>& s, const std::vector<double>& f, bool minimum) {
-  const auto it = minimum ? std::min_element(f.begin() + 1, f.end() - 1) : std::max_element(f.begin() + 1, f.end() - 1);
-  const std::size_t k = static_cast<std::size_t>(it - f.begin());
-  const double x0 = s[k - 1], x1 = s[k], x2 = s[k + 1], y0 = f[k - 1], y1 = f[k], y2 = f[k + 1];
-  // Newton form: f = y0 + d01 (x - x0) + d012 (x - x0)(x - x1); vertex where f' = 0.
-  const double d01 = (y1 - y0) / (x1 - x0), d12 = (y2 - y1) / (x2 - x1), d012 = (d12 - d01) / (x2 - x0);
-  if (d012 == 0.0) return y1;
-  const double xv = 0.5 * (x0 + x1) - d01 / (2.0 * d012);
-  return y0 + d01 * (xv - x0) + d012 * (xv - x0) * (xv - x1);
-}
-
-// The published extrema u_min, v_max, v_min of a case (botella_peyret_extrema.csv: quantity,value,...).
-std::array<double, 3> published_extrema(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error(path + ": cannot open");
-  std::array<double, 3> values{NAN, NAN, NAN};
-  const char* names[3] = {"u_min", "v_max", "v_min"};
-  for (std::string line; std::getline(in, line);) {
-    if (line.empty() || line[0] == '#') continue;
-    const std::size_t comma = line.find(',');
-    for (int q = 0; q < 3; ++q)
-      if (line.substr(0, comma) == names[q]) values[q] = std::stod(line.substr(comma + 1));
-  }
-  for (double v : values)
-    if (!std::isfinite(v)) throw std::runtime_error(path + ": u_min, v_max and v_min expected");
-  return values;
-}
-
 // Cavity case at n^2 to its steady-state criterion; error against Botella & Peyret's extrema.
 Point run_cavity(const std::string& case_name, int n, const std::string& work_dir) {
   const std::string dir = source_dir + "/validation/" + case_name;
@@ -126,11 +98,9 @@ Point run_cavity(const std::string& case_name, int n, const std::string& work_di
       run_simulation(sim, {work_dir + "/" + case_name + "_" + std::to_string(n) + ".h5", /*quiet=*/true});
   const double seconds = seconds_since(start);
   const CentrelineProfiles p = centreline_profiles(sim);
-  const std::array<double, 3> published = published_extrema(dir + "/reference/botella_peyret_extrema.csv");
-  const double measured[3] = {parabola_extremum(p.y, p.u, true), parabola_extremum(p.x, p.v, false),
-                              parabola_extremum(p.x, p.v, true)};
-  double worst = 0.0;
-  for (int q = 0; q < 3; ++q) worst = std::max(worst, std::abs(measured[q] - published[q]));
+  const double worst = validation::largest_extremum_error(
+      validation::centreline_extrema(p.y, p.u, p.x, p.v),
+      validation::published_extrema(dir + "/reference/botella_peyret_extrema.csv"));
   return {n, 1.0 / n, summary.steps, seconds, worst};
 }
 

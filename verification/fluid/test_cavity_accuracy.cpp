@@ -10,27 +10,19 @@
 #include <boost/test/unit_test.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
 #include <vector>
 
 #include "scene/scene_reader.hpp"
+#include "validation/common/centreline_extrema.hpp"
 #include "sim/diagnostics.hpp"
 #include "sim/simulation.hpp"
 
 using namespace ibms;
 
 namespace {
-
-// Vertex of the parabola through the discrete extremum of f(s) and its two neighbours.
-double parabola_extremum(const std::vector<double>& s, const std::vector<double>& f, bool minimum) {
-  const auto it = minimum ? std::min_element(f.begin() + 1, f.end() - 1) : std::max_element(f.begin() + 1, f.end() - 1);
-  const std::size_t k = static_cast<std::size_t>(it - f.begin());
-  const double d01 = (f[k] - f[k - 1]) / (s[k] - s[k - 1]), d12 = (f[k + 1] - f[k]) / (s[k + 1] - s[k]);
-  const double d012 = (d12 - d01) / (s[k + 1] - s[k - 1]);
-  const double xv = 0.5 * (s[k - 1] + s[k]) - d01 / (2.0 * d012);
-  return f[k - 1] + d01 * (xv - s[k - 1]) + d012 * (xv - s[k - 1]) * (xv - s[k]);
-}
 
 struct Extrema {
   double value[3];  // u_min, v_max, v_min
@@ -51,12 +43,8 @@ Extrema botella_peyret_extrema(const std::vector<std::string>& options) {
     if (ps.max_velocity > 0 && ps.max_velocity_change / (dt * ps.max_velocity) < tolerance) break;
   }
   const CentrelineProfiles p = centreline_profiles(sim);
-  // Botella & Peyret (1998), Re = 1000 (validation/lid_driven_cavity_re1000/reference/botella_peyret_extrema.csv).
-  const double published[3] = {-0.3885698, 0.3769447, -0.5270771};
-  const double measured[3] = {parabola_extremum(p.y, p.u, true), parabola_extremum(p.x, p.v, false),
-                              parabola_extremum(p.x, p.v, true)};
-  double worst = 0.0;
-  for (int q = 0; q < 3; ++q) worst = std::max(worst, std::abs(measured[q] - published[q]));
+  const std::array<double, 3> measured = validation::centreline_extrema(p.y, p.u, p.x, p.v);
+  const double worst = validation::largest_extremum_error(measured, validation::published_extrema(IBMS_BOTELLA_PEYRET));
   std::string label = "default";
   if (!options.empty()) {
     label.clear();
