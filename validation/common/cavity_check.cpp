@@ -5,10 +5,15 @@
 // appends a result line to a CSV for the report, and exits non-zero on failure.
 //
 // usage: cavity_check ghia <case> <tolerance> <ref_u.csv> <ref_v.csv> <results.csv> <base_coarse> <base_medium> <base_fine>
-//        cavity_check symmetry <case> <tolerance> <results.csv> <base_coarse> <base_medium> <base_fine>
+//        cavity_check symmetry <case> <tolerance> <results.csv> <constraints.csv> <base_coarse> <base_medium> <base_fine>
+// The symmetry mode checks every row of <constraints.csv> (quantity,exact_value,basis) it knows;
+// a row it does not know is an error (a constraint added to the file cannot be skipped silently),
+// except a non-numeric exact value, which is reported as information.
 // where <base> is the HDF5 output path without ".h5" (profiles are <base>_centreline_u/v.csv).
 #include <cmath>
 #include <cstdio>
+#include <sstream>
+#include <stdexcept>
 #include <cstdlib>
 #include <fstream>
 #include <string>
@@ -89,19 +94,86 @@ int check_ghia(char** argv) {
   return pass ? 0 : 1;
 }
 
+// Rows of a constraints file: quantity (quoted), exact value, basis.
+struct Constraint { std::string quantity, exact; };
+
+std::vector<Constraint> read_constraints(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error(path + ": cannot open");
+  std::vector<Constraint> rows;
+  bool header = true;
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    if (header) { header = false; continue; }
+    // Split on commas outside double quotes.
+    std::vector<std::string> cells(1);
+    bool quoted = false;
+    for (char c : line) {
+      if (c == '"') quoted = !quoted;
+      else if (c == ',' && !quoted) cells.emplace_back();
+      else cells.back() += c;
+    }
+    if (cells.size() < 2) throw std::runtime_error(path + ": row '" + line + "' has no exact value");
+    rows.push_back({cells[0], cells[1]});
+  }
+  return rows;
+}
+
+// Checks the constraints that the fine grid's centre-line profiles can show; returns the largest
+// defect |measured - exact| over them and prints each.
+double check_constraints(const std::string& path, const Profiles& fine, double symmetry_defect_u,
+                         double symmetry_defect_v) {
+  const std::vector<double>& y = fine.u.columns[0];
+  const std::vector<double>& u = fine.u.columns[1];
+  const double u_centre = interpolate(y, u, 0.5);
+  const double v_centre = interpolate(fine.v.columns[0], fine.v.columns[1], 0.5);
+  double flux = 0.0;  // trapezoid over the profile points, walls included
+  for (std::size_t k = 0; k + 1 < y.size(); ++k) flux += 0.5 * (u[k] + u[k + 1]) * (y[k + 1] - y[k]);
+  double worst = 0.0;
+  for (const Constraint& c : read_constraints(path)) {
+    char* end = nullptr;
+    const double exact = std::strtod(c.exact.c_str(), &end);
+    const bool numeric = end != c.exact.c_str() && *end == '\0';
+    double measured = NAN;
+    if (c.quantity == "u(x,1) on top lid") measured = u.back();
+    else if (c.quantity == "u(x,0) on bottom lid") measured = u.front();
+    else if (c.quantity == "u(0.5,0.5)") measured = u_centre;
+    else if (c.quantity == "v(0.5,0.5)") measured = v_centre;
+    else if (c.quantity == "u(0.5,y) + u(0.5,1-y)") measured = symmetry_defect_u;
+    else if (c.quantity == "v(x,0.5) + v(1-x,0.5)") measured = symmetry_defect_v;
+    else if (c.quantity == "integral_0^1 u(0.5,y) dy") measured = flux;
+    else if (c.quantity == "primary vortex center") measured = std::max(std::abs(u_centre), std::abs(v_centre));
+    else if (!numeric) {
+      std::printf("  constraint %-28s %s (information only: not a value)\n", c.quantity.c_str(), c.exact.c_str());
+      continue;
+    } else {
+      throw std::runtime_error(path + ": constraint '" + c.quantity + "' is not known to cavity_check");
+    }
+    // The vortex centre (0.5, 0.5) is checked as u = v = 0 there.
+    const double defect = c.quantity == "primary vortex center" ? measured : std::abs(measured - exact);
+    std::printf("  constraint %-28s exact %-10s measured %+.3e  defect %.3e\n", c.quantity.c_str(), c.exact.c_str(),
+                measured, defect);
+    worst = std::max(worst, defect);
+  }
+  return worst;
+}
+
 int check_symmetry(char** argv) {
   const std::string name = argv[2];
   const double tolerance = std::atof(argv[3]);
   const std::string results = argv[4];
+  const std::string constraints = argv[5];
   std::vector<Profiles> grids;
-  for (int k = 0; k < 3; ++k) grids.push_back(read_profiles(argv[5 + k]));
+  for (int k = 0; k < 3; ++k) grids.push_back(read_profiles(argv[6 + k]));
   const Profiles& fine = grids[2];
   // Point symmetry u(1-x, 1-y) = -u(x, y) restricted to the centre lines: u(0.5, 1-y) = -u(0.5, y)
   // and v(1-x, 0.5) = -v(x, 0.5); at the centre u = v = 0. Profile points are symmetric in y and x.
   double worst = 0;
+  double defect[2] = {0.0, 0.0};
   for (int comp = 0; comp < 2; ++comp) {
     const std::vector<double>& f = (comp == 0 ? fine.u : fine.v).columns[1];
-    for (std::size_t k = 0; k < f.size(); ++k) worst = std::max(worst, std::abs(f[k] + f[f.size() - 1 - k]));
+    for (std::size_t k = 0; k < f.size(); ++k) defect[comp] = std::max(defect[comp], std::abs(f[k] + f[f.size() - 1 - k]));
+    worst = std::max(worst, defect[comp]);
   }
   const double u_centre = interpolate(fine.u.columns[0], fine.u.columns[1], 0.5);
   const double v_centre = interpolate(fine.v.columns[0], fine.v.columns[1], 0.5);
@@ -110,11 +182,20 @@ int check_symmetry(char** argv) {
   std::printf("%s: u(0.5,0.5) = %.3e, v(0.5,0.5) = %.3e, max centre-line symmetry defect %.3e (tolerance %.1e): %s\n",
               name.c_str(), u_centre, v_centre, worst, tolerance, pass ? "pass" : "FAIL");
   append_result(results, name, "max centre-line point-symmetry defect", tolerance, worst, pass);
+  // Every constraint of the case's reference file (lid values, centre, odd profiles, zero net flux
+  // through x = 0.5, vortex centre), read and checked, not only the point symmetry.
+  std::printf("constraints of %s:\n", constraints.c_str());
+  const double constraint_defect = check_constraints(constraints, fine, defect[0], defect[1]);
+  const bool constraints_pass = constraint_defect <= tolerance;
+  std::printf("%s: largest constraint defect %.3e (tolerance %.1e): %s\n", name.c_str(), constraint_defect, tolerance,
+              constraints_pass ? "pass" : "FAIL");
+  append_result(results, name, "largest defect of reference/constraints (lids, centre, odd profiles, net flux)",
+                tolerance, constraint_defect, constraints_pass);
   std::printf("grid convergence (Celik et al. 2008, safety factor 1.25, r = 2):\n");
   // u's extrema on x = 0.5 are the lid values, so use interior point values instead.
   report_gci(grids, results, name,
              {{"u(0.5, 0.75)", true, Quantity::value_at, 0.75}, {"max v on y = 0.5", false, Quantity::maximum, 0}});
-  return pass ? 0 : 1;
+  return pass && constraints_pass ? 0 : 1;
 }
 
 }  // namespace
@@ -123,7 +204,7 @@ int main(int argc, char** argv) {
   try {
     const std::string mode = argc > 1 ? argv[1] : "";
     if (mode == "ghia" && argc == 10) return check_ghia(argv);
-    if (mode == "symmetry" && argc == 8) return check_symmetry(argv);
+    if (mode == "symmetry" && argc == 9) return check_symmetry(argv);
     std::fprintf(stderr, "usage: see the comment at the top of validation/common/cavity_check.cpp\n");
     return 2;
   } catch (const std::exception& e) {
