@@ -26,7 +26,7 @@ struct RunSpec {
   // the step takes its own sub-step; contact sub-steps only for a group that may touch something)
   // or "global" (every body takes the smallest sub-step of all, the first version's scheme).
   std::string solid_substeps = "per_group";
-  // A body whose mechanical energy exceeds what the scene can give it (Simulation::body_energy_bound:
+  // A body whose kinetic energy exceeds what the scene can give it (Simulation::body_energy_scale:
   // an unstable spring or contact) stops the run with the blow-up message ("stop") or is reported
   // once on stderr ("warn").
   std::string on_body_instability = "stop";

@@ -125,7 +125,9 @@ int group_substeps(const SolidStepInputs& in, SubstepGroups& groups, int g, cons
     if (g >= 0) groups.members[b] = groups.group_of[b] == g ? 1 : 0;
     if (!selected(groups.members, b)) continue;
     ++n_members;
-    const double spring_substep = stable_substep(bodies[b], /*safety=*/0.5, scratch);
+    // The spectral bound only where it decides something (explicit or automatic springs).
+    const bool forced_implicit = bodies[b].integrator == SpringIntegrator::implicit_euler;
+    const double spring_substep = forced_implicit ? HUGE_VAL : stable_substep(bodies[b], /*safety=*/0.5, scratch);
     groups.implicit_of_body[b] = uses_implicit_springs(bodies[b], in.dt, spring_substep) ? 1 : 0;
     if (!groups.implicit_of_body[b]) dt_s = std::min(dt_s, spring_substep);
   }
@@ -160,8 +162,12 @@ SolidStepCount count_substeps(const SolidStepInputs& in, SubstepGroups& groups,
   SpectralWorkspace& scratch = in.spectral_workspace != nullptr ? *in.spectral_workspace : local;
   SolidStepCount count;
   groups.substeps_of_body.assign(bodies.size(), 0);
-  for (int g = first_group(groups, bodies); g < end_group(groups, bodies); ++g)
-    record(groups, group_substeps(in, groups, g, bodies, scratch), groups.substeps_of_body, count);
+  groups.group_substeps.reserve(bodies.size());  // at most one group per body: sized once
+  groups.group_substeps.clear();
+  for (int g = first_group(groups, bodies); g < end_group(groups, bodies); ++g) {
+    groups.group_substeps.push_back(group_substeps(in, groups, g, bodies, scratch));
+    record(groups, groups.group_substeps.back(), groups.substeps_of_body, count);
+  }
   return count;
 }
 
@@ -169,24 +175,15 @@ SolidStepCount advance_bodies(const SolidStepInputs& in, const std::vector<Swell
                               const ContactForces& contact_forces, SubstepGroups& groups,
                               std::vector<BodyCoupling>& coupling, std::vector<std::vector<Vec2>>& contact_work,
                               std::vector<RigidBody>& rigid, std::vector<MassSpringBody>& bodies) {
-  SpectralWorkspace local;
-  SpectralWorkspace& scratch = in.spectral_workspace != nullptr ? *in.spectral_workspace : local;
   std::vector<ImplicitSpringSystem> local_implicit;
   std::vector<ImplicitSpringSystem>& implicit = in.implicit_systems != nullptr ? *in.implicit_systems : local_implicit;
   implicit.resize(bodies.size());
   contact_work.resize(bodies.size());
   for (std::size_t b = 0; b < bodies.size(); ++b) contact_work[b].resize(bodies[b].n_points());
-  groups.substeps_of_body.resize(bodies.size());
-  SolidStepCount count;
   // Plan, in group order: the sub-steps of each group and the spring integrator of each body.
+  const SolidStepCount count = count_substeps(in, groups, bodies);
   const int first = first_group(groups, bodies), end = end_group(groups, bodies);
-  groups.group_substeps.reserve(bodies.size());  // at most one group per body: sized once
   groups.group_work.reserve(bodies.size());
-  groups.group_substeps.clear();
-  for (int g = first; g < end; ++g) {
-    groups.group_substeps.push_back(group_substeps(in, groups, g, bodies, scratch));
-    record(groups, groups.group_substeps.back(), groups.substeps_of_body, count);
-  }
   // Groups cannot touch one another within the step (contact_model.hpp): each advances over the
   // whole step with its own sub-step, independently, so on several threads (issue 12 item 4, one
   // group per thread at a time). A group's result does not depend on the thread that ran it, and

@@ -89,7 +89,8 @@ struct SolidStepInputs {
 // the contact forces summed to force and torque about X_c, and m (1 - rho_f/rho_s) g; prescribed
 // to its scene motion at the sub-step's end. rigid[b] holds the motion of rigid and prescribed
 // bodies (unused for mass_spring). contact_work is scratch (resized once).
-// The sub-steps advance_bodies would take with these groups (fills groups.substeps_of_body).
+// The sub-steps advance_bodies takes with these groups (it plans with this): fills
+// groups.substeps_of_body, groups.group_substeps and groups.implicit_of_body.
 SolidStepCount count_substeps(const SolidStepInputs& in, SubstepGroups& groups,
                               const std::vector<MassSpringBody>& bodies);
 

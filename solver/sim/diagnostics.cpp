@@ -72,7 +72,7 @@ void check_bodies_for_blow_up(const Simulation& sim) {
     // spring energy alone also holds the load of a swelling step (the natural lengths jump by
     // rate dt at each step's end, ~ k (rate dt)^2 / 2 per spring: 2.2 for the stiff swelling disk).
     const double energy = kinetic_energy(body);
-    const double bound = sim.body_energy_bound()[b];
+    const double bound = Simulation::instability_energy_factor * sim.body_energy_scale()[b];
     if (energy > bound)
       report_body_instability(sim, fmt::format(
           "body {} has kinetic energy {:.4g}, above the {:.4g} the scene can give it "
@@ -85,7 +85,7 @@ void check_bodies_for_blow_up(const Simulation& sim) {
   // integration error of a few per cent of one collision's energy).
   double energy_scale = 0.0;
   for (std::size_t b = 0; b < sim.bodies().size(); ++b)
-    if (sim.bodies()[b].kind != BodyKind::prescribed) energy_scale += sim.body_energy_bound()[b] / 4.0;
+    if (sim.bodies()[b].kind != BodyKind::prescribed) energy_scale += sim.body_energy_scale()[b];
   constexpr double returned_fraction = 0.25;
   if (sim.total_contact_work > returned_fraction * energy_scale)
     report_body_instability(sim, fmt::format(

@@ -103,14 +103,13 @@ void Simulation::set_instability_bounds() {
   // A scene with nothing driving it still needs a non-zero scale (round-off moves the bodies):
   // crossing a thousandth of the box in the whole run.
   driving_speed_ = std::max(speed, 1e-3 * diagonal / scene_.run.end_time);
-  body_energy_bound_.clear();
+  body_energy_scale_.clear();
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
     const BodySpec& spec = scene_.bodies[b];
     const double largest = spec.swelling.enabled ? std::max(spec.diameter, spec.swelling.max_diameter) : spec.diameter;
     const double mass = bodies_[b].density * M_PI * largest * largest / 4.0;
-    constexpr double energy_factor = 4.0;  // twice every speed
-    body_energy_bound_.push_back(energy_factor * (0.5 * mass * driving_speed_ * driving_speed_ +
-                                                  spring_energy(bodies_[b], bodies_[b].length_scale())));
+    body_energy_scale_.push_back(0.5 * mass * driving_speed_ * driving_speed_ +
+                                 spring_energy(bodies_[b], bodies_[b].length_scale()));
   }
 }
 

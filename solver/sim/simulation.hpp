@@ -71,7 +71,9 @@ class Simulation {
   // diagonal L (at least L / 1000 per end_time); and per body the most kinetic energy it can physically reach,
   // E_max = 4 (M V_drive^2 / 2 + E_spring(t = 0)) with M its largest (swollen) mass.
   double driving_speed() const { return driving_speed_; }
-  const std::vector<double>& body_energy_bound() const { return body_energy_bound_; }
+  // M V_drive^2 / 2 + E_spring(t = 0) of each body; the bound is instability_energy_factor times it.
+  const std::vector<double>& body_energy_scale() const { return body_energy_scale_; }
+  static constexpr double instability_energy_factor = 4.0;  // twice every speed
   mutable bool instability_warned = false;  // run.on_body_instability = "warn": said once
   // Work of the contact forces on all bodies since t = 0 [energy/length]: never positive for the
   // dissipative spring-dashpot law with walls at rest, apart from the integration error; a contact
@@ -120,7 +122,7 @@ class Simulation {
   WallBox contact_box_;
   mutable std::vector<double> contact_reach_;  // scratch of contact_possible, one entry per body
   double driving_speed_ = 0.0;
-  std::vector<double> body_energy_bound_;
+  std::vector<double> body_energy_scale_;
   void set_instability_bounds();
   mutable ContactGroups contact_groups_;       // scratch of contact_possible and substep_groups
   SubstepGroups substep_groups_;
