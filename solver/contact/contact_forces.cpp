@@ -78,6 +78,7 @@ void collect_wall_contacts(const ContactModel& model, const std::vector<MassSpri
         const double x = bodies[b].position[k][c];
         const double wall_distance[2] = {x - box.origin[c], box.origin[c] + box.length[c] - x};
         for (int side = 0; side < 2; ++side) {
+          if (!box.is_wall(c, side)) continue;
           // delta = r_c - d_wall (METHOD.md §1.9); n points out of the box, towards the wall.
           const double overlap = radius - wall_distance[side];
           if (!(overlap > 0.0)) continue;

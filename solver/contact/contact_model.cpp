@@ -136,8 +136,9 @@ void find_contact_groups(const ContactModel& model, const std::vector<MassSpring
       if (model.walls && bodies[a].kind != BodyKind::prescribed) {
         for (int d = 0; d < 2; ++d) {
           if (box.periodic[d]) continue;
-          const double gap = std::min(ca.centre[d] - ca.radius - box.origin[d],
-                                      box.origin[d] + box.length[d] - ca.centre[d] - ca.radius);
+          const double gap = std::min(box.is_wall(d, 0) ? ca.centre[d] - ca.radius - box.origin[d] : HUGE_VAL,
+                                      box.is_wall(d, 1) ? box.origin[d] + box.length[d] - ca.centre[d] - ca.radius
+                                                        : HUGE_VAL);
           if (gap < reach(ca.speed, reach_extra[a], cds_a)) touches[a] = 1;
         }
       }

@@ -57,6 +57,10 @@ struct WallBox {
   std::array<double, 2> origin{0.0, 0.0};  // [length]
   std::array<double, 2> length{1.0, 1.0};  // [length]
   std::array<bool, 2> periodic{false, false};
+  // Inflow or outflow sides (left, right, bottom, top): no wall there, so no contact (issue 11).
+  std::array<bool, 4> open{false, false, false, false};
+  // A wall at side 0 (low) or 1 (high) of direction `axis`.
+  bool is_wall(int axis, int side) const { return !periodic[axis] && !open[2 * axis + side]; }
 };
 
 // Largest sub-step that resolves a contact with steps_per_contact sub-steps (A8: dt <= t_c / 20)

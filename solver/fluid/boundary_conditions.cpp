@@ -1,56 +1,210 @@
-// Ghost-cell fills for the collocated grid (METHOD.md §2.5; same logic as CaNS src/bound.f90).
+// Ghost-cell fills for the collocated grid (METHOD.md §2.5; walls as CaNS src/bound.f90; open sides
+// issue 11). Rules in boundary_conditions.hpp.
 #include "fluid/boundary_conditions.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
 
 namespace ibms {
 namespace {
 
-// Fill x-ghosts (i = -1, nx) for rows j in [-1, ny]: periodic wrap or
-// q_g = sign_low * q(0) + value_low (left) and q_g = sign_high * q(nx-1) + value_high (right).
-void fill_x(const Grid& g, CellField& q, double sign, double value_left, double value_right) {
-  for (int j = 0; j < g.ny; ++j) {
-    if (g.periodic_x) {
-      q(-1, j) = q(g.nx - 1, j);
-      q(g.nx, j) = q(0, j);
-    } else {
-      q(-1, j) = sign * q(0, j) + value_left;
-      q(g.nx, j) = sign * q(g.nx - 1, j) + value_right;
-    }
-  }
+constexpr double pi = 3.14159265358979323846;
+
+// How a scalar's ghost follows from the interior next to a side.
+enum class GhostRule { even, odd, linear };
+
+GhostRule pressure_rule(SideKind kind) {
+  if (kind == SideKind::outflow) return GhostRule::odd;
+  if (kind == SideKind::inflow) return GhostRule::linear;
+  return GhostRule::even;
 }
 
-// y-ghosts over the full padded row width so corners are filled consistently (x first, then y).
-void fill_y(const Grid& g, CellField& q, double sign, double value_bottom, double value_top) {
-  for (int i = -1; i <= g.nx; ++i) {
-    if (g.periodic_y) {
-      q(i, -1) = q(i, g.ny - 1);
-      q(i, g.ny) = q(i, 0);
-    } else {
-      q(i, -1) = sign * q(i, 0) + value_bottom;
-      q(i, g.ny) = sign * q(i, g.ny - 1) + value_top;
+GhostRule correction_rule(SideKind kind) { return kind == SideKind::outflow ? GhostRule::odd : GhostRule::even; }
+
+double ghost(GhostRule rule, double first, double second) {
+  switch (rule) {
+    case GhostRule::even: return first;
+    case GhostRule::odd: return -first;
+    case GhostRule::linear: return 2.0 * first - second;
+  }
+  return first;
+}
+
+// Scalar ghosts by a rule per side; x first over the interior rows, then y over the padded width.
+template <typename RuleOf>
+void fill_scalar(const Grid& g, const FluidBoundaries& bc, CellField& q, RuleOf rule_of) {
+  const int nx = g.nx, ny = g.ny;
+  if (g.periodic_x) {
+    for (int j = 0; j < ny; ++j) { q(-1, j) = q(nx - 1, j); q(nx, j) = q(0, j); }
+  } else {
+    const GhostRule low = rule_of(bc.left.kind), high = rule_of(bc.right.kind);
+    for (int j = 0; j < ny; ++j) {
+      q(-1, j) = ghost(low, q(0, j), q(std::min(1, nx - 1), j));
+      q(nx, j) = ghost(high, q(nx - 1, j), q(std::max(nx - 2, 0), j));
+    }
+  }
+  if (g.periodic_y) {
+    for (int i = -1; i <= nx; ++i) { q(i, -1) = q(i, ny - 1); q(i, ny) = q(i, 0); }
+  } else {
+    const GhostRule low = rule_of(bc.bottom.kind), high = rule_of(bc.top.kind);
+    for (int i = -1; i <= nx; ++i) {
+      q(i, -1) = ghost(low, q(i, 0), q(i, std::min(1, ny - 1)));
+      q(i, ny) = ghost(high, q(i, ny - 1), q(i, std::max(ny - 2, 0)));
     }
   }
 }
 
 }  // namespace
 
-void fill_velocity_ghosts(const Grid& grid, const FluidBoundaries& bc, double time,
-                          CellField& velocity_x, CellField& velocity_y) {
-  // u: normal to left/right walls (u_w = 0), tangential to bottom/top (u_w = wall speed).
-  fill_x(grid, velocity_x, -1.0, 0.0, 0.0);
-  fill_y(grid, velocity_x, -1.0, 2.0 * bc.bottom.at(time), 2.0 * bc.top.at(time));
-  // v: tangential to left/right walls, normal to bottom/top walls.
-  fill_x(grid, velocity_y, -1.0, 2.0 * bc.left.at(time), 2.0 * bc.right.at(time));
-  fill_y(grid, velocity_y, -1.0, 0.0, 0.0);
+const char* side_kind_name(SideKind kind) {
+  switch (kind) {
+    case SideKind::wall: return "wall";
+    case SideKind::inflow: return "inflow";
+    case SideKind::outflow: return "outflow";
+    case SideKind::periodic: return "periodic";
+  }
+  return "wall";
+}
+
+double TimeFactor::at(double time) const {
+  switch (kind) {
+    case Kind::constant: return 1.0;
+    case Kind::ramp: return std::min(std::max(time, 0.0) / ramp_time, 1.0);
+    case Kind::sinusoidal: return offset + amplitude * std::sin(2.0 * pi * time / period);
+  }
+  return 1.0;
+}
+
+double InflowProfile::at(double s, double side_length, double time) const {
+  double shape_value = 1.0;
+  if (shape == Shape::parabolic) {
+    const double c = std::clamp(s, 0.0, side_length);
+    shape_value = 4.0 * c * (side_length - c) / (side_length * side_length);
+  }
+  return velocity * shape_value * factor.at(time);
+}
+
+double InflowProfile::mean_at(double time) const {
+  return velocity * (shape == Shape::parabolic ? 2.0 / 3.0 : 1.0) * factor.at(time);
+}
+
+double InflowProfile::peak() const {
+  double f = 1.0;
+  if (factor.kind == TimeFactor::Kind::sinusoidal) f = std::abs(factor.offset) + std::abs(factor.amplitude);
+  return std::abs(velocity) * f;
+}
+
+const BoundarySide& FluidBoundaries::side(Side s) const {
+  switch (s) {
+    case Side::left: return left;
+    case Side::right: return right;
+    case Side::bottom: return bottom;
+    case Side::top: return top;
+  }
+  return left;
+}
+
+BoundarySide& FluidBoundaries::side(Side s) { return const_cast<BoundarySide&>(std::as_const(*this).side(s)); }
+
+SideKind FluidBoundaries::kind(const Grid& grid, Side s) const {
+  const bool along_x = s == Side::left || s == Side::right;
+  if (along_x ? grid.periodic_x : grid.periodic_y) return SideKind::periodic;
+  return side(s).kind;
+}
+
+std::array<double, 2> FluidBoundaries::velocity_at(const Grid& grid, Side s, double x, double y,
+                                                   double time) const {
+  const BoundarySide& b = side(s);
+  if (b.prescribed) return b.prescribed(x, y, time);
+  const bool x_side = s == Side::left || s == Side::right;  // the side is normal to x
+  if (b.kind == SideKind::inflow) {
+    const double along = x_side ? y - grid.origin_y : x - grid.origin_x;
+    const double length = x_side ? grid.length_y : grid.length_x;
+    const double into = b.inflow.at(along, length, time);
+    const double sign = (s == Side::left || s == Side::bottom) ? 1.0 : -1.0;
+    return x_side ? std::array<double, 2>{sign * into, 0.0} : std::array<double, 2>{0.0, sign * into};
+  }
+  const double tangential = b.at(time);  // walls; 0 elsewhere (the scene refuses a speed there)
+  return x_side ? std::array<double, 2>{0.0, tangential} : std::array<double, 2>{tangential, 0.0};
+}
+
+bool FluidBoundaries::has_open_side(const Grid& grid) const {
+  for (Side s : {Side::left, Side::right, Side::bottom, Side::top}) {
+    const SideKind k = kind(grid, s);
+    if (k == SideKind::inflow || k == SideKind::outflow) return true;
+  }
+  return false;
+}
+
+void fill_velocity_ghosts(const Grid& g, const FluidBoundaries& bc, double time, CellField& u, CellField& v) {
+  const int nx = g.nx, ny = g.ny;
+  if (g.periodic_x) {
+    for (int j = 0; j < ny; ++j) {
+      u(-1, j) = u(nx - 1, j); u(nx, j) = u(0, j);
+      v(-1, j) = v(nx - 1, j); v(nx, j) = v(0, j);
+    }
+  } else {
+    const bool left_d = bc.left.is_dirichlet(), right_d = bc.right.is_dirichlet();
+    for (int j = 0; j < ny; ++j) {
+      const double y = g.y_centre(j);
+      if (left_d) {
+        const auto b = bc.velocity_at(g, Side::left, g.origin_x, y, time);
+        u(-1, j) = 2.0 * b[0] - u(0, j);
+        v(-1, j) = 2.0 * b[1] - v(0, j);
+      } else {
+        u(-1, j) = u(0, j);
+        v(-1, j) = v(0, j);
+      }
+      if (right_d) {
+        const auto b = bc.velocity_at(g, Side::right, g.origin_x + g.length_x, y, time);
+        u(nx, j) = 2.0 * b[0] - u(nx - 1, j);
+        v(nx, j) = 2.0 * b[1] - v(nx - 1, j);
+      } else {
+        u(nx, j) = u(nx - 1, j);
+        v(nx, j) = v(nx - 1, j);
+      }
+    }
+  }
+  if (g.periodic_y) {
+    for (int i = -1; i <= nx; ++i) {
+      u(i, -1) = u(i, ny - 1); u(i, ny) = u(i, 0);
+      v(i, -1) = v(i, ny - 1); v(i, ny) = v(i, 0);
+    }
+  } else {
+    const bool bottom_d = bc.bottom.is_dirichlet(), top_d = bc.top.is_dirichlet();
+    for (int i = -1; i <= nx; ++i) {
+      const double x = std::clamp(g.x_centre(i), g.origin_x, g.origin_x + g.length_x);
+      if (bottom_d) {
+        const auto b = bc.velocity_at(g, Side::bottom, x, g.origin_y, time);
+        u(i, -1) = 2.0 * b[0] - u(i, 0);
+        v(i, -1) = 2.0 * b[1] - v(i, 0);
+      } else {
+        u(i, -1) = u(i, 0);
+        v(i, -1) = v(i, 0);
+      }
+      if (top_d) {
+        const auto b = bc.velocity_at(g, Side::top, x, g.origin_y + g.length_y, time);
+        u(i, ny) = 2.0 * b[0] - u(i, ny - 1);
+        v(i, ny) = 2.0 * b[1] - v(i, ny - 1);
+      } else {
+        u(i, ny) = u(i, ny - 1);
+        v(i, ny) = v(i, ny - 1);
+      }
+    }
+  }
+}
+
+void fill_pressure_ghosts(const Grid& grid, const FluidBoundaries& bc, CellField& pressure) {
+  fill_scalar(grid, bc, pressure, pressure_rule);
+}
+
+void fill_correction_ghosts(const Grid& grid, const FluidBoundaries& bc, CellField& scalar) {
+  fill_scalar(grid, bc, scalar, correction_rule);
 }
 
 void fill_neumann_ghosts(const Grid& grid, CellField& scalar) {
-  fill_x(grid, scalar, 1.0, 0.0, 0.0);
-  fill_y(grid, scalar, 1.0, 0.0, 0.0);
-}
-
-void fill_dirichlet_ghosts(const Grid& grid, CellField& scalar) {
-  fill_x(grid, scalar, -1.0, 0.0, 0.0);
-  fill_y(grid, scalar, -1.0, 0.0, 0.0);
+  fill_scalar(grid, FluidBoundaries{}, scalar, [](SideKind) { return GhostRule::even; });
 }
 
 void sync_periodic_faces(const Grid& grid, FaceField& velocity_face_x, FaceField& velocity_face_y) {
@@ -58,6 +212,24 @@ void sync_periodic_faces(const Grid& grid, FaceField& velocity_face_x, FaceField
     for (int j = 0; j < grid.ny; ++j) velocity_face_x(grid.nx, j) = velocity_face_x(0, j);
   if (grid.periodic_y)
     for (int i = 0; i < grid.nx; ++i) velocity_face_y(i, grid.ny) = velocity_face_y(i, 0);
+}
+
+double side_inflow(const Grid& g, Side s, const FaceField& fx, const FaceField& fy) {
+  double sum = 0.0;
+  switch (s) {
+    case Side::left: for (int j = 0; j < g.ny; ++j) sum += fx(0, j); return sum * g.dy();
+    case Side::right: for (int j = 0; j < g.ny; ++j) sum -= fx(g.nx, j); return sum * g.dy();
+    case Side::bottom: for (int i = 0; i < g.nx; ++i) sum += fy(i, 0); return sum * g.dx();
+    case Side::top: for (int i = 0; i < g.nx; ++i) sum -= fy(i, g.ny); return sum * g.dx();
+  }
+  return sum;
+}
+
+double net_inflow(const Grid& g, const FaceField& fx, const FaceField& fy) {
+  double sum = 0.0;
+  if (!g.periodic_x) sum += side_inflow(g, Side::left, fx, fy) + side_inflow(g, Side::right, fx, fy);
+  if (!g.periodic_y) sum += side_inflow(g, Side::bottom, fx, fy) + side_inflow(g, Side::top, fx, fy);
+  return sum;
 }
 
 }  // namespace ibms

@@ -1,8 +1,21 @@
-// Boundary conditions of the fluid box (METHOD.md §2.5): periodic directions or no-slip walls
-// whose tangential velocity is prescribed and may change in time; the wall-normal velocity is 0.
-// Ghost rules: velocity u_g = 2 u_w - u_int (Dirichlet at the face), pressure p_g = p_int
-// (zero normal gradient), periodic directions wrap. Ghosts are one cell deep (CellField).
+// Boundary conditions of the fluid box (METHOD.md §2.5; open sides: issue 11). Each side of the
+// box is one of
+//   wall      no-slip: normal velocity 0, tangential velocity prescribed (may change in time);
+//   inflow    both velocity components prescribed: the normal one from a profile (uniform or
+//             parabolic) times a time factor, the tangential one 0;
+//   outflow   zero normal gradient of both velocity components, pressure 0 at the side;
+//   periodic  the opposite side's values (both sides of the axis; Grid::periodic_x/y).
+// Ghost rules (cells one deep, CellField), b the side's value:
+//   velocity  Dirichlet (wall, inflow) q_g = 2 q_b - q_int; outflow q_g = q_int;
+//   pressure  wall q_g = q_int; inflow q_g = 2 q_int - q_int2 (linear: the projection fixes the
+//             inflow flux, so the pressure's normal gradient there is the flow's own, not 0; the
+//             zero-gradient ghost would halve the cell-centre gradient of the first cell, and plane
+//             Poiseuille flow could not be a discrete steady state); outflow q_g = -q_int (p = 0);
+//   phi       (SMAC pressure correction) wall and inflow q_g = q_int (the face flux is given),
+//             outflow q_g = -q_int.
 #pragma once
+#include <array>
+#include <functional>
 #include <limits>
 
 #include "core/fields.hpp"
@@ -18,23 +31,75 @@ struct WallMotion {
   bool is_moving() const { return speed != 0.0; }
 };
 
-struct FluidBoundaries {
-  bool periodic_x = false, periodic_y = false;
-  WallMotion left, right, bottom, top;
+enum class SideKind { wall, inflow, outflow, periodic };
+const char* side_kind_name(SideKind kind);
+
+// Time factor of an inflow: 1; min(t / ramp_time, 1); or offset + amplitude sin(2 pi t / period).
+struct TimeFactor {
+  enum class Kind { constant, ramp, sinusoidal } kind = Kind::constant;
+  double ramp_time = 1.0;   // [time]
+  double offset = 0.0;      // [-]
+  double amplitude = 1.0;   // [-]
+  double period = 1.0;      // [time]
+  double at(double time) const;
 };
 
-// Fill the ghost layer of both velocity components with the wall velocities at `time`.
+// Normal velocity of an inflow side, into the box: `velocity` times the shape times the factor.
+// Shape along the side (s in [0, L] from its low end): uniform 1, parabolic 4 s (L - s) / L^2
+// (then `velocity` is the peak; the mean is 2/3 of it).
+struct InflowProfile {
+  enum class Shape { uniform, parabolic } shape = Shape::uniform;
+  double velocity = 0.0;  // [length/time], > 0 into the box
+  TimeFactor factor;
+  double at(double s, double side_length, double time) const;
+  double mean_at(double time) const;  // mean over the side [length/time]
+  double peak() const;                // largest |velocity| over the side and time [length/time]
+};
+
+enum class Side { left = 0, right = 1, bottom = 2, top = 3 };
+
+struct BoundarySide : WallMotion {
+  SideKind kind = SideKind::wall;
+  InflowProfile inflow;
+  // Verification hook: velocity (u, v) on this side as a function of (x, y, t), used instead of the
+  // wall or inflow rule on a Dirichlet side (manufactured solutions with open sides).
+  std::function<std::array<double, 2>(double, double, double)> prescribed;
+  bool is_dirichlet() const { return kind == SideKind::wall || kind == SideKind::inflow; }
+};
+
+struct FluidBoundaries {
+  bool periodic_x = false, periodic_y = false;
+  BoundarySide left, right, bottom, top;
+
+  const BoundarySide& side(Side s) const;
+  BoundarySide& side(Side s);
+  // Side kind, periodic when the grid direction is periodic.
+  SideKind kind(const Grid& grid, Side s) const;
+  // Velocity (u, v) on a Dirichlet side at the point (x, y) of the side and time t.
+  std::array<double, 2> velocity_at(const Grid& grid, Side s, double x, double y, double time) const;
+  bool has_open_side(const Grid& grid) const;  // an inflow or outflow side
+};
+
+// Fill the ghost layer of both velocity components with the boundary values at `time`.
 void fill_velocity_ghosts(const Grid& grid, const FluidBoundaries& bc, double time,
                           CellField& velocity_x, CellField& velocity_y);
 
-// Ghost layer of a scalar with zero normal gradient at walls (pressure, phi), periodic wrap.
-void fill_neumann_ghosts(const Grid& grid, CellField& scalar);
+// Ghost layer of the pressure (rules above).
+void fill_pressure_ghosts(const Grid& grid, const FluidBoundaries& bc, CellField& pressure);
 
-// Ghost layer of a scalar that is odd about walls (q_g = -q_int), periodic wrap: the
-// homogeneous Dirichlet rule of the Helmholtz operator.
-void fill_dirichlet_ghosts(const Grid& grid, CellField& scalar);
+// Ghost layer of the pressure correction phi and of scalars with the same rule (rules above).
+void fill_correction_ghosts(const Grid& grid, const FluidBoundaries& bc, CellField& scalar);
+
+// Ghost layer of a scalar with zero normal gradient at every non-periodic side, periodic wrap.
+void fill_neumann_ghosts(const Grid& grid, CellField& scalar);
 
 // Re-apply periodic wrap to face fields: the last face of a periodic direction equals the first.
 void sync_periodic_faces(const Grid& grid, FaceField& velocity_face_x, FaceField& velocity_face_y);
+
+// Net volume flux into the box through its non-periodic sides, from the face velocities
+// [length^2/time] (0 to round-off after a projection).
+double net_inflow(const Grid& grid, const FaceField& velocity_face_x, const FaceField& velocity_face_y);
+// Volume flux through one side, positive into the box [length^2/time].
+double side_inflow(const Grid& grid, Side s, const FaceField& velocity_face_x, const FaceField& velocity_face_y);
 
 }  // namespace ibms

@@ -10,8 +10,16 @@
 namespace ibms {
 namespace {
 
-SpectralBoundary kind(bool periodic, SpectralBoundary wall_kind) {
-  return periodic ? SpectralBoundary::periodic : wall_kind;
+// Spectral boundary kind of one side for the pressure Poisson problem (phi: Neumann where the
+// face flux is given, Dirichlet p = 0 at an outflow) or the velocity Helmholtz problem (Dirichlet
+// where the velocity is given, Neumann at an outflow).
+SpectralBoundary poisson_kind(SideKind k) {
+  if (k == SideKind::periodic) return SpectralBoundary::periodic;
+  return k == SideKind::outflow ? SpectralBoundary::dirichlet : SpectralBoundary::neumann;
+}
+SpectralBoundary helmholtz_kind(SideKind k) {
+  if (k == SideKind::periodic) return SpectralBoundary::periodic;
+  return k == SideKind::outflow ? SpectralBoundary::neumann : SpectralBoundary::dirichlet;
 }
 
 }  // namespace
@@ -25,10 +33,38 @@ FluidSolver::FluidSolver(const Grid& grid, double kinematic_viscosity, const Flu
       buffer_(grid.n_cells()) {
   boundaries_.periodic_x = grid.periodic_x;
   boundaries_.periodic_y = grid.periodic_y;
-  poisson_ = std::make_unique<SpectralSolver>(
-      grid, kind(grid.periodic_x, SpectralBoundary::neumann), kind(grid.periodic_y, SpectralBoundary::neumann));
-  helmholtz_ = std::make_unique<SpectralSolver>(
-      grid, kind(grid.periodic_x, SpectralBoundary::dirichlet), kind(grid.periodic_y, SpectralBoundary::dirichlet));
+  for (Side s : {Side::left, Side::right, Side::bottom, Side::top})
+    boundaries_.side(s).kind = boundaries_.kind(grid, s);
+  const BoundarySide &l = boundaries_.left, &r = boundaries_.right, &b = boundaries_.bottom, &t = boundaries_.top;
+  poisson_ = std::make_unique<SpectralSolver>(grid, poisson_kind(l.kind), poisson_kind(r.kind), poisson_kind(b.kind),
+                                              poisson_kind(t.kind));
+  helmholtz_ = std::make_unique<SpectralSolver>(grid, helmholtz_kind(l.kind), helmholtz_kind(r.kind),
+                                                helmholtz_kind(b.kind), helmholtz_kind(t.kind));
+}
+
+void FluidSolver::set_given_faces(double time, FaceField& face_x, FaceField& face_y) const {
+  const Grid& g = grid_;
+  const BoundarySide &l = boundaries_.left, &r = boundaries_.right, &b = boundaries_.bottom, &t = boundaries_.top;
+  const double x1 = g.origin_x + g.length_x, y1 = g.origin_y + g.length_y;
+  for (int j = 0; j < g.ny; ++j) {
+    if (l.is_dirichlet()) face_x(0, j) = boundaries_.velocity_at(g, Side::left, g.origin_x, g.y_centre(j), time)[0];
+    if (r.is_dirichlet()) face_x(g.nx, j) = boundaries_.velocity_at(g, Side::right, x1, g.y_centre(j), time)[0];
+  }
+  for (int i = 0; i < g.nx; ++i) {
+    if (b.is_dirichlet()) face_y(i, 0) = boundaries_.velocity_at(g, Side::bottom, g.x_centre(i), g.origin_y, time)[1];
+    if (t.is_dirichlet()) face_y(i, g.ny) = boundaries_.velocity_at(g, Side::top, g.x_centre(i), y1, time)[1];
+  }
+}
+
+FluidSolver::FaceRange FluidSolver::corrected_faces() const {
+  // Faces whose flux the projection corrects: interior faces, a periodic direction's first face
+  // and outflow faces; faces with a given flux (walls, inflows) keep it.
+  FaceRange range;
+  range.x_first = boundaries_.left.kind == SideKind::wall || boundaries_.left.kind == SideKind::inflow ? 1 : 0;
+  range.x_last = boundaries_.right.kind == SideKind::outflow ? grid_.nx : grid_.nx - 1;
+  range.y_first = boundaries_.bottom.kind == SideKind::wall || boundaries_.bottom.kind == SideKind::inflow ? 1 : 0;
+  range.y_last = boundaries_.top.kind == SideKind::outflow ? grid_.ny : grid_.ny - 1;
+  return range;
 }
 
 FluidState FluidSolver::make_state() const {
@@ -52,20 +88,18 @@ void FluidSolver::initialise_faces(FluidState& state) {
   for (int j = 0; j <= grid_.ny; ++j)
     for (int i = 0; i < grid_.nx; ++i)
       state.velocity_face_y(i, j) = 0.5 * (state.velocity_y(i, j - 1) + state.velocity_y(i, j));
-  if (!grid_.periodic_x)
-    for (int j = 0; j < grid_.ny; ++j) state.velocity_face_x(0, j) = state.velocity_face_x(grid_.nx, j) = 0.0;
-  if (!grid_.periodic_y)
-    for (int i = 0; i < grid_.nx; ++i) state.velocity_face_y(i, 0) = state.velocity_face_y(i, grid_.ny) = 0.0;
+  set_given_faces(state.time, state.velocity_face_x, state.velocity_face_y);  // walls, inflows
   // One projection with unit time step: L phi = D U, U -= G_f phi, u -= G_c phi.
   divergence(grid_, state.velocity_face_x, state.velocity_face_y, 1.0, buffer_.data());
   poisson_->solve(/*a=*/0.0, /*b=*/1.0, buffer_.data(), buffer_.data());
   phi_.copy_interior_from(buffer_.data());
-  fill_neumann_ghosts(grid_, phi_);
+  fill_correction_ghosts(grid_, boundaries_, phi_);
   const double inv_dx = 1.0 / grid_.dx(), inv_dy = 1.0 / grid_.dy();
-  const int i_first = grid_.periodic_x ? 0 : 1, j_first = grid_.periodic_y ? 0 : 1;
+  const FaceRange faces = corrected_faces();
   for (int j = 0; j < grid_.ny; ++j)
-    for (int i = i_first; i < grid_.nx; ++i) state.velocity_face_x(i, j) -= (phi_(i, j) - phi_(i - 1, j)) * inv_dx;
-  for (int j = j_first; j < grid_.ny; ++j)
+    for (int i = faces.x_first; i <= faces.x_last; ++i)
+      state.velocity_face_x(i, j) -= (phi_(i, j) - phi_(i - 1, j)) * inv_dx;
+  for (int j = faces.y_first; j <= faces.y_last; ++j)
     for (int i = 0; i < grid_.nx; ++i) state.velocity_face_y(i, j) -= (phi_(i, j) - phi_(i, j - 1)) * inv_dy;
   sync_periodic_faces(grid_, state.velocity_face_x, state.velocity_face_y);
   centre_gradient(grid_, phi_, grad_x_, grad_y_);
@@ -93,20 +127,23 @@ void FluidSolver::add_wall_closure(const CellField& u, const CellField& v, doubl
   CellField& explicit_y = out_y;
   const int nx = grid_.nx, ny = grid_.ny;
   const auto closure = [](double wall, double first, double second) { return (2.0 * wall - 3.0 * first + second) / 3.0; };
-  if (!grid_.periodic_y && ny >= 2) {
+  // Walls only (open sides keep the linear closure: an inflow's profile is smooth in time, and an
+  // outflow has no wall layer).
+  const auto is_wall = [](const BoundarySide& side) { return side.kind == SideKind::wall; };
+  if (ny >= 2) {
     const double c = scale / (grid_.dy() * grid_.dy());
     const double u_bottom = boundaries_.bottom.at(t), u_top = boundaries_.top.at(t);
     for (int i = 0; i < nx; ++i) {
-      explicit_x(i, 0) += c * closure(u_bottom, u(i, 0), u(i, 1));
-      explicit_x(i, ny - 1) += c * closure(u_top, u(i, ny - 1), u(i, ny - 2));
+      if (is_wall(boundaries_.bottom)) explicit_x(i, 0) += c * closure(u_bottom, u(i, 0), u(i, 1));
+      if (is_wall(boundaries_.top)) explicit_x(i, ny - 1) += c * closure(u_top, u(i, ny - 1), u(i, ny - 2));
     }
   }
-  if (!grid_.periodic_x && nx >= 2) {
+  if (nx >= 2) {
     const double c = scale / (grid_.dx() * grid_.dx());
     const double v_left = boundaries_.left.at(t), v_right = boundaries_.right.at(t);
     for (int j = 0; j < ny; ++j) {
-      explicit_y(0, j) += c * closure(v_left, v(0, j), v(1, j));
-      explicit_y(nx - 1, j) += c * closure(v_right, v(nx - 1, j), v(nx - 2, j));
+      if (is_wall(boundaries_.left)) explicit_y(0, j) += c * closure(v_left, v(0, j), v(1, j));
+      if (is_wall(boundaries_.right)) explicit_y(nx - 1, j) += c * closure(v_right, v(nx - 1, j), v(nx - 2, j));
     }
   }
 }
@@ -117,7 +154,7 @@ void FluidSolver::predict_explicit(FluidState& state, double dt) {
   CellField& v = state.velocity_y;
   CellField& p = state.pressure;
   fill_velocity_ghosts(grid_, boundaries_, state.time, u, v);
-  fill_neumann_ghosts(grid_, p);
+  fill_pressure_ghosts(grid_, boundaries_, p);
 
   const auto convect = schemes_.quick_convection ? convection_quick : convection;
   convect(grid_, state.velocity_face_x, state.velocity_face_y, u, conv_x_);  // N^n
@@ -153,24 +190,26 @@ void FluidSolver::complete_prediction(FluidState& state, double dt) {
       star_x_(i, j) -= 0.5 * dt * nu_ * lap_x_(i, j);
       star_y_(i, j) -= 0.5 * dt * nu_ * lap_y_(i, j);
     }
-  // Wall velocities at t^{n+1} in the implicit half: the wall row of L is the homogeneous row
-  // plus 2 u_w / h^2 (METHOD.md §6, inhomogeneous Dirichlet), moved to the rhs.
+  // Boundary velocities at t^{n+1} in the implicit half: the row of L next to a Dirichlet side
+  // (wall, inflow) is the homogeneous row plus 2 u_b / h^2 (METHOD.md §6, inhomogeneous
+  // Dirichlet), moved to the rhs; an outflow's zero-gradient row is homogeneous.
   const double t_new = state.time + dt;
   const double cx = 0.5 * nu_ * dt * 2.0 / (grid_.dx() * grid_.dx());
   const double cy = 0.5 * nu_ * dt * 2.0 / (grid_.dy() * grid_.dy());
-  if (!grid_.periodic_y) {
-    const double u_bottom = boundaries_.bottom.at(t_new), u_top = boundaries_.top.at(t_new);
-    for (int i = 0; i < grid_.nx; ++i) {
-      star_x_(i, 0) += cy * u_bottom;
-      star_x_(i, grid_.ny - 1) += cy * u_top;
-    }
+  const Grid& g = grid_;
+  const double x1 = g.origin_x + g.length_x, y1 = g.origin_y + g.length_y;
+  const auto add = [&](Side side, double c, int i, int j, double x, double y) {
+    const std::array<double, 2> b = boundaries_.velocity_at(g, side, x, y, t_new);
+    star_x_(i, j) += c * b[0];
+    star_y_(i, j) += c * b[1];
+  };
+  for (int i = 0; i < g.nx; ++i) {
+    if (boundaries_.bottom.is_dirichlet()) add(Side::bottom, cy, i, 0, g.x_centre(i), g.origin_y);
+    if (boundaries_.top.is_dirichlet()) add(Side::top, cy, i, g.ny - 1, g.x_centre(i), y1);
   }
-  if (!grid_.periodic_x) {
-    const double v_left = boundaries_.left.at(t_new), v_right = boundaries_.right.at(t_new);
-    for (int j = 0; j < grid_.ny; ++j) {
-      star_y_(0, j) += cx * v_left;
-      star_y_(grid_.nx - 1, j) += cx * v_right;
-    }
+  for (int j = 0; j < g.ny; ++j) {
+    if (boundaries_.left.is_dirichlet()) add(Side::left, cx, 0, j, g.origin_x, g.y_centre(j));
+    if (boundaries_.right.is_dirichlet()) add(Side::right, cx, g.nx - 1, j, x1, g.y_centre(j));
   }
   if (!schemes_.quadratic_wall) {
     solve_helmholtz_component(dt, star_x_);
@@ -223,22 +262,21 @@ ProjectionStats FluidSolver::project_smac(FluidState& state, double dt) {
       phi_(i, j) = star_x_(i, j) + dt * grad_x_(i, j);  // phi_ and work_ as scratch for u-hat
       work_(i, j) = star_y_(i, j) + dt * grad_y_(i, j);
     }
-  fill_neumann_ghosts(grid_, phi_);  // only periodic wraps are read; wall faces are fixed below
+  // Ghosts: periodic wraps, and zero gradient at an outflow (u-hat like the velocity; p^n's ghosts
+  // are those of the predictor, p = 0 at an outflow); faces with a given flux are set below.
+  fill_neumann_ghosts(grid_, phi_);
   fill_neumann_ghosts(grid_, work_);
   const CellField& p = state.pressure;
-  const int i_first = grid_.periodic_x ? 0 : 1, j_first = grid_.periodic_y ? 0 : 1;
+  const FaceRange faces = corrected_faces();
   IBMS_PARALLEL_ROWS
-  for (int j = 0; j < grid_.ny; ++j) {
-    for (int i = i_first; i < grid_.nx; ++i)
+  for (int j = 0; j < grid_.ny; ++j)
+    for (int i = faces.x_first; i <= faces.x_last; ++i)
       star_face_x_(i, j) = 0.5 * (phi_(i - 1, j) + phi_(i, j)) - dt * (p(i, j) - p(i - 1, j)) * inv_dx;
-    if (!grid_.periodic_x) star_face_x_(0, j) = star_face_x_(grid_.nx, j) = 0.0;  // no flow through walls
-  }
   IBMS_PARALLEL_ROWS
-  for (int j = j_first; j < grid_.ny; ++j)
+  for (int j = faces.y_first; j <= faces.y_last; ++j)
     for (int i = 0; i < grid_.nx; ++i)
       star_face_y_(i, j) = 0.5 * (work_(i, j - 1) + work_(i, j)) - dt * (p(i, j) - p(i, j - 1)) * inv_dy;
-  if (!grid_.periodic_y)
-    for (int i = 0; i < grid_.nx; ++i) star_face_y_(i, 0) = star_face_y_(i, grid_.ny) = 0.0;
+  set_given_faces(state.time + dt, star_face_x_, star_face_y_);  // walls, inflows at t^{n+1}
   sync_periodic_faces(grid_, star_face_x_, star_face_y_);
   stats.max_divergence_before = max_abs_divergence(grid_, star_face_x_, star_face_y_);
 
@@ -246,21 +284,19 @@ ProjectionStats FluidSolver::project_smac(FluidState& state, double dt) {
   divergence(grid_, star_face_x_, star_face_y_, 1.0 / dt, buffer_.data());
   stats.removed_mean = poisson_->solve(/*a=*/0.0, /*b=*/1.0, buffer_.data(), buffer_.data()).removed_mean;
   phi_.copy_interior_from(buffer_.data());
-  fill_neumann_ghosts(grid_, phi_);
+  fill_correction_ghosts(grid_, boundaries_, phi_);
 
-  // Step 5: U^{n+1} = U* - dt G_f phi (wall faces are not corrected).
+  // Step 5: U^{n+1} = U* - dt G_f phi (faces with a given flux are not corrected).
+  state.velocity_face_x = star_face_x_;
+  state.velocity_face_y = star_face_y_;
   IBMS_PARALLEL_ROWS
   for (int j = 0; j < grid_.ny; ++j)
-    for (int i = i_first; i < grid_.nx; ++i)
+    for (int i = faces.x_first; i <= faces.x_last; ++i)
       state.velocity_face_x(i, j) = star_face_x_(i, j) - dt * (phi_(i, j) - phi_(i - 1, j)) * inv_dx;
-  if (!grid_.periodic_x)
-    for (int j = 0; j < grid_.ny; ++j) state.velocity_face_x(0, j) = state.velocity_face_x(grid_.nx, j) = 0.0;
   IBMS_PARALLEL_ROWS
-  for (int j = j_first; j < grid_.ny; ++j)
+  for (int j = faces.y_first; j <= faces.y_last; ++j)
     for (int i = 0; i < grid_.nx; ++i)
       state.velocity_face_y(i, j) = star_face_y_(i, j) - dt * (phi_(i, j) - phi_(i, j - 1)) * inv_dy;
-  if (!grid_.periodic_y)
-    for (int i = 0; i < grid_.nx; ++i) state.velocity_face_y(i, 0) = state.velocity_face_y(i, grid_.ny) = 0.0;
   sync_periodic_faces(grid_, state.velocity_face_x, state.velocity_face_y);
   stats.max_divergence_after = max_abs_divergence(grid_, state.velocity_face_x, state.velocity_face_y);
 

@@ -108,6 +108,11 @@ class FluidSolver {
 
  private:
   void solve_helmholtz_component(double dt, CellField& rhs_and_solution);
+  // Normal velocity of the Dirichlet sides (walls: 0, inflows: the profile) at `time` on their faces.
+  void set_given_faces(double time, FaceField& face_x, FaceField& face_y) const;
+  // Faces the projection corrects, inclusive ranges of x-face index i and y-face index j.
+  struct FaceRange { int x_first, x_last, y_first, y_last; };
+  FaceRange corrected_faces() const;
 
   Grid grid_;
   double nu_;

@@ -12,32 +12,33 @@ namespace {
 
 constexpr double pi = 3.14159265358979323846;
 
-fftw_r2r_kind forward_kind(SpectralBoundary b) {
-  switch (b) {
-    case SpectralBoundary::periodic: return FFTW_R2HC;
-    case SpectralBoundary::neumann: return FFTW_REDFT10;   // DCT-II
-    case SpectralBoundary::dirichlet: return FFTW_RODFT10; // DST-II
-  }
-  return FFTW_R2HC;
+// FFTW transform pair of one direction with the given ends (low, high): same kind at both ends
+// (DCT-II/III, DST-II/III, R2HC/HC2R) or mixed (DCT-IV, DST-IV: each its own inverse).
+struct Transform {
+  fftw_r2r_kind forward, inverse;
+};
+
+Transform transform(SpectralBoundary low, SpectralBoundary high) {
+  using B = SpectralBoundary;
+  if (low == B::periodic) return {FFTW_R2HC, FFTW_HC2R};
+  if (low == B::neumann && high == B::neumann) return {FFTW_REDFT10, FFTW_REDFT01};
+  if (low == B::dirichlet && high == B::dirichlet) return {FFTW_RODFT10, FFTW_RODFT01};
+  if (low == B::neumann) return {FFTW_REDFT11, FFTW_REDFT11};  // q_-1 = q_0, q_n = -q_(n-1)
+  return {FFTW_RODFT11, FFTW_RODFT11};                          // q_-1 = -q_0, q_n = q_(n-1)
 }
 
-fftw_r2r_kind inverse_kind(SpectralBoundary b) {
-  switch (b) {
-    case SpectralBoundary::periodic: return FFTW_HC2R;
-    case SpectralBoundary::neumann: return FFTW_REDFT01;   // DCT-III
-    case SpectralBoundary::dirichlet: return FFTW_RODFT01; // DST-III
-  }
-  return FFTW_HC2R;
-}
-
-// Eigenvalues of (q_{i-1} - 2 q_i + q_{i+1})/h^2 in the order FFTW stores the transform.
-std::vector<double> eigenvalues(SpectralBoundary b, int n, double h) {
+// Eigenvalues of (q_{i-1} - 2 q_i + q_{i+1})/h^2 in the order FFTW stores the transform:
+// -4 sin^2(theta_m / 2) / h^2 with theta_m = pi m / n (Neumann), pi (m + 1) / n (Dirichlet),
+// pi (m + 1/2) / n (mixed), 2 pi min(m, n - m) / n (periodic).
+std::vector<double> eigenvalues(SpectralBoundary low, SpectralBoundary high, int n, double h) {
+  using B = SpectralBoundary;
   std::vector<double> lambda(n);
   for (int m = 0; m < n; ++m) {
     double s = 0.0;
-    if (b == SpectralBoundary::neumann) s = std::sin(pi * m / (2.0 * n));
-    if (b == SpectralBoundary::dirichlet) s = std::sin(pi * (m + 1) / (2.0 * n));
-    if (b == SpectralBoundary::periodic) s = std::sin(pi * (m <= n / 2 ? m : n - m) / n);
+    if (low == B::periodic) s = std::sin(pi * (m <= n / 2 ? m : n - m) / n);
+    else if (low == B::neumann && high == B::neumann) s = std::sin(pi * m / (2.0 * n));
+    else if (low == B::dirichlet && high == B::dirichlet) s = std::sin(pi * (m + 1) / (2.0 * n));
+    else s = std::sin(pi * (m + 0.5) / (2.0 * n));
     lambda[m] = -4.0 * s * s / (h * h);
   }
   return lambda;
@@ -48,20 +49,28 @@ double logical_size(SpectralBoundary b, int n) { return b == SpectralBoundary::p
 }  // namespace
 
 SpectralSolver::SpectralSolver(const Grid& grid, SpectralBoundary boundary_x, SpectralBoundary boundary_y)
+    : SpectralSolver(grid, boundary_x, boundary_x, boundary_y, boundary_y) {}
+
+SpectralSolver::SpectralSolver(const Grid& grid, SpectralBoundary left, SpectralBoundary right,
+                               SpectralBoundary bottom, SpectralBoundary top)
     : nx_(grid.nx), ny_(grid.ny) {
-  if (grid.periodic_x != (boundary_x == SpectralBoundary::periodic) ||
-      grid.periodic_y != (boundary_y == SpectralBoundary::periodic))
+  const auto periodic = [](SpectralBoundary low, SpectralBoundary high) {
+    return low == SpectralBoundary::periodic || high == SpectralBoundary::periodic;
+  };
+  if ((left == SpectralBoundary::periodic) != (right == SpectralBoundary::periodic) ||
+      (bottom == SpectralBoundary::periodic) != (top == SpectralBoundary::periodic))
+    throw std::invalid_argument("SpectralSolver: periodic at one end of a direction only");
+  if (grid.periodic_x != periodic(left, right) || grid.periodic_y != periodic(bottom, top))
     throw std::invalid_argument("SpectralSolver: boundary kind does not match grid periodicity");
-  normalisation_ = logical_size(boundary_x, nx_) * logical_size(boundary_y, ny_);
-  lambda_x_ = eigenvalues(boundary_x, nx_, grid.dx());
-  lambda_y_ = eigenvalues(boundary_y, ny_, grid.dy());
+  normalisation_ = logical_size(left, nx_) * logical_size(bottom, ny_);
+  lambda_x_ = eigenvalues(left, right, nx_, grid.dx());
+  lambda_y_ = eigenvalues(bottom, top, ny_, grid.dy());
   buffer_ = fftw_alloc_real(static_cast<std::size_t>(nx_) * ny_);
   prepare_fft_threads();  // plans below use thread_count() threads
   // Row-major (ny, nx): the first FFTW dimension is y.
-  forward_ = fftw_plan_r2r_2d(ny_, nx_, buffer_, buffer_, forward_kind(boundary_y),
-                              forward_kind(boundary_x), FFTW_MEASURE);
-  inverse_ = fftw_plan_r2r_2d(ny_, nx_, buffer_, buffer_, inverse_kind(boundary_y),
-                              inverse_kind(boundary_x), FFTW_MEASURE);
+  const Transform tx = transform(left, right), ty = transform(bottom, top);
+  forward_ = fftw_plan_r2r_2d(ny_, nx_, buffer_, buffer_, ty.forward, tx.forward, FFTW_MEASURE);
+  inverse_ = fftw_plan_r2r_2d(ny_, nx_, buffer_, buffer_, ty.inverse, tx.inverse, FFTW_MEASURE);
   if (!forward_ || !inverse_) throw std::runtime_error("SpectralSolver: FFTW planning failed");
 }
 

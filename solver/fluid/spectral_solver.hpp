@@ -1,6 +1,7 @@
 // Direct solver of (a I + b L) q = r on the cell-centred grid by FFTW real-to-real transforms
-// (METHOD.md §6): DCT-II/III for Neumann walls, DST-II/III for homogeneous Dirichlet walls,
-// R2HC/HC2R for periodic directions. L is the compact 5-point Laplacian with the ghost rules of
+// (METHOD.md §6): DCT-II/III for Neumann at both ends of a direction, DST-II/III for homogeneous
+// Dirichlet at both ends, DCT-IV (REDFT11) for Neumann at the low end and Dirichlet at the high one,
+// DST-IV (RODFT11) for the reverse (open channels, issue 11), R2HC/HC2R for periodic directions. L is the compact 5-point Laplacian with the ghost rules of
 // fluid/boundary_conditions.hpp. Plans are made once (FFTW_MEASURE); solve() allocates nothing.
 #pragma once
 #include <fftw3.h>
@@ -23,6 +24,9 @@ class SpectralSolver {
  public:
   // Boundary kind per direction; a periodic grid direction must be `periodic`.
   SpectralSolver(const Grid& grid, SpectralBoundary boundary_x, SpectralBoundary boundary_y);
+  // Boundary kind per side (low and high end of each direction); periodic only at both ends.
+  SpectralSolver(const Grid& grid, SpectralBoundary left, SpectralBoundary right, SpectralBoundary bottom,
+                 SpectralBoundary top);
   ~SpectralSolver();
   SpectralSolver(const SpectralSolver&) = delete;
   SpectralSolver& operator=(const SpectralSolver&) = delete;

@@ -117,8 +117,18 @@ std::string resolved_scene_toml(const Scene& scene) {
       {"left", &scene.walls.left}, {"right", &scene.walls.right},
       {"bottom", &scene.walls.bottom}, {"top", &scene.walls.top}};
   for (const auto& [name, wall] : walls) {
-    out += fmt::format("[walls.{}]\nspeed = {}\nstop_time = {}\n", name, toml_float(wall->speed),
-                       toml_float(wall->stop_time));
+    out += fmt::format("[walls.{}]\nkind = {}\n", name, toml_string(wall->kind));
+    if (wall->kind == "wall")
+      out += fmt::format("speed = {}\nstop_time = {}\n", toml_float(wall->speed), toml_float(wall->stop_time));
+    if (wall->kind == "inflow")
+      out += fmt::format("profile = {}\nvelocity = {}\ntime_factor = {}\n", toml_string(wall->profile),
+                         toml_float(wall->velocity), toml_string(wall->time_factor));
+    if (wall->kind == "inflow" && wall->time_factor == "ramp")
+      out += fmt::format("ramp_time = {}\n", toml_float(wall->ramp_time));
+    if (wall->kind == "inflow" && wall->time_factor == "sinusoidal")
+      out += fmt::format("factor_offset = {}\nfactor_amplitude = {}\nfactor_period = {}\n",
+                         toml_float(wall->factor_offset), toml_float(wall->factor_amplitude),
+                         toml_float(wall->factor_period));
   }
 
   const IbmSpec& ibm = scene.ibm;

@@ -48,10 +48,20 @@ struct FluidSpec {
   std::string wall_closure = "linear";
 };
 
-// Tangential velocity of one wall: speed for ramp_time <= ... ; see fluid/wall_motion.hpp.
+// One side of the box ([walls.<side>], fluid/boundary_conditions.hpp): a wall (tangential speed,
+// stopping at stop_time), an inflow (normal velocity profile times a time factor), an outflow
+// (zero normal gradient, p = 0) or periodic (both sides of a direction; domain.periodic_x/y).
 struct WallSpec {
-  double speed = 0.0;                // tangential speed [length/time]; +x on bottom/top, +y on left/right
+  std::string kind = "wall";         // wall | inflow | outflow | periodic
+  double speed = 0.0;                // wall: tangential speed [length/time]; +x on bottom/top, +y on left/right
   double stop_time = std::numeric_limits<double>::infinity();  // wall stops (speed 0) from here [time]
+  std::string profile = "uniform";   // inflow: uniform | parabolic (velocity is then the peak)
+  double velocity = 0.0;             // inflow: normal speed into the box [length/time]
+  std::string time_factor = "constant";  // inflow: constant | ramp | sinusoidal
+  double ramp_time = 0.0;            // ramp: factor min(t / ramp_time, 1) [time]
+  double factor_offset = 0.0;        // sinusoidal: factor offset + amplitude sin(2 pi t / period) [-]
+  double factor_amplitude = 1.0;     // [-]
+  double factor_period = 0.0;        // [time]
 };
 
 struct WallsSpec {

@@ -15,22 +15,37 @@ namespace ibms {
 
 namespace {
 
-void check_walls(const Scene& scene, const SceneDiagnostics& diagnostics) {
-  // A periodic direction has no walls at its ends, so a speed there would silently be ignored.
+// An inflow or outflow side has no ghost rule for the immersed boundary's kernel (its mirror
+// images assume a wall), and a body crossing it would leave the box: a body keeps
+// open_side_clearance_cells cells (the widest kernel's support, bkp6) from an open side.
+constexpr double open_side_clearance_cells = 3.0;
+
+void check_open_sides(const Scene& scene, const SceneDiagnostics& diagnostics) {
+  const DomainSpec& d = scene.domain;
   const struct {
     const char* name;
-    const WallSpec& wall;
-    bool periodic;
-    const char* direction;
-  } sides[] = {{"left", scene.walls.left, scene.domain.periodic_x, "x"},
-               {"right", scene.walls.right, scene.domain.periodic_x, "x"},
-               {"bottom", scene.walls.bottom, scene.domain.periodic_y, "y"},
-               {"top", scene.walls.top, scene.domain.periodic_y, "y"}};
+    const WallSpec& side;
+    int axis;
+    bool high;
+  } sides[] = {{"left", scene.walls.left, 0, false},
+               {"right", scene.walls.right, 0, true},
+               {"bottom", scene.walls.bottom, 1, false},
+               {"top", scene.walls.top, 1, true}};
   for (const auto& side : sides) {
-    if (side.periodic && side.wall.speed != 0.0) {
-      diagnostics.fail(fmt::format("walls.{}.speed", side.name),
-                       fmt::format("must be 0 because domain.periodic_{} = true (no wall there), got {}",
-                                   side.direction, side.wall.speed));
+    if (side.side.kind != "inflow" && side.side.kind != "outflow") continue;
+    const double length = side.axis == 0 ? d.length_x : d.length_y;
+    const double h = length / (side.axis == 0 ? d.cells_x : d.cells_y);
+    for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
+      const BodySpec& body = scene.bodies[b];
+      const double rim = side.high ? body.centre[side.axis] + 0.5 * body.diameter
+                                   : body.centre[side.axis] - 0.5 * body.diameter;
+      const double gap = side.high ? length - rim : rim;
+      if (gap < open_side_clearance_cells * h)
+        diagnostics.fail(fmt::format("bodies.{}.centre", b),
+                         fmt::format("the body's rim is {} from the {} side ({}), closer than {} cells ({}): the "
+                                     "immersed boundary needs walls or periodic sides within its kernel's reach",
+                                     gap, side.name, side.side.kind, open_side_clearance_cells,
+                                     open_side_clearance_cells * h));
     }
   }
 }
@@ -129,7 +144,7 @@ void check_output(const OutputSpec& output, const SceneDiagnostics& diagnostics)
 }  // namespace
 
 void check_scene_consistency(const Scene& scene, const SceneDiagnostics& diagnostics) {
-  check_walls(scene, diagnostics);
+  check_open_sides(scene, diagnostics);
   check_bodies(scene, diagnostics);
   check_contact(scene.contact, diagnostics);
   check_output(scene.output, diagnostics);

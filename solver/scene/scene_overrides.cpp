@@ -93,7 +93,7 @@ class OverrideApplier {
     const std::string& section = parts[0];
     require_key(section, scene_schema::section_names, "the scene");
     if (section == "walls") {
-      if (parts.size() != 3) fail("expected walls.<left|right|bottom|top>.<speed|stop_time>");
+      if (parts.size() != 3) fail("expected walls.<left|right|bottom|top>.<key>");
       require_key(parts[1], scene_schema::wall_names, "[walls]");
       require_key(parts[2], scene_schema::wall_keys, "[walls." + parts[1] + "]");
       return child_table(child_table(root_, "walls", "walls"), parts[1], "walls." + parts[1]);

@@ -58,14 +58,69 @@ void read_fluid(const TomlTableReader& table, FluidSpec& fluid) {
   table.read_choice("wall_closure", fluid.wall_closure, schema::wall_closure_choices);
 }
 
-void read_walls(const TomlTableReader& table, WallsSpec& walls) {
+// The four sides of the box (fluid/boundary_conditions.hpp). A side of a periodic direction is
+// "periodic" by default; "periodic" on both sides of a direction makes it periodic; any other mix
+// of periodic and non-periodic on one direction is refused, as is an outflow pair without an
+// inflow (nothing drives a flow through them) and an inflow without an outflow (the fluid cannot
+// leave: the pressure problem has no solution).
+void read_walls(const TomlTableReader& table, DomainSpec& domain, WallsSpec& walls) {
   table.reject_unknown_keys(schema::wall_names);
   WallSpec* const sides[] = {&walls.left, &walls.right, &walls.bottom, &walls.top};
+  TomlTableReader readers[] = {table.sub_table("left"), table.sub_table("right"), table.sub_table("bottom"),
+                               table.sub_table("top")};
   for (std::size_t s = 0; s < 4; ++s) {
-    const TomlTableReader wall = table.sub_table(schema::wall_names[s]);
-    wall.reject_unknown_keys(schema::wall_keys);
-    wall.read_real("speed", sides[s]->speed, Need::optional, any_finite);
-    wall.read_real("stop_time", sides[s]->stop_time, Need::optional, non_negative_or_infinite);
+    const TomlTableReader& side = readers[s];
+    WallSpec& w = *sides[s];
+    side.reject_unknown_keys(schema::wall_keys);
+    const bool periodic_axis = s < 2 ? domain.periodic_x : domain.periodic_y;
+    if (periodic_axis) w.kind = "periodic";
+    const bool kind_given = side.read_choice("kind", w.kind, schema::side_kind_choices);
+    if (periodic_axis && w.kind != "periodic")
+      side.fail("kind", fmt::format("is '{}', but domain.periodic_{} = true makes this side periodic", w.kind,
+                                    s < 2 ? "x" : "y"));
+    (void)kind_given;
+    side.reject_keys_outside(schema::keys_of_side_kind(w.kind), fmt::format("a side of kind '{}'", w.kind));
+    if (w.kind == "wall") {
+      side.read_real("speed", w.speed, Need::optional, any_finite);
+      side.read_real("stop_time", w.stop_time, Need::optional, non_negative_or_infinite);
+    } else if (w.kind == "inflow") {
+      side.read_choice("profile", w.profile, schema::inflow_profile_choices);
+      side.read_real("velocity", w.velocity, Need::required, positive);
+      side.read_choice("time_factor", w.time_factor, schema::time_factor_choices);
+      side.read_real("ramp_time", w.ramp_time, Need::optional, positive);
+      side.read_real("factor_offset", w.factor_offset, Need::optional, any_finite);
+      side.read_real("factor_amplitude", w.factor_amplitude, Need::optional, any_finite);
+      side.read_real("factor_period", w.factor_period, Need::optional, positive);
+      if (w.time_factor == "ramp" && !(w.ramp_time > 0.0))
+        side.fail("ramp_time", "must be given (> 0) with time_factor = 'ramp'");
+      if (w.time_factor == "sinusoidal" && !(w.factor_period > 0.0))
+        side.fail("factor_period", "must be given (> 0) with time_factor = 'sinusoidal'");
+    }
+  }
+  // Periodic directions: both sides or neither.
+  for (int axis = 0; axis < 2; ++axis) {
+    const WallSpec &low = *sides[2 * axis], &high = *sides[2 * axis + 1];
+    const bool low_periodic = low.kind == "periodic", high_periodic = high.kind == "periodic";
+    if (low_periodic != high_periodic) {
+      const int lone = low_periodic ? 2 * axis : 2 * axis + 1;
+      readers[lone].fail("kind", fmt::format("'periodic' needs the opposite side periodic too, but walls.{}.kind = '{}'",
+                                             schema::wall_names[low_periodic ? 2 * axis + 1 : 2 * axis],
+                                             low_periodic ? high.kind : low.kind));
+    }
+    if (low_periodic) (axis == 0 ? domain.periodic_x : domain.periodic_y) = true;
+  }
+  int inflows = 0, outflows = 0;
+  for (const WallSpec* w : sides) {
+    inflows += w->kind == "inflow";
+    outflows += w->kind == "outflow";
+  }
+  for (std::size_t s = 0; s < 4; ++s) {
+    if (sides[s]->kind == "inflow" && outflows == 0)
+      readers[s].fail("kind", "an inflow needs an outflow side: with walls or periodic sides elsewhere the fluid "
+                              "it brings in cannot leave (the pressure equation has no solution)");
+    if (sides[s]->kind == "outflow" && inflows == 0 && outflows > 1)
+      readers[s].fail("kind", "several outflow sides without an inflow: nothing drives a flow through them, and "
+                              "the flux between them is undetermined");
   }
 }
 
@@ -190,7 +245,7 @@ Scene scene_from_table(const toml::table& root, SceneDiagnostics& diagnostics) {
   read_run(section("run"), scene.run);
   read_domain(section("domain"), scene.domain);
   read_fluid(section("fluid"), scene.fluid);
-  read_walls(section("walls"), scene.walls);
+  read_walls(section("walls"), scene.domain, scene.walls);
   read_ibm(section("ibm"), scene.ibm);
   read_bodies(root.get("bodies"), diagnostics, scene.bodies);
   TomlTableReader contact = section("contact");

@@ -16,6 +16,13 @@ std::span<const std::string_view> keys_of_section(std::string_view section) {
   return {};
 }
 
+std::span<const std::string_view> keys_of_side_kind(std::string_view kind) {
+  if (kind == "wall") return wall_side_keys;
+  if (kind == "inflow") return inflow_side_keys;
+  if (kind == "outflow" || kind == "periodic") return open_side_keys;
+  return {};
+}
+
 std::span<const std::string_view> keys_of_body_kind(std::string_view kind) {
   if (kind == "mass_spring") return mass_spring_body_keys;
   if (kind == "rigid") return rigid_body_keys;

@@ -24,7 +24,19 @@ inline constexpr std::string_view fluid_keys[] = {"density", "kinematic_viscosit
 inline constexpr std::string_view convection_choices[] = {"central", "quick"};
 inline constexpr std::string_view wall_closure_choices[] = {"linear", "quadratic"};
 inline constexpr std::string_view wall_names[] = {"left", "right", "bottom", "top"};
-inline constexpr std::string_view wall_keys[] = {"speed", "stop_time"};
+inline constexpr std::string_view wall_keys[] = {"kind",     "speed",       "stop_time",     "profile",
+                                                 "velocity", "time_factor", "ramp_time",     "factor_offset",
+                                                 "factor_amplitude", "factor_period"};
+// The keys each side kind accepts (a subset of wall_keys).
+inline constexpr std::string_view side_kind_choices[] = {"wall", "inflow", "outflow", "periodic"};
+inline constexpr std::string_view wall_side_keys[] = {"kind", "speed", "stop_time"};
+inline constexpr std::string_view inflow_side_keys[] = {"kind",      "profile",       "velocity",
+                                                        "time_factor", "ramp_time",   "factor_offset",
+                                                        "factor_amplitude", "factor_period"};
+inline constexpr std::string_view open_side_keys[] = {"kind"};  // outflow, periodic
+inline constexpr std::string_view inflow_profile_choices[] = {"uniform", "parabolic"};
+inline constexpr std::string_view time_factor_choices[] = {"constant", "ramp", "sinusoidal"};
+std::span<const std::string_view> keys_of_side_kind(std::string_view kind);
 inline constexpr std::string_view ibm_keys[] = {"kernel", "forcing_passes", "forcing_stage",
                                                 "inner_fluid_inertia", "sub_markers"};
 inline constexpr std::string_view forcing_stage_choices[] = {"explicit_estimate", "implicit_prediction"};

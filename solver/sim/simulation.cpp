@@ -16,14 +16,33 @@ Grid grid_from_scene(const Scene& scene) {
 }
 
 FluidBoundaries boundaries_from_scene(const Scene& scene) {
-  auto motion = [](const WallSpec& w) { return WallMotion{w.speed, w.stop_time}; };
+  const auto side = [](const WallSpec& w) {
+    BoundarySide b;
+    b.speed = w.speed;
+    b.stop_time = w.stop_time;
+    b.kind = w.kind == "inflow" ? SideKind::inflow
+             : w.kind == "outflow" ? SideKind::outflow
+             : w.kind == "periodic" ? SideKind::periodic
+                                    : SideKind::wall;
+    b.inflow.shape = w.profile == "parabolic" ? InflowProfile::Shape::parabolic : InflowProfile::Shape::uniform;
+    b.inflow.velocity = w.velocity;
+    TimeFactor& f = b.inflow.factor;
+    f.kind = w.time_factor == "ramp" ? TimeFactor::Kind::ramp
+             : w.time_factor == "sinusoidal" ? TimeFactor::Kind::sinusoidal
+                                             : TimeFactor::Kind::constant;
+    f.ramp_time = w.ramp_time;
+    f.offset = w.factor_offset;
+    f.amplitude = w.factor_amplitude;
+    f.period = w.factor_period;
+    return b;
+  };
   FluidBoundaries bc;
   bc.periodic_x = scene.domain.periodic_x;
   bc.periodic_y = scene.domain.periodic_y;
-  bc.left = motion(scene.walls.left);
-  bc.right = motion(scene.walls.right);
-  bc.bottom = motion(scene.walls.bottom);
-  bc.top = motion(scene.walls.top);
+  bc.left = side(scene.walls.left);
+  bc.right = side(scene.walls.right);
+  bc.bottom = side(scene.walls.bottom);
+  bc.top = side(scene.walls.top);
   return bc;
 }
 
@@ -57,6 +76,10 @@ Simulation::Simulation(const Scene& scene)
     contact_model_ = ContactModel(scene.contact);
     contact_box_ = WallBox{{grid_.origin_x, grid_.origin_y}, {grid_.length_x, grid_.length_y},
                            {grid_.periodic_x, grid_.periodic_y}};
+    for (Side s : {Side::left, Side::right, Side::bottom, Side::top}) {
+      const SideKind k = boundaries().kind(grid_, s);
+      contact_box_.open[static_cast<int>(s)] = k == SideKind::inflow || k == SideKind::outflow;
+    }
     // The contact seam of body_update.hpp: DEM forces every sub-step, stats merged per step.
     contact_forces = [this](const std::vector<MassSpringBody>& bodies, const BodyMask& members, double /*time*/,
                             std::vector<std::vector<Vec2>>& forces) {
