@@ -12,21 +12,21 @@ namespace {
 constexpr double pi = 3.14159265358979323846;
 
 // How a scalar's ghost follows from the interior next to a side.
-enum class GhostRule { even, odd, linear };
+enum class GhostRule { even, odd, quadratic };
 
 GhostRule pressure_rule(SideKind kind) {
   if (kind == SideKind::outflow) return GhostRule::odd;
-  if (kind == SideKind::inflow) return GhostRule::linear;
+  if (kind == SideKind::inflow) return GhostRule::quadratic;
   return GhostRule::even;
 }
 
 GhostRule correction_rule(SideKind kind) { return kind == SideKind::outflow ? GhostRule::odd : GhostRule::even; }
 
-double ghost(GhostRule rule, double first, double second) {
+double ghost(GhostRule rule, double first, double second, double third) {
   switch (rule) {
     case GhostRule::even: return first;
     case GhostRule::odd: return -first;
-    case GhostRule::linear: return 2.0 * first - second;
+    case GhostRule::quadratic: return 3.0 * first - 3.0 * second + third;
   }
   return first;
 }
@@ -40,8 +40,8 @@ void fill_scalar(const Grid& g, const FluidBoundaries& bc, CellField& q, RuleOf 
   } else {
     const GhostRule low = rule_of(bc.left.kind), high = rule_of(bc.right.kind);
     for (int j = 0; j < ny; ++j) {
-      q(-1, j) = ghost(low, q(0, j), q(std::min(1, nx - 1), j));
-      q(nx, j) = ghost(high, q(nx - 1, j), q(std::max(nx - 2, 0), j));
+      q(-1, j) = ghost(low, q(0, j), q(1, j), q(2, j));  // the scene has >= 4 cells per direction
+      q(nx, j) = ghost(high, q(nx - 1, j), q(nx - 2, j), q(nx - 3, j));
     }
   }
   if (g.periodic_y) {
@@ -49,8 +49,8 @@ void fill_scalar(const Grid& g, const FluidBoundaries& bc, CellField& q, RuleOf 
   } else {
     const GhostRule low = rule_of(bc.bottom.kind), high = rule_of(bc.top.kind);
     for (int i = -1; i <= nx; ++i) {
-      q(i, -1) = ghost(low, q(i, 0), q(i, std::min(1, ny - 1)));
-      q(i, ny) = ghost(high, q(i, ny - 1), q(i, std::max(ny - 2, 0)));
+      q(i, -1) = ghost(low, q(i, 0), q(i, 1), q(i, 2));
+      q(i, ny) = ghost(high, q(i, ny - 1), q(i, ny - 2), q(i, ny - 3));
     }
   }
 }

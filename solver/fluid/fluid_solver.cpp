@@ -127,23 +127,29 @@ void FluidSolver::add_wall_closure(const CellField& u, const CellField& v, doubl
   CellField& explicit_y = out_y;
   const int nx = grid_.nx, ny = grid_.ny;
   const auto closure = [](double wall, double first, double second) { return (2.0 * wall - 3.0 * first + second) / 3.0; };
-  // Walls only (open sides keep the linear closure: an inflow's profile is smooth in time, and an
-  // outflow has no wall layer).
-  const auto is_wall = [](const BoundarySide& side) { return side.kind == SideKind::wall; };
+  // Tangential component on every side where it is given (walls, inflows); an outflow has none.
+  const Grid& g = grid_;
+  const double x1 = g.origin_x + g.length_x, y1 = g.origin_y + g.length_y;
   if (ny >= 2) {
-    const double c = scale / (grid_.dy() * grid_.dy());
-    const double u_bottom = boundaries_.bottom.at(t), u_top = boundaries_.top.at(t);
+    const double c = scale / (g.dy() * g.dy());
     for (int i = 0; i < nx; ++i) {
-      if (is_wall(boundaries_.bottom)) explicit_x(i, 0) += c * closure(u_bottom, u(i, 0), u(i, 1));
-      if (is_wall(boundaries_.top)) explicit_x(i, ny - 1) += c * closure(u_top, u(i, ny - 1), u(i, ny - 2));
+      if (boundaries_.bottom.is_dirichlet())
+        explicit_x(i, 0) += c * closure(boundaries_.velocity_at(g, Side::bottom, g.x_centre(i), g.origin_y, t)[0],
+                                        u(i, 0), u(i, 1));
+      if (boundaries_.top.is_dirichlet())
+        explicit_x(i, ny - 1) += c * closure(boundaries_.velocity_at(g, Side::top, g.x_centre(i), y1, t)[0],
+                                             u(i, ny - 1), u(i, ny - 2));
     }
   }
   if (nx >= 2) {
-    const double c = scale / (grid_.dx() * grid_.dx());
-    const double v_left = boundaries_.left.at(t), v_right = boundaries_.right.at(t);
+    const double c = scale / (g.dx() * g.dx());
     for (int j = 0; j < ny; ++j) {
-      if (is_wall(boundaries_.left)) explicit_y(0, j) += c * closure(v_left, v(0, j), v(1, j));
-      if (is_wall(boundaries_.right)) explicit_y(nx - 1, j) += c * closure(v_right, v(nx - 1, j), v(nx - 2, j));
+      if (boundaries_.left.is_dirichlet())
+        explicit_y(0, j) += c * closure(boundaries_.velocity_at(g, Side::left, g.origin_x, g.y_centre(j), t)[1],
+                                        v(0, j), v(1, j));
+      if (boundaries_.right.is_dirichlet())
+        explicit_y(nx - 1, j) += c * closure(boundaries_.velocity_at(g, Side::right, x1, g.y_centre(j), t)[1],
+                                             v(nx - 1, j), v(nx - 2, j));
     }
   }
 }
