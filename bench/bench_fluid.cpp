@@ -1,7 +1,8 @@
 // Fluid benchmarks (issue 2 item 9), run on demand, printing figures:
 //  1. one fluid step's cost in ns per cell, lid-driven cavity, 128^2 .. 1024^2;
 //  2. the Poisson solve against one forward + inverse FFTW transform pair of the same size (the
-//     floor it cannot beat), ratio measured in the same run;
+//     floor it cannot beat), for the closed box and for the open channel's mixed transform (DCT-IV
+//     in x), ratio measured in the same run;
 //  3. wall time to steady state of the Re = 100 cavity on 128^2 with `ibms run`'s own loop and output.
 // Usage: bench_fluid [path/to/validation/lid_driven_cavity_re100/scene.toml]
 #include <fftw3.h>
@@ -53,17 +54,21 @@ void step_cost() {
   }
 }
 
-void poisson_against_transform_pair() {
-  std::printf("\n2. Poisson solve (DCT, pure Neumann) against one bare DCT-II + DCT-III pair\n");
+// The Poisson solve against the bare transform pair it uses, for the closed box (DCT-II/III in both
+// directions) and the open channel (issue 11: inflow Neumann / outflow Dirichlet in x, DCT-IV both
+// ways; walls in y).
+void poisson_against_transform_pair(const char* title, SpectralBoundary left, SpectralBoundary right,
+                                    fftw_r2r_kind x_forward, fftw_r2r_kind x_inverse) {
+  std::printf("\n2. Poisson solve (%s) against one bare forward + inverse transform pair\n", title);
   std::printf("   %6s %14s %14s %8s\n", "N", "solve [us]", "pair [us]", "ratio");
   for (int n : {128, 256, 512, 1024}) {
     const Grid g(n, n, 1.0, 1.0);
-    SpectralSolver solver(g, SpectralBoundary::neumann, SpectralBoundary::neumann);
+    SpectralSolver solver(g, left, right, SpectralBoundary::neumann, SpectralBoundary::neumann);
     std::vector<double> rhs(g.n_cells()), out(g.n_cells());
     for (std::size_t k = 0; k < rhs.size(); ++k) rhs[k] = std::sin(0.37 * k);
     double* buf = fftw_alloc_real(g.n_cells());
-    fftw_plan fwd = fftw_plan_r2r_2d(n, n, buf, buf, FFTW_REDFT10, FFTW_REDFT10, FFTW_MEASURE);
-    fftw_plan inv = fftw_plan_r2r_2d(n, n, buf, buf, FFTW_REDFT01, FFTW_REDFT01, FFTW_MEASURE);
+    fftw_plan fwd = fftw_plan_r2r_2d(n, n, buf, buf, FFTW_REDFT10, x_forward, FFTW_MEASURE);
+    fftw_plan inv = fftw_plan_r2r_2d(n, n, buf, buf, FFTW_REDFT01, x_inverse, FFTW_MEASURE);
     for (std::size_t k = 0; k < rhs.size(); ++k) buf[k] = rhs[k];
     const int reps = n <= 256 ? 400 : (n == 512 ? 60 : 15);
     double best_solve = 1e30, best_pair = 1e30;
@@ -101,7 +106,10 @@ void cavity_to_steady_state(const std::string& scene_path) {
 
 int main(int argc, char** argv) {
   step_cost();
-  poisson_against_transform_pair();
+  poisson_against_transform_pair("closed box: DCT-II/III both directions", SpectralBoundary::neumann,
+                                  SpectralBoundary::neumann, FFTW_REDFT10, FFTW_REDFT01);
+  poisson_against_transform_pair("channel: inflow/outflow in x, DCT-IV; walls in y, DCT-II/III",
+                                  SpectralBoundary::neumann, SpectralBoundary::dirichlet, FFTW_REDFT11, FFTW_REDFT11);
   const std::string scene = argc > 1 ? argv[1] : "validation/lid_driven_cavity_re100/scene.toml";
   if (std::filesystem::exists(scene)) cavity_to_steady_state(scene);
   else std::printf("\n3. skipped: scene %s not found (pass its path)\n", scene.c_str());

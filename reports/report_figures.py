@@ -172,13 +172,18 @@ def snapshots(case_dir, case, out, max_panels=3, path=None):
 
 
 def body_histories(case_dir, out):
-    """Centroid height, vertical velocity and diameter of every body against time, from each
-    run's <stem>_bodies.csv (the CSV the solver writes beside its HDF5)."""
+    """Centroid height, vertical velocity and diameter of every body against time (or drag and
+    lift coefficients when the bodies have them), from each run's <stem>_bodies.csv (the CSV the
+    solver writes beside its HDF5)."""
     files = sorted(glob.glob(os.path.join(case_dir, "*_bodies.csv")))
     if not files:
         return None, []
     wanted = [("centroid_y", "centroid y"), ("velocity_y", "velocity y"), ("diameter", "diameter")]
     tables = [(os.path.basename(p)[:-len("_bodies.csv")], data.read_table_csv(p)) for p in files]
+    # Force histories for bodies with a reference speed (fixed cylinders of the DFG cases): drag
+    # and lift coefficients instead of the (constant) position and size.
+    if any(any(n.endswith("/drag_coefficient") for n in t[1][0]) for t in tables):
+        wanted = [("drag_coefficient", "drag coefficient"), ("lift_coefficient", "lift coefficient")]
     present = [(k, lab) for k, lab in wanted
                if any(any(n.endswith("/" + k) for n in t[1][0]) for t in tables)]
     if not present:

@@ -20,7 +20,24 @@ std::string describe_scene(const Scene& scene) {
   text += fmt::format("# grid\n{} x {} cells, dx = {:.6g}, dy = {:.6g}, periodic x: {}, periodic y: {}\n\n", g.nx,
                       g.ny, g.dx(), g.dy(), g.periodic_x ? "yes" : "no", g.periodic_y ? "yes" : "no");
   const Simulation sim(scene);
-  text += "# stages per step\n";
+  text += "# sides (fluid/boundary_conditions.hpp)\n";
+  for (Side side : {Side::left, Side::right, Side::bottom, Side::top}) {
+    const char* names[] = {"left", "right", "bottom", "top"};
+    const WallSpec* specs[] = {&scene.walls.left, &scene.walls.right, &scene.walls.bottom, &scene.walls.top};
+    const BoundarySide& b = sim.boundaries().side(side);
+    const SideKind kind = sim.boundaries().kind(g, side);
+    std::string what = side_kind_name(kind);
+    if (kind == SideKind::wall) what += b.is_moving() ? fmt::format(", tangential speed {:.6g}", b.speed) : ", at rest";
+    if (kind == SideKind::inflow)
+      what += fmt::format(", {} profile, {} {:.6g} into the box (mean {:.6g} at full factor), {} factor",
+                          b.inflow.shape == InflowProfile::Shape::parabolic ? "parabolic" : "uniform",
+                          b.inflow.shape == InflowProfile::Shape::parabolic ? "peak" : "speed", b.inflow.velocity,
+                          b.inflow.velocity * (b.inflow.shape == InflowProfile::Shape::parabolic ? 2.0 / 3.0 : 1.0),
+                          specs[static_cast<int>(side)]->time_factor);
+    if (kind == SideKind::outflow) what += ": zero normal velocity gradient, p = 0";
+    text += fmt::format("  {}: {}\n", names[static_cast<int>(side)], what);
+  }
+  text += "\n# stages per step\n";
   for (const std::string& s : sim.stage_names()) text += "  " + s + "\n";
   if (sim.has_bodies()) {
     text += "\n# bodies (kind: what each step costs)\n";

@@ -20,8 +20,7 @@ double grid_spacing(const Scene& scene) {
 
 // Largest speed known before the run: moving walls and initial body velocities [length/time].
 double initial_speed_scale(const Scene& scene) {
-  const WallsSpec& w = scene.walls;
-  double speed = std::max({std::abs(w.left.speed), std::abs(w.right.speed), std::abs(w.bottom.speed), std::abs(w.top.speed)});
+  double speed = boundary_speed_scale(scene.walls);
   for (const BodySpec& b : scene.bodies) speed = std::max(speed, std::hypot(b.velocity[0], b.velocity[1]));
   return speed;
 }
@@ -47,7 +46,7 @@ std::vector<TimeStepLimit> time_step_limits(const Scene& scene, const Simulation
   // Advective: dt max(|u|/dx + |v|/dy) <= 1 is the run's blow-up guard (run.max_cfl); the adaptive
   // step targets run.cfl of it, METHOD.md §2.3.
   limits.push_back({"CFL (advective, |u| dt / h <= 1)", speed > 0 ? h / speed : HUGE_VAL, scene.run.cfl, false,
-                    speed > 0 ? fmt::format("h / U with U = {:.4g} (walls, initial bodies)", speed)
+                    speed > 0 ? fmt::format("h / U with U = {:.4g} (walls, inflows, initial bodies)", speed)
                               : "no velocity scale before the run (fluid at rest): checked every step"});
   const double nu = scene.fluid.kinematic_viscosity;
   if (scene.run.max_viscous_number > 0)

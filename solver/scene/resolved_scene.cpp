@@ -138,6 +138,7 @@ std::string resolved_scene_toml(const Scene& scene) {
   out += fmt::format("forcing_stage = {}\n", toml_string(ibm.forcing_stage));
   out += fmt::format("inner_fluid_inertia = {}\n", toml_string(ibm.inner_fluid_inertia));
   out += fmt::format("sub_markers = {}\n", toml_bool(ibm.sub_markers));
+  out += fmt::format("marker_retraction = {}\n", toml_float(ibm.marker_retraction));
 
   for (const BodySpec& body : scene.bodies) append_body(out, body);
 
@@ -157,6 +158,12 @@ std::string resolved_scene_toml(const Scene& scene) {
   out += fmt::format("centreline_profiles = {}\n", toml_bool(output.centreline_profiles));
   out += fmt::format("progress = {}\n", toml_bool(output.progress));
   out += fmt::format("checkpoint_every = {}\n", output.checkpoint_every);
+  if (!output.probes.empty()) {
+    out += "probes = [";
+    for (std::size_t k = 0; k < output.probes.size(); ++k)
+      out += fmt::format("{}{}", k ? ", " : "", toml_pair(output.probes[k]));
+    out += "]\n";
+  }
   return out;
 }
 

@@ -77,6 +77,10 @@ struct IbmSpec {
   std::string forcing_stage = "explicit_estimate";
   std::string inner_fluid_inertia = "kempe";  // kempe (variant K) | none (variant A, papers' literal form)
   bool sub_markers = false;          // extra IB markers when marker spacing exceeds the cell size
+  // Markers moved towards the body's centre by this fraction of h (Breugem 2012 "retraction"): the
+  // regularised kernel makes the forced body look larger than its rim by a fraction of a cell
+  // (validation/dfg_cylinder_2d1/README.md measures it); 0 = markers on the rim [-].
+  double marker_retraction = 0.0;
 };
 
 struct SwellingSpec {
@@ -136,6 +140,9 @@ struct OutputSpec {
   bool progress = true;              // progress line on stderr
   long checkpoint_every = 0;         // write /checkpoint every k steps [-]; 0 = only at the end
                                      // (and on SIGINT/SIGTERM); `ibms run --restart` reads it
+  // Points where the series records the pressure and velocity (bilinear in the cell centres),
+  // e.g. the DFG cylinder's front and back points [length].
+  std::vector<std::array<double, 2>> probes;
 };
 
 struct Scene {
@@ -157,5 +164,9 @@ struct Scene {
     return false;
   }
 };
+
+// Largest speed the sides give the fluid: wall speeds and inflow peaks (times the largest time
+// factor) [length/time]; the velocity scale of a fluid that starts at rest.
+double boundary_speed_scale(const WallsSpec& walls);
 
 }  // namespace ibms

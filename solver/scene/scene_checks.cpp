@@ -4,6 +4,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -148,6 +149,19 @@ void check_scene_consistency(const Scene& scene, const SceneDiagnostics& diagnos
   check_bodies(scene, diagnostics);
   check_contact(scene.contact, diagnostics);
   check_output(scene.output, diagnostics);
+}
+
+double boundary_speed_scale(const WallsSpec& walls) {
+  double speed = 0.0;
+  for (const WallSpec* w : {&walls.left, &walls.right, &walls.bottom, &walls.top}) {
+    if (w->kind == "wall") speed = std::max(speed, std::abs(w->speed));
+    if (w->kind == "inflow") {
+      const double factor =
+          w->time_factor == "sinusoidal" ? std::abs(w->factor_offset) + std::abs(w->factor_amplitude) : 1.0;
+      speed = std::max(speed, std::abs(w->velocity) * factor);
+    }
+  }
+  return speed;
 }
 
 }  // namespace ibms

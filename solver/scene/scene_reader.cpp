@@ -132,6 +132,7 @@ void read_ibm(const TomlTableReader& table, IbmSpec& ibm) {
   table.read_choice("inner_fluid_inertia", ibm.inner_fluid_inertia,
                     schema::inner_fluid_inertia_choices);
   table.read_bool("sub_markers", ibm.sub_markers);
+  table.read_real("marker_retraction", ibm.marker_retraction, Need::optional, Bounds{0.0, false, 1.0, true});
 }
 
 void read_swelling(const TomlTableReader& table, double diameter, SwellingSpec& swelling) {
@@ -265,6 +266,13 @@ Scene scene_from_table(const toml::table& root, SceneDiagnostics& diagnostics) {
   output.read_bool("centreline_profiles", scene.output.centreline_profiles);
   output.read_bool("progress", scene.output.progress);
   output.read_integer("checkpoint_every", scene.output.checkpoint_every, Need::optional, /*lower=*/0);
+  output.read_pairs("probes", scene.output.probes);
+  for (std::size_t k = 0; k < scene.output.probes.size(); ++k) {
+    const auto& p = scene.output.probes[k];
+    if (p[0] < 0.0 || p[0] > scene.domain.length_x || p[1] < 0.0 || p[1] > scene.domain.length_y)
+      output.fail("probes", fmt::format("point {} = [{}, {}] lies outside the box [0, {}] x [0, {}]", k, p[0], p[1],
+                                        scene.domain.length_x, scene.domain.length_y));
+  }
   return scene;
 }
 

@@ -38,7 +38,7 @@ inline constexpr std::string_view inflow_profile_choices[] = {"uniform", "parabo
 inline constexpr std::string_view time_factor_choices[] = {"constant", "ramp", "sinusoidal"};
 std::span<const std::string_view> keys_of_side_kind(std::string_view kind);
 inline constexpr std::string_view ibm_keys[] = {"kernel", "forcing_passes", "forcing_stage",
-                                                "inner_fluid_inertia", "sub_markers"};
+                                                "inner_fluid_inertia", "sub_markers", "marker_retraction"};
 inline constexpr std::string_view forcing_stage_choices[] = {"explicit_estimate", "implicit_prediction"};
 inline constexpr std::string_view body_keys[] = {
     "kind",          "centre",           "velocity",       "angular_velocity",
@@ -64,7 +64,8 @@ inline constexpr std::string_view swelling_keys[] = {"onset_time", "rate", "max_
 inline constexpr std::string_view contact_keys[] = {"stiffness", "restitution_coefficient",
                                                     "cds_radius", "cds_radius_fraction", "walls"};
 inline constexpr std::string_view output_keys[] = {"file", "series_every", "snapshot_interval",
-                                                   "centreline_profiles", "progress", "checkpoint_every"};
+                                                   "centreline_profiles", "progress", "checkpoint_every",
+                                                   "probes"};
 
 inline constexpr std::string_view kernel_choices[] = {"roma3", "peskin4", "cosine4", "bkp6"};
 inline constexpr std::string_view inner_fluid_inertia_choices[] = {"kempe", "none"};

@@ -195,6 +195,30 @@ bool TomlTableReader::read_pair(std::string_view key, std::array<double, 2>& out
   return true;
 }
 
+bool TomlTableReader::read_pairs(std::string_view key, std::vector<std::array<double, 2>>& out) const {
+  const toml::node* node = find(key, Need::optional);
+  if (node == nullptr) return false;
+  const auto* array = node->as_array();
+  if (array == nullptr) fail_type(key, *node, "an array of points [[x, y], ...]");
+  std::vector<std::array<double, 2>> values;
+  for (std::size_t k = 0; k < array->size(); ++k) {
+    const auto* pair = array->get(k)->as_array();
+    if (pair == nullptr || pair->size() != 2)
+      fail(key, fmt::format("element {} must be a point [x, y] of two numbers", k));
+    std::array<double, 2> point{};
+    for (std::size_t c = 0; c < 2; ++c) {
+      const toml::node& element = *pair->get(c);
+      if (const auto* real = element.as_floating_point()) point[c] = real->get();
+      else if (const auto* integer = element.as_integer()) point[c] = static_cast<double>(integer->get());
+      else fail(key, fmt::format("element {} component {} must be a number, got {}", k, c, toml_type_name(element.type())));
+      if (!std::isfinite(point[c])) fail(key, fmt::format("element {} component {} must be finite", k, c));
+    }
+    values.push_back(point);
+  }
+  out = values;
+  return true;
+}
+
 TomlTableReader TomlTableReader::sub_table(std::string_view key) const {
   const toml::node* node = find(key, Need::optional);
   if (node == nullptr) return {nullptr, key_path(key), *diagnostics_};

@@ -66,6 +66,8 @@ class TomlTableReader {
   bool read_choice(std::string_view key, std::string& out,
                    std::span<const std::string_view> choices) const;
   bool read_pair(std::string_view key, std::array<double, 2>& out, Need need) const;  // [a, b], finite
+  // [[a, b], [c, d], ...], each pair finite; an empty array is allowed.
+  bool read_pairs(std::string_view key, std::vector<std::array<double, 2>>& out) const;
 
   // The sub-table at `key` (absent: a reader over nothing); a non-table value is an error.
   TomlTableReader sub_table(std::string_view key) const;

@@ -36,6 +36,7 @@ BodyCoupling::BodyCoupling(const MassSpringBody& body, std::size_t max_markers)
   marker_edge.reserve(capacity);
   marker_fraction.reserve(capacity);
   marker_volume.reserve(capacity);
+  marker_fraction_work.reserve(capacity);
   resize_markers(*this, body.n_surface);
   for (int l = 0; l < body.n_surface; ++l) {
     marker_edge[l] = l;
@@ -56,7 +57,8 @@ WallVelocities wall_velocities_at(const FluidBoundaries& boundaries, double time
 
 void prepare_markers(const std::vector<MassSpringBody>& bodies,
                      const std::vector<SwellingSchedule>& swelling, double time, double previous_dt,
-                     const Grid& grid, bool sub_markers, std::vector<BodyCoupling>& coupling) {
+                     const Grid& grid, bool sub_markers, std::vector<BodyCoupling>& coupling,
+                     double retraction) {
   const double h = grid.dx();  // square cells (checked when the Simulation is built)
   for (std::size_t b = 0; b < bodies.size(); ++b) {
     const MassSpringBody& body = bodies[b];
@@ -93,6 +95,18 @@ void prepare_markers(const std::vector<MassSpringBody>& bodies,
         }
       }
     }
+    const Vec2 x_c = centre_of_mass(body);
+    std::vector<double>& radial_factor = c.marker_fraction_work;
+    radial_factor.assign(c.marker.size(), 1.0);  // capacity reserved: no allocation after the first step
+    if (retraction > 0.0)
+      for (std::size_t l = 0; l < c.marker.size(); ++l) {
+        const double rx = c.marker[l][0] - x_c[0], ry = c.marker[l][1] - x_c[1], r = std::hypot(rx, ry);
+        if (!(r > retraction))
+          throw BlowUpError("body " + std::to_string(b) + ": marker " + std::to_string(l) + " lies " + std::to_string(r) +
+                            " from the centre, within ibm.marker_retraction's " + std::to_string(retraction));
+        radial_factor[l] = (r - retraction) / r;
+        c.marker[l] = {x_c[0] + radial_factor[l] * rx, x_c[1] + radial_factor[l] * ry};
+      }
     marker_weights(c.marker, h, c.marker_volume);  // dV_l = h s_l, METHOD.md §3.6 (in place)
     // METHOD.md §1.8: the fluid is forced towards the marker velocity minus the swelling
     // part (s'/s)(X_l - X_c), so a swelling body absorbs fluid instead of pushing it away.
@@ -102,15 +116,17 @@ void prepare_markers(const std::vector<MassSpringBody>& bodies,
     const double growth = previous_dt > 0.0
         ? std::log(swelling[b].length_scale(time) / swelling[b].length_scale(time - previous_dt)) / previous_dt
         : swelling[b].relative_growth_rate(time);
-    const Vec2 x_c = centre_of_mass(body);
+    const Vec2 v_c = body.velocity[body.centre_index()];
     // U_target is linear in (U, X), so a sub-marker's target is the linear interpolation of its
-    // edge end points' targets.
+    // edge end points' targets; a retracted marker's velocity relative to the centre point is
+    // scaled by its radial factor.
     for (std::size_t l = 0; l < c.marker.size(); ++l) {
       const int e0 = c.marker_edge[l];
       const int e1 = (e0 + 1) % n_rim;
       const double w = c.marker_fraction[l];
       for (int d = 0; d < 2; ++d) {
-        const double u = (1.0 - w) * body.velocity[e0][d] + w * body.velocity[e1][d];
+        const double rim = (1.0 - w) * body.velocity[e0][d] + w * body.velocity[e1][d];
+        const double u = radial_factor[l] == 1.0 ? rim : v_c[d] + radial_factor[l] * (rim - v_c[d]);
         c.target_velocity[l][d] = u - growth * (c.marker[l][d] - x_c[d]);
       }
     }

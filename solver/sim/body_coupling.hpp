@@ -31,6 +31,7 @@ struct BodyCoupling {
   std::vector<Vec2> marker;                // X_l^n [length]
   std::vector<int> marker_edge;            // rim edge (and first end point) of marker l [-]
   std::vector<double> marker_fraction;     // position along that edge [-]
+  std::vector<double> marker_fraction_work; // radial factor of each marker (ibm.marker_retraction) [-]
   std::vector<double> marker_volume;       // dV_l = h s_l [length^2 per unit depth]
   std::vector<Vec2> target_velocity;       // U_target_l [length/time]
   std::vector<Vec2> interpolated_velocity; // U~_l = J u~ [length/time]
@@ -73,9 +74,13 @@ WallVelocities wall_velocities_at(const FluidBoundaries& boundaries, double time
 // X^n, dV_l and U_target_l of every body (METHOD.md §1.8, §3.6) at `time` = t^n; previous_dt is
 // dt^{n-1} (0 on the first step), over which the swelling part of U^n is measured. With
 // sub_markers, each rim edge e is split into ceil(|e|/h) pieces at X^n (METHOD.md §3.6).
+// retraction: markers moved towards the centre of mass X_c by this length (ibm.marker_retraction
+// times h), each marker's velocity relative to X_c's scaled by the same radial factor (exact for a
+// rigid motion and a uniform dilation), volumes dV_l from the moved markers.
 void prepare_markers(const std::vector<MassSpringBody>& bodies,
                      const std::vector<SwellingSchedule>& swelling, double time, double previous_dt,
-                     const Grid& grid, bool sub_markers, std::vector<BodyCoupling>& coupling);
+                     const Grid& grid, bool sub_markers, std::vector<BodyCoupling>& coupling,
+                     double retraction = 0.0);
 
 // n_passes direct-forcing passes on (velocity_star_x, velocity_star_y): interpolate u~ at X^n,
 // F = (U_target - U~)/dt, spread dt F with dV_l, u~ += dt f; accumulates F in forcing_sum.

@@ -118,10 +118,8 @@ double next_time_step(const Simulation& sim, const VelocityScan& scan) {
   const RunSpec& run = sim.scene().run;
   const double time_left = run.end_time - sim.fluid().time;
   if (run.time_step > 0.0) return std::min(run.time_step, time_left);
-  // Moving walls set the velocity scale of a fluid at rest (lid-driven start).
-  const WallsSpec& w = sim.scene().walls;
-  const double wall_speed = std::max({std::abs(w.left.speed), std::abs(w.right.speed),
-                                      std::abs(w.bottom.speed), std::abs(w.top.speed)});
+  // Moving walls and inflows set the velocity scale of a fluid at rest (lid-driven start).
+  const double wall_speed = boundary_speed_scale(sim.scene().walls);
   const double rate = std::max(scan.max_rate, wall_speed / std::min(sim.grid().dx(), sim.grid().dy()));
   double dt = rate > 0.0 ? run.cfl / rate : run.max_time_step;
   if (sim.has_bodies()) {

@@ -31,6 +31,7 @@ namespace ibms {
 namespace {
 
 std::vector<SeriesValue> body_series(const Simulation& sim);
+std::vector<SeriesValue> probe_series(const Simulation& sim);
 
 // Body series kept in memory for <stem>_bodies.csv (one column per series, time first).
 struct BodyTable {
@@ -54,7 +55,8 @@ void write_body_table(const std::string& h5_path, const Simulation& sim, const B
             {"ibms body series: per body centroid of the rim polygon, centre-of-mass velocity, (rigid and",
              "prescribed: angle, angular velocity), hydrodynamic force and torque about the centre (drag and lift",
              "coefficients when the body has a reference_speed), diameter D(t), rim-polygon area, spring energy,",
-             "sub-steps of the step; source scene: " + sim.scene().source_file},
+             "sub-steps of the step; output.probes: pressure and velocity at each probe point; source scene: " +
+                 sim.scene().source_file},
             table.headers, table.columns);
 }
 
@@ -74,13 +76,50 @@ void write_series(OutputFile& out, const Simulation& sim, double dt, double cfl,
       {"cfl", "-", cfl},
       {"steady_residual", "1/time", steady_residual},
   });
-  const std::vector<SeriesValue> body_row = body_series(sim);
+  if (sim.boundaries().has_open_side(sim.grid())) {
+    // Volume fluxes through the open sides: what comes in, and the net (0 to round-off).
+    const Grid& g = sim.grid();
+    double in = 0.0;
+    for (Side s : {Side::left, Side::right, Side::bottom, Side::top})
+      if (sim.boundaries().kind(g, s) == SideKind::inflow) in += side_inflow(g, s, f.velocity_face_x, f.velocity_face_y);
+    row.push_back({"inflow_flux", "length^2/time", in});
+    row.push_back({"net_boundary_flux", "length^2/time", net_inflow(g, f.velocity_face_x, f.velocity_face_y)});
+  }
+  std::vector<SeriesValue> body_row = body_series(sim);
+  for (const SeriesValue& v : probe_series(sim)) body_row.push_back(v);
   if (!body_row.empty()) bodies.append(f.time, body_row);
   for (const SeriesValue& v : body_row) row.push_back(v);
   out.append_series(row);
 }
 
 std::string body_name(std::size_t b) { return fmt::format("body_{:03d}", b); }
+
+// output.probes: p (dynamic), u, v at each point, bilinear in the four nearest cell centres; a
+// point within half a cell of a side takes the nearest centre line there (no extrapolation).
+std::vector<SeriesValue> probe_series(const Simulation& sim) {
+  std::vector<SeriesValue> row;
+  const Grid& g = sim.grid();
+  const FluidState& f = sim.fluid();
+  const auto& probes = sim.scene().output.probes;
+  for (std::size_t k = 0; k < probes.size(); ++k) {
+    const auto axis = [](double x, double origin, double h, int n) {
+      const double s = std::clamp((x - origin) / h - 0.5, 0.0, static_cast<double>(n - 1));
+      const int i0 = std::min(static_cast<int>(std::floor(s)), n - 2);
+      return std::pair<int, double>{i0, s - i0};
+    };
+    const auto [i, wx] = axis(probes[k][0], g.origin_x, g.dx(), g.nx);
+    const auto [j, wy] = axis(probes[k][1], g.origin_y, g.dy(), g.ny);
+    const auto at = [&, i = i, j = j, wx = wx, wy = wy](const CellField& q) {
+      return (1 - wx) * (1 - wy) * q(i, j) + wx * (1 - wy) * q(i + 1, j) + (1 - wx) * wy * q(i, j + 1) +
+             wx * wy * q(i + 1, j + 1);
+    };
+    const std::string name = fmt::format("probe_{:03d}", k);
+    row.push_back({name + "/pressure", "mass/(length time^2)", sim.fluid_density() * at(f.pressure)});
+    row.push_back({name + "/velocity_x", "length/time", at(f.velocity_x)});
+    row.push_back({name + "/velocity_y", "length/time", at(f.velocity_y)});
+  }
+  return row;
+}
 
 // Per-body series: centroid of the rim polygon, centre-of-mass velocity, diameter (the swelling
 // law's D), rim-polygon area, elastic energy and the sub-steps of the latest step.

@@ -104,9 +104,7 @@ Simulation::Simulation(const Scene& scene)
 }
 
 void Simulation::set_instability_bounds() {
-  const WallsSpec& w = scene_.walls;
-  double speed = std::max({std::abs(w.left.speed), std::abs(w.right.speed), std::abs(w.bottom.speed),
-                           std::abs(w.top.speed)});
+  double speed = boundary_speed_scale(scene_.walls);
   const double gravity = std::hypot(scene_.fluid.gravity[0], scene_.fluid.gravity[1]);
   const double diagonal = std::hypot(grid_.length_x, grid_.length_y);
   for (std::size_t b = 0; b < bodies_.size(); ++b) {

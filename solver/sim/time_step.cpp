@@ -12,7 +12,8 @@ void advance_one_step(Simulation& sim, double dt) {
     auto t = timers.time(Stage::schedules);
     apply_swelling_schedules(sim.swelling(), time_n, sim.bodies());  // D(t^n), M at constant density, §1.8
     prepare_markers(sim.bodies(), sim.swelling(), time_n, fluid.time_step_prev, sim.grid(),
-                    sim.scene().ibm.sub_markers, sim.coupling());  // X^n, dV_l, U_target, §1.8, §3.6
+                    sim.scene().ibm.sub_markers, sim.coupling(),
+                    sim.scene().ibm.marker_retraction * sim.grid().dx());  // X^n, dV_l, U_target, §1.8, §3.6
   }
   const auto force_markers = [&](CellField& velocity_x, CellField& velocity_y) {
     auto t = timers.time(Stage::ib_forcing);

@@ -36,18 +36,24 @@ struct CouetteResult {
   double l2 = 0.0, max = 0.0;  // |u - u_exact| over the cells with R1 <= r <= R2
   double slip = 0.0;           // max |U - J u| over the markers of both cylinders after the last step
   double ms_per_step = 0.0;
+  // Effective radii of the forced cylinders, from the least-squares fit u_theta = A r + B / r over
+  // the cells with R1 + 3h <= r <= R2 - 3h (outside the kernels' reach): the inner rim speed is met
+  // at R1e = sqrt(B / (Omega - A)), rest at R2e = sqrt(-B / A). In cells, positive when the body
+  // looks larger than its rim: (R1e - R1) / h and (R2 - R2e) / h.
+  double inner_growth_cells = 0.0, outer_growth_cells = 0.0;
 };
 
 // n x n cells, markers spaced ~ h, dt = min(0.5 h / (Omega R1), viscous_number h^2 / nu), started from
 // the exact solution, run to end_time: the distance to the discrete steady state decays like
 // exp(-nu pi^2 t / (R2 - R1)^2), so t = 0.4 leaves e^-9.9 of it.
-inline CouetteResult run_circular_couette(int n, int forcing_passes) {
+inline CouetteResult run_circular_couette(int n, int forcing_passes, double marker_retraction = 0.0) {
   using C = CircularCouette;
   Scene scene;
   scene.source_file = "(circular Couette)";
   scene.domain = {1.0, 1.0, n, n, false, false};
   scene.fluid.kinematic_viscosity = C::kinematic_viscosity;
   scene.ibm.forcing_passes = forcing_passes;
+  scene.ibm.marker_retraction = marker_retraction;
   // Prescribed bodies move as given: the inner-fluid term would only enter their reported force,
   // and its fan-triangle overlaps of the large outer cylinder would cost 4x the whole run.
   scene.ibm.inner_fluid_inertia = "none";
@@ -85,6 +91,20 @@ inline CouetteResult run_circular_couette(int n, int forcing_passes) {
       result.max = std::max(result.max, error / speed);
     }
   result.l2 = std::sqrt(sum / area) / speed;
+  // Least squares for (A, B) in u_theta = A r + B / r: normal equations of the basis (r, 1/r).
+  double srr = 0.0, sr1 = 0.0, s11 = 0.0, sur = 0.0, su1 = 0.0;
+  for (int j = 0; j < g.ny; ++j)
+    for (int i = 0; i < g.nx; ++i) {
+      const double rx = g.x_centre(i) - C::centre[0], ry = g.y_centre(j) - C::centre[1];
+      const double r = std::hypot(rx, ry);
+      if (r < C::inner_radius + 3 * h || r > C::outer_radius - 3 * h) continue;
+      const double u_theta = (-sim.fluid().velocity_x(i, j) * ry + sim.fluid().velocity_y(i, j) * rx) / r;
+      srr += r * r; sr1 += 1.0; s11 += 1.0 / (r * r); sur += u_theta * r; su1 += u_theta / r;
+    }
+  const double det = srr * s11 - sr1 * sr1;
+  const double a = (sur * s11 - su1 * sr1) / det, b = (srr * su1 - sr1 * sur) / det;
+  result.inner_growth_cells = (std::sqrt(b / (C::rotation_rate - a)) - C::inner_radius) / h;
+  result.outer_growth_cells = (C::outer_radius - std::sqrt(-b / a)) / h;
   result.slip = std::max(rim_slip(sim, 0), rim_slip(sim, 1)) / speed;
   return result;
 }

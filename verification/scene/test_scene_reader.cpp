@@ -89,6 +89,7 @@ void check_same_scene(const ibms::Scene& a, const ibms::Scene& b) {
   BOOST_TEST((a.ibm.kernel == b.ibm.kernel && a.ibm.forcing_passes == b.ibm.forcing_passes));
   BOOST_TEST((a.ibm.forcing_stage == b.ibm.forcing_stage && a.ibm.inner_fluid_inertia == b.ibm.inner_fluid_inertia));
   BOOST_TEST(a.ibm.sub_markers == b.ibm.sub_markers);
+  BOOST_TEST(a.ibm.marker_retraction == b.ibm.marker_retraction);
   BOOST_TEST_REQUIRE(a.bodies.size() == b.bodies.size());
   for (std::size_t k = 0; k < a.bodies.size(); ++k) {
     const ibms::BodySpec &x = a.bodies[k], &y = b.bodies[k];
