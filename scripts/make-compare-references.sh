@@ -5,10 +5,13 @@
 #   validation/cavity_swelling_particles/reference/ibms_trajectories_{nonswelling,swelling}.csv
 #   validation/cavity_deformable_objects/reference/ibms_deformation_k{10,100}.csv
 #     (the body cases at their validation grid, 100 x 100, as their ctest runs them)
+#   validation/dfg_cylinder_2d1/reference/ibms_dfg_2d1.csv          (D/h = 80, the slow label's finest)
+#   validation/dfg_cylinder_2d2/reference/ibms_dfg_2d2_forces.csv   (D/h = 40, t >= 8)
 # usage: scripts/make-compare-references.sh IBMS_BINARY WORK_DIR
 # Runs that already have their output in WORK_DIR (<case>_<N>.h5 and its CSVs) are not rerun.
 # CAVITY_CASES="..." restricts the cavity cases; SKIP_SETTLING=1 skips the settling disk;
-# ONLY_BODIES=1 makes only the two body cases' references. Their runs are WORK_DIR/<case>_<variant>.h5
+# ONLY_BODIES=1 makes only the two body cases' references; ONLY_DFG=1 only the two DFG cases' (their
+# runs WORK_DIR/dfg_2d1_80 and dfg_2d2_40, e.g. links to build/validation/dfg_cylinder_*/ outputs). Their runs are WORK_DIR/<case>_<variant>.h5
 # (variant nonswelling|swelling|k10|k100); links to the ctest outputs are reused, e.g.
 # build/validation/cavity_deformable_objects/k10{.h5,_bodies.csv} linked as
 # WORK_DIR/cavity_deformable_objects_k10{.h5,_bodies.csv}.
@@ -18,7 +21,7 @@ src=$(cd "$(dirname "$0")/.." && pwd)
 commit=$(git -C "$src" rev-parse --short=12 HEAD)
 mkdir -p "$work"
 n_cavity=256
-[[ ${ONLY_BODIES:-0} == 1 ]] && CAVITY_CASES=none SKIP_SETTLING=1
+[[ ${ONLY_BODIES:-0} == 1 || ${ONLY_DFG:-0} == 1 ]] && CAVITY_CASES=none SKIP_SETTLING=1
 for case in ${CAVITY_CASES:-lid_driven_cavity_re100 lid_driven_cavity_re400 lid_driven_cavity_re1000 two_sided_cavity_re100}; do
   [[ $case == none ]] && continue
   base=$work/${case}_${n_cavity}
@@ -55,6 +58,58 @@ made_by=$(/usr/bin/python3 -c "import h5py; f = h5py.File('$base.h5', 'r'); prin
          print "t [s],y [cm],v [cm/s]"; next }
     { print $1, $cy, $cv }' "${base}_bodies.csv"; } > "$src/validation/settling_disk/reference/ibms_settling_history.csv"
 fi
+
+# DFG cylinders (docs/compare.md): the slow label's finest runs.
+dfg_run() {  # case scene_dir n -> runs unless WORK_DIR has its _bodies.csv
+  local base=$work/$1_$3
+  if [[ ! -s ${base}_bodies.csv ]]; then
+    echo "running $1 at D/h = $3"
+    "$ibms" run "$src/validation/$2/scene.toml" --set domain.cells_x=$((22 * $3)) \
+      --set domain.cells_y=$(((41 * $3 + 5) / 10)) --set bodies.0.n_surface_points=$(((314159 * $3 + 50000) / 100000)) \
+      -o "$base.h5" --quiet
+  fi
+}
+if [[ ${ONLY_BODIES:-0} != 1 ]]; then
+  dfg_run dfg_2d1 dfg_cylinder_2d1 80
+  dfg_run dfg_2d2 dfg_cylinder_2d2 40
+  for spec in "dfg_2d1_80 dfg_cylinder_2d1/reference/ibms_dfg_2d1.csv steady" \
+              "dfg_2d2_40 dfg_cylinder_2d2/reference/ibms_dfg_2d2_forces.csv periodic"; do
+    read -r run target kind <<< "$spec"
+    made_by=$(/usr/bin/python3 -c "import h5py; f = h5py.File('$work/$run.h5', 'r'); print(f.attrs['git_commit'])")
+    /usr/bin/python3 - "$work/${run}_bodies.csv" "$src/validation/$target" "$kind" "$made_by" "$commit" <<'PY'
+import sys, numpy as np
+src, dst, kind, made_by, commit = sys.argv[1:]
+lines = [l for l in open(src) if not l.startswith("#")]
+names = [c.split(" [")[0] for c in lines[0].strip().split(",")]
+data = np.array([[float(x) for x in l.split(",")] for l in lines[1:]])
+col = {n: data[:, k] for k, n in enumerate(names)}
+rim = lambda a, b, c: 6 * a - 8 * b + 3 * c  # quadratic to the rim from 0.01, 0.015, 0.02 (force_metrics.hpp)
+p = [col["probe_%03d/pressure" % k] for k in range(6)]
+dp = rim(p[0], p[1], p[2]) - rim(p[3], p[4], p[5])
+with open(dst, "w") as f:
+    what = "the steady coefficients (last row)" if kind == "steady" else "the force history for t >= 8, every step"
+    f.write("# ibms reference for 'ibms compare' (docs/compare.md): %s of ibms's own run %s
+" % (what, src.split("/")[-1]))
+    f.write("# (validation/<case>/scene.toml at the grid in the name: D/h), ibms commit %s; written by
+" % made_by)
+    f.write("# scripts/make-compare-references.sh at commit %s. Delta p from the probes extrapolated to the rim.
+" % commit)
+    if kind == "steady":
+        f.write("drag_coefficient [-],lift_coefficient [-],pressure_difference [mass/(length time^2)]
+")
+        f.write("%.10g,%.10g,%.10g
+" % (col["body_000/drag_coefficient"][-1], col["body_000/lift_coefficient"][-1], dp[-1]))
+    else:
+        f.write("time [time],drag_coefficient [-],lift_coefficient [-],pressure_difference [mass/(length time^2)]
+")
+        for k in np.nonzero(col["time"] >= 8.0)[0]:
+            f.write("%.10g,%.10g,%.10g,%.10g
+" % (col["time"][k], col["body_000/drag_coefficient"][k],
+                                                   col["body_000/lift_coefficient"][k], dp[k]))
+PY
+  done
+fi
+[[ ${ONLY_DFG:-0} == 1 ]] && { echo "references written"; exit 0; }
 
 # Body cavities (docs/compare.md): ibms's own validation runs at the cases' 100 x 100.
 run_body_case() {  # case, variant -> sets base; runs the scene unless WORK_DIR has its _bodies.csv

@@ -16,6 +16,7 @@
 #include <filesystem>
 
 #include "app/compare_bodies.hpp"
+#include "app/compare_dfg.hpp"
 #include "app/compare_input.hpp"
 #include "app/compare_report.hpp"
 #include "core/errors.hpp"
@@ -277,6 +278,8 @@ std::vector<std::string> compare_case_names() {
   names.push_back(dkt_case);
   names.push_back("cavity_swelling_particles");
   names.push_back("cavity_deformable_objects");
+  names.push_back("dfg_cylinder_2d1");
+  names.push_back("dfg_cylinder_2d2");
   return names;
 }
 
@@ -301,6 +304,8 @@ int compare_case(const std::string& case_name, const std::vector<std::string>& f
   if (case_name == dkt_case) return compare_dkt(files, validation_dir);
   if (case_name == "cavity_swelling_particles") return compare_swelling_particles(files, validation_dir);
   if (case_name == "cavity_deformable_objects") return compare_deformable_objects(files, validation_dir);
+  if (case_name == "dfg_cylinder_2d1") return compare_dfg_steady(files, validation_dir);
+  if (case_name == "dfg_cylinder_2d2") return compare_dfg_periodic(files, validation_dir);
   std::string known;
   for (const std::string& n : names) known += (known.empty() ? "" : ", ") + n;
   throw InputError("ibms compare: unknown case '" + case_name + "' (known: " + known + ")");

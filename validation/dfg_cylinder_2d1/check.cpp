@@ -8,15 +8,15 @@
 //
 // usage: dfg_check steady   <case> <reference.csv> <cells_per_diameter>:<base> ...
 //        dfg_check periodic <case> <reference.csv> <t_from> <cells_per_diameter>:<base> ...
-// steady (2D-1): the last row's c_D, c_L and Delta p (probes: rim_pressure below). Targets: c_D at the finest grid within 1 % of
+// steady (2D-1): the last row's c_D, c_L and Delta p (probes: pressure_difference below). Targets: c_D at the finest grid within 1 % of
 //   the refined reference, the Richardson value within 0.5 % (needs three grids).
-// periodic (2D-2): over t >= t_from, max c_D, max c_L, the Strouhal number from the mean period
-//   between upward zero crossings of c_L - mean (linearly interpolated), Delta p half a period after
-//   the last lift maximum. Targets: St within 1 %, max c_D within 2 % of the reference (the midpoint
+// periodic (2D-2): over t >= t_from, the figures of ibms::periodic_forces (solver/sim/force_metrics.hpp,
+//   shared with `ibms compare`). Targets: St within 1 %, max c_D within 2 % of the reference (the midpoint
 //   of the published bounds).
 // Every other figure is reported (info) with its deviation from the reference and whether it lies
 // within the published bounds.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -27,10 +27,16 @@
 #include <string>
 #include <vector>
 
+#include "sim/force_metrics.hpp"
 #include "validation/common/results_csv.hpp"
 #include "validation/settling_disk/body_series.hpp"
 
 using namespace ibms::validation;
+using ibms::PeriodicForces;
+using ibms::Richardson;
+using ibms::periodic_forces;
+using ibms::richardson;
+using ibms::rim_pressure;
 
 namespace {
 
@@ -67,28 +73,6 @@ const std::vector<double>& column(const SeriesTable& t, const std::string& name,
 
 struct Grid { double resolution; std::string base; };
 
-// Observed order, Richardson value and fine-grid GCI (safety 1.25) of phi on grids h1 < h2 < h3
-// (Celik et al. 2008). order is NaN when the differences change sign (oscillatory convergence).
-struct Richardson { double order = NAN, value = NAN, gci = NAN; };
-
-Richardson richardson(double h1, double h2, double h3, double f1, double f2, double f3) {
-  Richardson r;
-  const double r21 = h2 / h1, r32 = h3 / h2, e21 = f2 - f1, e32 = f3 - f2;
-  if (e21 == 0.0 || e32 / e21 <= 0.0) return r;
-  const double s = 1.0;  // same sign
-  double p = std::log(std::abs(e32 / e21)) / std::log(r21);
-  for (int it = 0; it < 100; ++it) {
-    const double q = std::log((std::pow(r21, p) - s) / (std::pow(r32, p) - s));
-    const double next = std::abs(std::log(std::abs(e32 / e21)) + q) / std::log(r21);
-    if (std::abs(next - p) < 1e-12) { p = next; break; }
-    p = next;
-  }
-  r.order = p;
-  r.value = (std::pow(r21, p) * f1 - f2) / (std::pow(r21, p) - 1.0);
-  r.gci = 1.25 * std::abs((f1 - f2) / f1) / (std::pow(r21, p) - 1.0);
-  return r;
-}
-
 bool report(const std::string& name, const std::string& label, double measured, const Reference& ref,
             double tolerance, bool is_check) {
   const double deviation = measured / ref.value - 1.0;
@@ -104,62 +88,11 @@ bool report(const std::string& name, const std::string& label, double measured, 
   return true;
 }
 
-// The pressure at the rim from three probes at 0.01, 0.015, 0.02 outside it along the flow axis
-// (the scenes' probes 0-2 in front, 3-5 behind): the quadratic through them evaluated at 0,
-// Lagrange weights 6, -8, 3.
-double rim_pressure(double p_near, double p_middle, double p_far) { return 6.0 * p_near - 8.0 * p_middle + 3.0 * p_far; }
+// Probes 0-2 lie 0.01, 0.015, 0.02 in front of the cylinder, 3-5 as far behind (the scenes).
+constexpr std::array<double, 3> probe_distance{0.01, 0.015, 0.02};
 
-struct Periodic { double cd_max = NAN, cl_max = NAN, strouhal = NAN, dp_half = NAN; int periods = 0; };
-
-Periodic periodic_figures(const SeriesTable& t, const std::string& file, double t_from, double u_mean, double d) {
-  const auto& time = column(t, "time", file);
-  const auto& cd = column(t, "body_000/drag_coefficient", file);
-  const auto& cl = column(t, "body_000/lift_coefficient", file);
-  std::vector<double> dp(time.size());
-  {
-    std::vector<const std::vector<double>*> p;
-    for (int k = 0; k < 6; ++k) p.push_back(&column(t, "probe_00" + std::to_string(k) + "/pressure", file));
-    for (std::size_t k = 0; k < time.size(); ++k)
-      dp[k] = rim_pressure((*p[0])[k], (*p[1])[k], (*p[2])[k]) - rim_pressure((*p[3])[k], (*p[4])[k], (*p[5])[k]);
-  }
-  Periodic out;
-  // The run's last step is shortened to land on end_time; the direct forcing's force carries the
-  // previous step's rim slip over dt ((U - J u^n) / dt), so that one row jumps (measured: c_D 3.57 ->
-  // 4.10 at D/h = 20 with dt 0.00089 -> 0.00035) and is left out of the maxima.
-  // (series_every = 1: the rows' time differences are the steps)
-  std::size_t rows = time.size();
-  if (rows >= 3 && time[rows - 1] - time[rows - 2] < 0.9 * (time[rows - 2] - time[rows - 3])) --rows;
-  double mean = 0.0;
-  int n = 0;
-  for (std::size_t k = 0; k < rows; ++k)
-    if (time[k] >= t_from) { mean += cl[k]; ++n; out.cd_max = std::isnan(out.cd_max) ? cd[k] : std::max(out.cd_max, cd[k]); }
-  if (n < 10) throw std::runtime_error(file + ": fewer than 10 rows after t = " + std::to_string(t_from));
-  mean /= n;
-  std::vector<double> up;  // upward crossings of c_L - mean
-  std::size_t last_max = 0;
-  for (std::size_t k = 1; k < rows; ++k) {
-    if (time[k - 1] < t_from) continue;
-    const double a = cl[k - 1] - mean, b = cl[k] - mean;
-    if (a < 0.0 && b >= 0.0) up.push_back(time[k - 1] + (time[k] - time[k - 1]) * (-a) / (b - a));
-    if (std::isnan(out.cl_max) || cl[k] > out.cl_max) { out.cl_max = cl[k]; }
-  }
-  if (up.size() < 3) throw std::runtime_error(file + ": fewer than two shedding periods after t = " + std::to_string(t_from));
-  out.periods = static_cast<int>(up.size()) - 1;
-  const double period = (up.back() - up.front()) / out.periods;
-  out.strouhal = d / (period * u_mean);
-  // Delta p half a period after the last lift maximum that has half a period of data after it.
-  for (std::size_t k = 1; k + 1 < rows; ++k)
-    if (time[k] >= t_from && cl[k] >= cl[k - 1] && cl[k] >= cl[k + 1] && time[k] + 0.5 * period <= time[rows - 1]) last_max = k;
-  if (last_max > 0) {
-    const double target = time[last_max] + 0.5 * period;
-    for (std::size_t k = last_max; k + 1 < rows; ++k)
-      if (time[k + 1] >= target) {
-        const double w = (target - time[k]) / (time[k + 1] - time[k]);
-        out.dp_half = (1 - w) * dp[k] + w * dp[k + 1];
-        break;
-      }
-  }
-  return out;
+double pressure_difference(const std::array<double, 6>& p) {
+  return rim_pressure(probe_distance, {p[0], p[1], p[2]}) - rim_pressure(probe_distance, {p[3], p[4], p[5]});
 }
 
 }  // namespace
@@ -194,13 +127,23 @@ int main(int argc, char** argv) {
       if (mode == "steady") {
         const double cd = column(t, "body_000/drag_coefficient", file).back();
         const double cl = column(t, "body_000/lift_coefficient", file).back();
-        const auto p = [&](int k) { return column(t, "probe_00" + std::to_string(k) + "/pressure", file).back(); };
-        const double dp = rim_pressure(p(0), p(1), p(2)) - rim_pressure(p(3), p(4), p(5));
+        std::array<double, 6> p{};
+        for (int k = 0; k < 6; ++k) p[k] = column(t, "probe_00" + std::to_string(k) + "/pressure", file).back();
+        const double dp = pressure_difference(p);
         figures.push_back({cd, cl, dp});
       } else {
-        const Periodic p = periodic_figures(t, file, t_from, u_mean, d);
-        std::printf("D/h = %g: %d shedding periods after t = %g\n", g.resolution, p.periods, t_from);
-        figures.push_back({p.cd_max, p.cl_max, p.strouhal, p.dp_half});
+        const auto& time = column(t, "time", file);
+        std::vector<double> dp(time.size());
+        for (std::size_t r = 0; r < time.size(); ++r) {
+          std::array<double, 6> p{};
+          for (int k = 0; k < 6; ++k) p[k] = column(t, "probe_00" + std::to_string(k) + "/pressure", file)[r];
+          dp[r] = pressure_difference(p);
+        }
+        const PeriodicForces f = periodic_forces(time, column(t, "body_000/drag_coefficient", file),
+                                                 column(t, "body_000/lift_coefficient", file), dp, t_from, d, u_mean);
+        std::printf("D/h = %g: %d shedding periods after t = %g%s\n", g.resolution, f.periods, t_from,
+                    f.dropped_last_row ? " (last, shortened step left out)" : "");
+        figures.push_back({f.drag_max, f.lift_max, f.strouhal, f.pressure_difference_half_period});
       }
     }
     bool ok = true;

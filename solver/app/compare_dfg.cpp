@@ -1,0 +1,132 @@
+// `ibms compare` for the DFG cylinder benchmarks (compare_dfg.hpp). Tolerances are the case checks'
+// (validation/dfg_cylinder_2d1/CMakeLists.txt and check.cpp): c_D within 1 % (2D-1); the Strouhal
+// number within 1 % and max c_D within 2 % (2D-2), against the published value and against ibms's
+// own finest run (reference/ibms_*.csv).
+#include "app/compare_dfg.hpp"
+
+#include <fmt/format.h>
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+
+#include "app/compare_input.hpp"
+#include "app/compare_report.hpp"
+#include "core/errors.hpp"
+#include "sim/force_metrics.hpp"
+#include "validation/settling_disk/body_series.hpp"
+
+namespace ibms {
+namespace {
+
+constexpr double steady_drag_tolerance = 0.01;    // 2D-1 c_D (issue 11)
+constexpr double strouhal_tolerance = 0.01;       // 2D-2 St
+constexpr double drag_max_tolerance = 0.02;       // 2D-2 max c_D
+constexpr double periodic_window = 4.0;           // time units at the end of the history
+constexpr double diameter = 0.1, mean_speed_2d2 = 1.0;
+// ibms's probes (scene.toml): 0.01, 0.015, 0.02 in front of and behind the cylinder.
+constexpr std::array<double, 3> probe_distance{0.01, 0.015, 0.02};
+
+int column(const CompareTable& t, const std::vector<std::string>& aliases, bool required, const std::string& what) {
+  const int c = t.find(aliases);
+  if (c < 0 && required)
+    throw InputError(t.path + ":" + std::to_string(t.header_line) + ": header needs a column " + what);
+  return c;
+}
+
+// Delta p per row: a pressure_difference column, or ibms's six probe pressures; empty if neither.
+std::vector<double> pressure_difference(const CompareTable& t) {
+  const int c = t.find({"pressure_difference", "delta_p", "dp"});
+  if (c >= 0) return t.columns[c];
+  std::array<int, 6> p{};
+  for (int k = 0; k < 6; ++k) {
+    p[k] = t.find({fmt::format("probe_{:03d}/pressure", k)});
+    if (p[k] < 0) return {};
+  }
+  std::vector<double> out(t.lines.size());
+  for (std::size_t r = 0; r < out.size(); ++r)
+    out[r] = rim_pressure(probe_distance, {t.columns[p[0]][r], t.columns[p[1]][r], t.columns[p[2]][r]}) -
+             rim_pressure(probe_distance, {t.columns[p[3]][r], t.columns[p[4]][r], t.columns[p[5]][r]});
+  return out;
+}
+
+const std::vector<std::string> drag_names{"drag_coefficient", "c_d", "cd", "body_000/drag_coefficient"};
+const std::vector<std::string> lift_names{"lift_coefficient", "c_l", "cl", "body_000/lift_coefficient"};
+
+struct SteadyFigures { double drag, lift, dp; };
+
+SteadyFigures steady_figures(const std::string& path) {
+  const CompareTable t = read_compare_csv(path);
+  if (t.lines.empty()) throw InputError(path + ": no data rows");
+  const int cd = column(t, drag_names, true, "drag_coefficient");
+  const int cl = column(t, lift_names, true, "lift_coefficient");
+  const std::vector<double> dp = pressure_difference(t);
+  return {t.columns[cd].back(), t.columns[cl].back(), dp.empty() ? NAN : dp.back()};
+}
+
+PeriodicForces periodic_figures(const std::string& path) {
+  const CompareTable t = read_compare_csv(path);
+  const int ct = column(t, {"time", "t"}, true, "time");
+  const int cd = column(t, drag_names, true, "drag_coefficient");
+  const int cl = column(t, lift_names, true, "lift_coefficient");
+  if (t.lines.size() < 10) throw InputError(path + ": a force history needs at least 10 rows");
+  require_increasing(t, ct);
+  const std::vector<double>& time = t.columns[ct];
+  try {
+    return periodic_forces(time, t.columns[cd], t.columns[cl], pressure_difference(t), time.back() - periodic_window,
+                           diameter, mean_speed_2d2);
+  } catch (const std::runtime_error& e) {
+    throw InputError(path + ": " + e.what() + " (the last " + fmt::format("{:g}", periodic_window) +
+                     " time units are measured)");
+  }
+}
+
+}  // namespace
+
+int compare_dfg_steady(const std::vector<std::string>& files, const std::string& validation_dir) {
+  if (files.size() != 1) throw InputError("dfg_cylinder_2d1: give exactly one CSV file (drag_coefficient, lift_coefficient[, pressure_difference])");
+  const std::string dir = validation_dir + "/dfg_cylinder_2d1/reference/";
+  const SteadyFigures f = steady_figures(files[0]);
+  const SteadyFigures own = steady_figures(dir + "ibms_dfg_2d1.csv");
+  const double drag_ref = validation::reference_value(dir + "dfg_2d1.csv", "drag_coefficient");
+  std::printf("ibms compare dfg_cylinder_2d1: %s\n", files[0].c_str());
+  Verdict::header();
+  Verdict verdict;
+  verdict.line(fmt::format("|c_D / {:.6g} (John & Matthies 2001) - 1|", drag_ref), steady_drag_tolerance,
+               std::abs(f.drag / drag_ref - 1));
+  verdict.line(fmt::format("|c_D / {:.6g} (ibms reference) - 1|", own.drag), steady_drag_tolerance,
+               std::abs(f.drag / own.drag - 1));
+  Verdict::info("c_D", f.drag, drag_ref);
+  Verdict::info("c_L", f.lift, validation::reference_value(dir + "dfg_2d1.csv", "lift_coefficient"));
+  if (!std::isnan(f.dp)) Verdict::info("Delta p", f.dp, validation::reference_value(dir + "dfg_2d1.csv", "pressure_difference"));
+  std::printf("dfg_cylinder_2d1: %s\n", verdict.pass ? "pass" : "FAIL");
+  return verdict.pass ? 0 : 1;
+}
+
+int compare_dfg_periodic(const std::vector<std::string>& files, const std::string& validation_dir) {
+  if (files.size() != 1) throw InputError("dfg_cylinder_2d2: give exactly one CSV file (time, drag_coefficient, lift_coefficient[, pressure_difference])");
+  const std::string dir = validation_dir + "/dfg_cylinder_2d2/reference/";
+  const PeriodicForces f = periodic_figures(files[0]);
+  const PeriodicForces own = periodic_figures(dir + "ibms_dfg_2d2_forces.csv");
+  const std::string ref = dir + "dfg_2d2.csv";
+  const double st_ref = validation::reference_value(ref, "strouhal_number");
+  const double cd_ref = validation::reference_value(ref, "drag_coefficient_max");
+  std::printf("ibms compare dfg_cylinder_2d2: %s (%d lift periods in the last %g time units)\n", files[0].c_str(),
+              f.periods, periodic_window);
+  Verdict::header();
+  Verdict verdict;
+  verdict.line(fmt::format("|St / {:.4g} (Schaefer & Turek 1996) - 1|", st_ref), strouhal_tolerance, std::abs(f.strouhal / st_ref - 1));
+  verdict.line(fmt::format("|max c_D / {:.4g} (Schaefer & Turek 1996) - 1|", cd_ref), drag_max_tolerance,
+               std::abs(f.drag_max / cd_ref - 1));
+  verdict.line(fmt::format("|St / {:.5g} (ibms reference) - 1|", own.strouhal), strouhal_tolerance, std::abs(f.strouhal / own.strouhal - 1));
+  verdict.line(fmt::format("|max c_D / {:.5g} (ibms reference) - 1|", own.drag_max), drag_max_tolerance,
+               std::abs(f.drag_max / own.drag_max - 1));
+  Verdict::info("max c_L", f.lift_max, validation::reference_value(ref, "lift_coefficient_max"));
+  if (!std::isnan(f.pressure_difference_half_period))
+    Verdict::info("Delta p half a period after max c_L", f.pressure_difference_half_period,
+                  validation::reference_value(ref, "pressure_difference_half_period"));
+  std::printf("dfg_cylinder_2d2: %s\n", verdict.pass ? "pass" : "FAIL");
+  return verdict.pass ? 0 : 1;
+}
+
+}  // namespace ibms

@@ -1,0 +1,86 @@
+// Force-history figures (force_metrics.hpp).
+#include "sim/force_metrics.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace ibms {
+
+double rim_pressure(const std::array<double, 3>& d, const std::array<double, 3>& p) {
+  double sum = 0.0;
+  for (int k = 0; k < 3; ++k) {
+    double weight = 1.0;
+    for (int m = 0; m < 3; ++m)
+      if (m != k) weight *= (0.0 - d[m]) / (d[k] - d[m]);
+    sum += weight * p[k];
+  }
+  return sum;
+}
+
+PeriodicForces periodic_forces(const std::vector<double>& time, const std::vector<double>& drag,
+                               const std::vector<double>& lift, const std::vector<double>& dp, double t_from,
+                               double length, double speed) {
+  PeriodicForces out;
+  std::size_t rows = time.size();
+  if (rows >= 3 && time[rows - 1] - time[rows - 2] < 0.9 * (time[rows - 2] - time[rows - 3])) {
+    --rows;
+    out.dropped_last_row = true;
+  }
+  double mean = 0.0;
+  int n = 0;
+  for (std::size_t k = 0; k < rows; ++k)
+    if (time[k] >= t_from) {
+      mean += lift[k];
+      ++n;
+      out.drag_max = std::isnan(out.drag_max) ? drag[k] : std::max(out.drag_max, drag[k]);
+      out.lift_max = std::isnan(out.lift_max) ? lift[k] : std::max(out.lift_max, lift[k]);
+    }
+  if (n < 10) throw std::runtime_error("fewer than 10 rows after t = " + std::to_string(t_from));
+  mean /= n;
+  std::vector<double> up;  // upward crossings of lift - mean, linearly interpolated
+  for (std::size_t k = 1; k < rows; ++k) {
+    if (time[k - 1] < t_from) continue;
+    const double a = lift[k - 1] - mean, b = lift[k] - mean;
+    if (a < 0.0 && b >= 0.0) up.push_back(time[k - 1] + (time[k] - time[k - 1]) * (-a) / (b - a));
+  }
+  if (up.size() < 3) throw std::runtime_error("fewer than two lift periods after t = " + std::to_string(t_from));
+  out.periods = static_cast<int>(up.size()) - 1;
+  const double period = (up.back() - up.front()) / out.periods;
+  out.strouhal = length / (period * speed);
+  if (dp.size() >= rows) {
+    std::size_t last_max = 0;
+    for (std::size_t k = 1; k + 1 < rows; ++k)
+      if (time[k] >= t_from && lift[k] >= lift[k - 1] && lift[k] >= lift[k + 1] && time[k] + 0.5 * period <= time[rows - 1])
+        last_max = k;
+    if (last_max > 0) {
+      const double target = time[last_max] + 0.5 * period;
+      for (std::size_t k = last_max; k + 1 < rows; ++k)
+        if (time[k + 1] >= target) {
+          const double w = (target - time[k]) / (time[k + 1] - time[k]);
+          out.pressure_difference_half_period = (1 - w) * dp[k] + w * dp[k + 1];
+          break;
+        }
+    }
+  }
+  return out;
+}
+
+Richardson richardson(double h1, double h2, double h3, double f1, double f2, double f3) {
+  Richardson r;
+  const double r21 = h2 / h1, r32 = h3 / h2, e21 = f2 - f1, e32 = f3 - f2;
+  if (e21 == 0.0 || e32 / e21 <= 0.0) return r;  // oscillatory or converged: no order
+  double p = std::log(std::abs(e32 / e21)) / std::log(r21);
+  for (int it = 0; it < 200; ++it) {  // fixed point of Celik et al. (2008) eq. 3 (s = 1)
+    const double q = std::log((std::pow(r21, p) - 1.0) / (std::pow(r32, p) - 1.0));
+    const double next = std::abs(std::log(std::abs(e32 / e21)) + q) / std::log(r21);
+    const bool done = std::abs(next - p) < 1e-12;
+    p = next;
+    if (done) break;
+  }
+  r.order = p;
+  r.value = (std::pow(r21, p) * f1 - f2) / (std::pow(r21, p) - 1.0);
+  r.gci = 1.25 * std::abs((f1 - f2) / f1) / (std::pow(r21, p) - 1.0);
+  return r;
+}
+
+}  // namespace ibms

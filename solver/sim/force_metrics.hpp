@@ -1,0 +1,43 @@
+// Figures of a body's force history used by the DFG cylinder checks (validation/dfg_cylinder_*)
+// and by `ibms compare` for those cases: one definition for both (issue 15 item 3).
+//  - rim_pressure: the pressure at a point of a body's rim from three probes outside it along the
+//    normal, by the quadratic through them evaluated at the rim (the diffuse immersed boundary
+//    smears the pressure jump over ~3 cells, so the value at the rim itself is a mixture);
+//  - periodic_forces: maxima of c_D and c_L, the Strouhal number from the mean period between
+//    upward crossings of c_L - mean(c_L), and Delta p half a period after the last lift maximum;
+//  - richardson: observed order, extrapolated value and fine-grid GCI over three grids with any
+//    refinement ratios (Celik et al. 2008, J. Fluids Eng. 130, 078001).
+#pragma once
+#include <array>
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace ibms {
+
+// p at distance 0 from p(d_k), k = 0, 1, 2 (distinct distances) [pressure].
+double rim_pressure(const std::array<double, 3>& distance, const std::array<double, 3>& pressure);
+
+struct PeriodicForces {
+  double drag_max = NAN, lift_max = NAN;  // [-]
+  double strouhal = NAN;                  // f L / U [-]
+  double pressure_difference_half_period = NAN;  // NaN without a Delta p series [pressure]
+  int periods = 0;                        // whole lift periods measured
+  bool dropped_last_row = false;          // the final, shortened step was left out
+};
+
+// Over the rows with time >= t_from (time increasing, one row per step). A last row whose step is
+// below 0.9 of the one before (a run shortened to land on its end time) is left out: the direct
+// forcing's force carries the previous step's rim slip over dt and jumps there. Throws
+// std::runtime_error with fewer than 10 rows or two lift periods in the window.
+PeriodicForces periodic_forces(const std::vector<double>& time, const std::vector<double>& drag,
+                               const std::vector<double>& lift, const std::vector<double>& pressure_difference,
+                               double t_from, double length, double speed);
+
+struct Richardson {
+  double order = NAN, value = NAN, gci = NAN;  // NaN order and value: differences of changing sign
+};
+// f1 on the finest grid (spacing h1), f3 on the coarsest.
+Richardson richardson(double h1, double h2, double h3, double f1, double f2, double f3);
+
+}  // namespace ibms
