@@ -50,8 +50,9 @@ namespace {
 constexpr double pi = 3.14159265358979323846;
 constexpr double runaway_factor = 1e6;  // a run whose energy passes this many bounds is cut
 // A velocity component above this many U is unstable too: a grid-scale oscillation confined to a
-// few cells can grow far while the energy stays within its bound (the stable runs of the maps stay
-// below 1.42 U, including the transient of the impulsively started lid).
+// few cells can grow far while the energy stays within its bound (the stable runs of the 64^2 maps
+// stay below 1.42 U, including the transient of the impulsively started lid, apart from marginal
+// points: docs/fluid-stability.md).
 constexpr double max_speed_ratio = 2.0;
 
 struct Point {

@@ -31,4 +31,16 @@ inline double ab2_cn_max_amplification(double cfl, double viscous_number, int n_
   return largest;
 }
 
+// Largest CFL number C stable at cell Reynolds number Re_h = U h / nu, i.e. with D = C / Re_h
+// (bisection; the stable C at one Re_h form one interval [0, limit]: docs/fluid-stability.md) [-].
+inline double ab2_cn_cfl_limit(double cell_reynolds) {
+  double low = 0.0, high = 8.0;
+  for (int k = 0; k < 40; ++k) {
+    const double mid = 0.5 * (low + high);
+    if (ab2_cn_max_amplification(mid, mid / cell_reynolds, /*n_angles=*/500) > 1.0 + 1e-12) high = mid;
+    else low = mid;
+  }
+  return low;
+}
+
 }  // namespace ibms
