@@ -136,10 +136,13 @@ _SYMBOL = {"stable": ("o", "tab:green"), "unstable": ("^", "tab:orange"), "blow-
 
 def stability_section(out, build, fig_dir):
     out.append(r"\section{Stability maps}")
-    files = sorted(glob.glob(os.path.join(build, "bench", "stability_*.csv")))
+    all_files = sorted(glob.glob(os.path.join(build, "bench", "stability_*.csv")))
+    files = [f for f in all_files if not os.path.basename(f).startswith("stability_fluid_")]
+    fluid_files = [f for f in all_files if f not in files]
     if not files:
         out.append(r"\emph{Not run: no \texttt{bench/stability\_*.csv} (run "
                    r"\texttt{bench/bench\_stability}).}" + "\n")
+        fluid_stability_maps(out, fluid_files, fig_dir)
         return
     out.append("From \\texttt{bench/bench\\_stability}: fluid time step against spring or DEM "
                "stiffness, with the solid sub-stepped automatically (METHOD.md \\S5.3) or advanced "
@@ -185,6 +188,105 @@ def stability_section(out, build, fig_dir):
             out.append(r"\noindent Example stop message: \texttt{%s}" % esc(blow[:220]) + "\n")
     out.append(longtable(r"llrrrrr", ["map", "solid steps", "runs", "stable", "unstable", "blow-up",
                                       "max sub-steps"], table, caption="Stability map summary."))
+    fluid_stability_maps(out, fluid_files, fig_dir)
+
+
+_FLUID_SYMBOL = {"stable": ("o", "tab:green"), "unstable": ("^", "tab:orange"), "stopped": ("x", "tab:red")}
+
+
+def fluid_measured_limits(rows, mode="no_cfl_guard"):
+    """Per cell Reynolds number of one fluid map: the largest CFL number stable together with every
+    smaller one, the smallest CFL number that is not stable (None if all are), and the measured
+    CFL number dt max(|u|/dx + |v|/dy) of that largest stable run. Rows as read by _rows."""
+    limits = OrderedDict()
+    by_re = OrderedDict()
+    for r in rows:
+        if r["mode"] == mode:
+            by_re.setdefault(_float(r["cell_reynolds"]), []).append(r)
+    for re_h in sorted(by_re):
+        points = sorted(by_re[re_h], key=lambda r: _float(r["cfl"]))
+        stable, first_bad, measured = None, None, None
+        for r in points:
+            if r["outcome"] != "stable":
+                first_bad = _float(r["cfl"])
+                break
+            stable, measured = _float(r["cfl"]), _float(r["max_cfl_measured"])
+        limits[re_h] = (stable, first_bad, measured)
+    return limits
+
+
+def fluid_stability_maps(out, files, fig_dir):
+    """The fluid's maps (bench/bench_fluid_stability: BUILD/bench/stability_fluid_<case>.csv): CFL
+    number against cell Reynolds number, with the von Neumann limit of AB2 + CN (central
+    differences) from fluid_stability_theory.py, the analysis of docs/fluid-stability.md."""
+    if not files:
+        return
+    import fluid_stability_theory as theory  # numpy; only needed when there are fluid maps
+    out.append(r"\subsection{Fluid: CFL number against cell Reynolds number}")
+    out.append("From \\texttt{bench/bench\\_fluid\\_stability} (docs/fluid-stability.md): fixed time step, "
+               "$C = U\\Delta t/h$ against $\\mathrm{Re}_h = Uh/\\nu$ (viscous number "
+               "$\\nu\\Delta t/h^2 = C/\\mathrm{Re}_h$). Left: the default blow-up guard "
+               "(\\texttt{run.max\\_cfl}) and the non-finite check; right: the non-finite check only. "
+               "Maps named \\texttt{\\_adaptive}: the adaptive step at that \\texttt{run.cfl}. "
+               "Circles: stable (finite, no velocity component above $2U$, kinetic energy within the bound the "
+               "file states); triangles: unstable (a bound crossed, no check stopped the run); crosses: stopped by "
+               "the solver's check. Line: von Neumann limit of AB2 convection + Crank--Nicolson diffusion for a "
+               "constant velocity $U$, stable below it.\n")
+    cfl_axis = [0.05 + 0.01 * k for k in range(196)]
+    boundary = theory.stability_boundary(cfl_axis)
+    table = []
+    for f in files:
+        rows = _rows(f) or []
+        if not rows:
+            continue
+        name = os.path.basename(f)[len("stability_fluid_"):-len(".csv")]
+        modes = [m for m in ("default_guard", "no_cfl_guard") if any(r["mode"] == m for r in rows)]
+        fig, axes = plt.subplots(1, len(modes), figsize=(3.3 * len(modes), 2.8), sharey=True, squeeze=False)
+        for ax, mode in zip(axes[0], modes):
+            for kind, (marker, colour) in _FLUID_SYMBOL.items():
+                pts = [(_float(r["cfl"]), _float(r["cell_reynolds"])) for r in rows
+                       if r["mode"] == mode and r["outcome"] == kind]
+                if pts:
+                    ax.plot([p[0] for p in pts], [p[1] for p in pts], marker, color=colour, ms=5, ls="none",
+                            label=kind)
+            ax.plot([b[0] for b in boundary], [b[1] for b in boundary], "k-", lw=0.8, label="von Neumann")
+            ax.set_yscale("log")
+            ax.set_xlim(0.0, max(_float(r["cfl"]) for r in rows) * 1.05)
+            ax.set_ylim(min(_float(r["cell_reynolds"]) for r in rows) / 1.5,
+                        max(_float(r["cell_reynolds"]) for r in rows) * 1.5)
+            ax.set_title("%s: %s" % (name, mode.replace("_", " ")), fontsize=8)
+            ax.set_xlabel("run.cfl (adaptive $\\Delta t$)" if "adaptive" in name else "CFL number $U\\Delta t/h$")
+            ax.legend(fontsize=5, framealpha=0.6)
+        axes[0][0].set_ylabel("$\\mathrm{Re}_h = Uh/\\nu$")
+        path = os.path.join(fig_dir, "stability_fluid_%s.pdf" % name)
+        fig.tight_layout()
+        fig.savefig(path)
+        plt.close(fig)
+        out.append(r"{\small %s.}" % esc("; ".join(_comments(f))) + "\n")
+        out.append(figure(path, "Fluid stability map \\texttt{%s} (\\texttt{bench/stability\\_fluid\\_%s.csv})." %
+                          (esc(name), esc(name)), height=0.3))
+        for mode in modes:
+            sel = [r for r in rows if r["mode"] == mode]
+            count = lambda k: sum(r["outcome"] == k for r in sel)  # noqa: E731
+            theory_unstable = sum(_float(r["theory_max_g"]) > 1 + 1e-12 for r in sel)
+            table.append([r"\texttt{%s}" % esc(name), esc(mode.replace("_", " ")), str(len(sel)),
+                          str(count("stable")), str(count("unstable")), str(count("stopped")), str(theory_unstable)])
+        limits = fluid_measured_limits(rows)
+        out.append(longtable("rrrrr", ["$\\mathrm{Re}_h$", "largest stable", "(its measured CFL)", "first not stable",
+                                       "von Neumann limit"],
+                             [[num(re_h, 4), num(lim[0], 3) if lim[0] is not None else "--",
+                               num(lim[2], 3) if lim[2] is not None else "--",
+                               num(lim[1], 3) if lim[1] is not None else "--", num(theory.cfl_limit(re_h), 3)]
+                              for re_h, lim in limits.items()],
+                             caption="\\texttt{%s} without the CFL guard: CFL numbers of the map (largest stable with "
+                                     "every smaller one stable), the measured CFL number "
+                                     "$\\Delta t\\max(|u|/\\Delta x + |v|/\\Delta y)$ of that run, and the "
+                                     "von Neumann limit at the same $\\mathrm{Re}_h$." % esc(name)))
+        stop = next((r["message"] for r in rows if r["outcome"] == "stopped" and r["message"]), None)
+        if stop:
+            out.append(r"\noindent Example stop message: \texttt{%s}" % esc(stop[:220]) + "\n")
+    out.append(longtable(r"llrrrrr", ["map", "mode", "points", "stable", "unstable", "stopped",
+                                      "von Neumann unstable"], table, caption="Fluid stability map summary."))
 
 
 def overhead_section(out, build):

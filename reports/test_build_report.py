@@ -2,7 +2,7 @@
 """ctest `report_builds_from_synthetic_outputs`: builds the report from a tiny synthetic build
 directory (results.csv with a rerun duplicate and LaTeX special characters, one centre-line
 profile pair, one convergence table, a ctest log, a kernel-moment table, a work-precision table,
-a stability map, a stage-cost table, and the solid tests' energy, restitution and contact-history
+a stability map (and a fluid one), a stage-cost table, and the solid tests' energy, restitution and contact-history
 tables) and checks that a PDF comes out.
 usage: test_build_report.py WORK_DIR     exit 0 pass, 1 fail, 77 skipped (no LaTeX / modules)"""
 import os
@@ -63,6 +63,15 @@ with open(os.path.join(work, "bench", "stability_synthetic.csv"), "w") as f:
     f.write('auto,0.001,1000,12,stable,0.01,1,0,""\n')
     f.write('fixed,0.001,1000,1,blow-up,0.01,1,0,"blow-up at step 3, t = 0.003: body 0 point 1 left the box at x = -1_0"\n')
     f.write('fixed,0.0001,1000,1,unstable,0.6,1,0,"rim area changed by more than 50 % at step 7"\n')
+with open(os.path.join(work, "bench", "stability_fluid_synthetic.csv"), "w") as f:
+    f.write("# bench_fluid_stability synthetic: CFL number U dt / h against cell Reynolds number U h / nu\n")
+    f.write("mode,cfl,cell_reynolds,viscous_number,dt,nu,theory_max_g,steps,outcome,max_cfl_measured,"
+            "max_energy_ratio,end_energy_ratio,late_energy_ratio,max_speed,message\n")
+    f.write('default_guard,0.5,4,0.125,0.0078,0.0039,1.0,1280,stable,0.6,0.1,0.1,1,1,""\n')
+    f.write('default_guard,1.5,4,0.375,0.023,0.0039,1.8,3,stopped,1.2,0.1,0.1,1,1,'
+            '"blow-up at step 3, t = 0.07: CFL number 1.2 exceeds run.max_cfl = 1 in cell (3, 63) at x = 0.05_1"\n')
+    f.write('no_cfl_guard,1.5,4,0.375,0.023,0.0039,1.8,300,unstable,9,2,2,5,3,"kinetic energy above the bound"\n')
+    f.write('no_cfl_guard,0.5,4,0.125,0.0078,0.0039,1.0,1280,stable,0.6,0.1,0.1,1,1,""\n')
 with open(os.path.join(work, "bench", "overhead.csv"), "w") as f:
     f.write("scene,stage,seconds_per_step,calls\nfluid_only_cavity_128,simulation_step,,0.0014\n"
             "fluid_only_cavity_128,bare_fluid_solver_step,,0.00136\nfluid_only_cavity_128,ratio,,1.03\n"

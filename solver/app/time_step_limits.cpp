@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "fluid/time_scheme_stability.hpp"
 #include "sim/body_update.hpp"
 #include "sim/diagnostics.hpp"
 #include "solid/spring_dashpot.hpp"
@@ -111,6 +112,21 @@ std::string describe_time_step_limits(const Scene& scene, const Simulation& sim)
   if (std::isfinite(dt))
     text += fmt::format("  viscous number nu dt / h^2 = {:.3g} (Crank-Nicolson: no limit)\n",
                         scene.fluid.kinematic_viscosity * dt / (h * h));
+  // AB2 convection is stable only with enough CN diffusion: the CFL limit of a uniform flow along a
+  // grid axis at the scene's cell Reynolds number (docs/fluid-stability.md). A note, not a warning:
+  // the measured cavity is stable far beyond it, a periodic shear layer to 1.0-1.4 times it.
+  const double speed = initial_speed_scale(scene);
+  if (speed > 0 && scene.fluid.kinematic_viscosity > 0) {
+    const double cell_reynolds = speed * h / scene.fluid.kinematic_viscosity;
+    const double cfl_limit = ab2_cn_cfl_limit(cell_reynolds);
+    text += fmt::format("  cell Reynolds number U h / nu = {:.3g}: von Neumann limit of AB2 + CN (central) CFL <= {:.3g}\n",
+                        cell_reynolds, cfl_limit);
+    const double cfl = fixed ? dt * speed / h : scene.run.cfl;
+    if (cfl > cfl_limit)
+      text += fmt::format("note: CFL {:.3g} is above that limit: a flow carried at speed U along a grid axis may go "
+                          "unstable (lower run.{}; docs/fluid-stability.md)\n",
+                          cfl, fixed ? "time_step" : "cfl");
+  }
   if (sim.has_bodies()) {
     double solid_substep = HUGE_VAL;
     for (const MassSpringBody& body : sim.bodies()) solid_substep = std::min(solid_substep, stable_substep(body, 0.5));

@@ -2,7 +2,8 @@
 // advective CFL limit, the explicit viscous bound (not binding: Crank-Nicolson), marker travel,
 // per body the spring period and the damping limit of symplectic Euler, the DEM contact duration;
 // the sub-steps the solid will take, and a WARNING line wherever a fixed time step exceeds the
-// safe fraction of a limit that is not sub-stepped.
+// safe fraction of a limit that is not sub-stepped; the von Neumann CFL limit of AB2 + CN at the
+// scene's cell Reynolds number, with a note when the step's CFL number is above it.
 #pragma once
 #include <string>
 #include <vector>

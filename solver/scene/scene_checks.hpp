@@ -1,5 +1,5 @@
-// Scene checks that involve several sections (run after every key has been read on its own):
-// wall speeds on periodic sides, bodies inside the box and not overlapping, contact radius,
+// Scene checks that involve several keys (run after every key has been read on its own): the
+// adaptive step's run.cfl below the guard run.max_cfl, wall speeds on periodic sides, bodies inside the box and not overlapping, contact radius,
 // and a writable output directory.
 #pragma once
 #include "scene/scene.hpp"

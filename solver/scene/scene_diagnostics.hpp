@@ -22,6 +22,11 @@ class SceneDiagnostics {
   // Where the value of `key_path` was written (used by fail()).
   void remember(const std::string& key_path, const toml::source_region& where);
 
+  // Whether the scene text or a --set gave `key_path` a value (false: the default).
+  bool was_given(const std::string& key_path) const {
+    return places_.count(key_path) > 0 || override_texts_.count(key_path) > 0;
+  }
+
   // Throw InputError about `key_path` at its remembered place (or the override, or no place).
   [[noreturn]] void fail(const std::string& key_path, const std::string& reason) const;
   // Throw InputError about `key_path` at `where`, unless the value came from an override.

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Claims (issue 5 item 4): `ibms info` prints every time-step limit (CFL, viscous, marker travel,
 # spring period, damping, contact duration) and the solid sub-steps it will use; it warns when a
-# fixed time step exceeds the safe fraction of the CFL limit, and not for the adaptive step.
+# fixed time step exceeds the safe fraction of the CFL limit, and not for the adaptive step; it gives
+# the von Neumann CFL limit at the scene's cell Reynolds number and a note when run.cfl is above it.
 set -u
 ibms=$1; cavity=$2; settling=$3
 failures=0
@@ -15,6 +16,14 @@ work=$(mktemp -d); trap 'rm -rf "$work"' EXIT
 expect "cavity: CFL limit listed" "$work/adaptive.txt" "^  CFL \(advective.* 0.0078" yes
 expect "cavity: viscous limit listed" "$work/adaptive.txt" "^  viscous" yes
 expect "cavity adaptive: no warning" "$work/adaptive.txt" "WARNING" no
+# Re_h = 100 / 128: von Neumann CFL limit 1.27 (docs/fluid-stability.md), above cfl 0.5: no note.
+expect "cavity: von Neumann limit listed" "$work/adaptive.txt" "cell Reynolds number U h / nu = 0.781: .*CFL <= 1.27" yes
+expect "cavity: cfl within the von Neumann limit" "$work/adaptive.txt" "^note: CFL" no
+# Re_h = 78.1: limit 0.413, below cfl 0.5: a note (not a warning).
+"$ibms" info "$cavity" --set domain.cells_x=128 --set domain.cells_y=128 --set fluid.kinematic_viscosity=0.0001 \
+  > "$work/high_re.txt" || failures=$((failures + 1))
+expect "cavity Re_h 78: note on the von Neumann limit" "$work/high_re.txt" "^note: CFL 0.5 is above that limit" yes
+expect "cavity Re_h 78: no warning" "$work/high_re.txt" "WARNING" no
 # dt = 0.05 at h = 1/128, lid speed 1: CFL 6.4, far above the safe fraction 0.5.
 "$ibms" info "$cavity" --set domain.cells_x=128 --set domain.cells_y=128 --set run.time_step=0.05 > "$work/fixed.txt" \
   || failures=$((failures + 1))

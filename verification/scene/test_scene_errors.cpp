@@ -70,6 +70,8 @@ std::vector<BadScene> bad_scenes() {
       {"negative time step", good_scene_with("end_time = 2.5", "end_time = 2.5\ntime_step = -0.001"), {}, "run.time_step"},
       {"negative end time", good_scene_with("end_time = 2.5", "end_time = -1.0"), {}, "run.end_time"},
       {"cfl above 2", good_scene_with("end_time = 2.5", "end_time = 2.5\ncfl = 3"), {}, "run.cfl"},
+      {"adaptive cfl at run.max_cfl", good_scene_with("end_time = 2.5", "end_time = 2.5\ncfl = 1.0"), {}, "run.cfl"},
+      {"run.max_cfl below the adaptive cfl (--set)", good_scene_text(), {"run.max_cfl=0.4"}, "run.max_cfl"},
       {"zero max_time_step", good_scene_with("end_time = 2.5", "end_time = 2.5\nmax_time_step = 0"), {}, "run.max_time_step"},
       {"body outside the box", good_scene_with("centre = [0.3, 0.5]", "centre = [1.5, 0.5]"), {}, "bodies.0.centre"},
       {"body overlapping a wall", good_scene_with("centre = [0.3, 0.5]", "centre = [0.05, 0.5]"), {}, "bodies.0.centre"},
@@ -154,4 +156,23 @@ BOOST_AUTO_TEST_CASE(error_points_at_line_and_column_of_the_bad_value) {
     BOOST_TEST(std::string(error.what()).find("bad_scene.toml:10:23: fluid.kinematic_viscosity: ") == 0u,
                error.what());
   }
+}
+
+BOOST_AUTO_TEST_CASE(adaptive_cfl_not_below_max_cfl_names_both_keys_and_a_fixed_step_is_accepted) {
+  // Issue 15 item 7: with the adaptive step, run.cfl >= run.max_cfl would let the guard stop a sound run.
+  std::string message;
+  try {
+    ibms::read_scene_string(good_scene_with("end_time = 2.5", "end_time = 2.5\ncfl = 1.2\nmax_cfl = 1.0"), source_name);
+  } catch (const ibms::InputError& error) {
+    message = error.what();
+  }
+  BOOST_TEST_MESSAGE(message);
+  BOOST_TEST(message.find("bad_scene.toml:") == 0u);
+  BOOST_TEST(message.find("run.cfl") != std::string::npos);
+  BOOST_TEST(message.find("run.max_cfl") != std::string::npos);
+  // run.cfl plays no part with a fixed run.time_step, and below run.max_cfl it is fine.
+  BOOST_CHECK_NO_THROW(ibms::read_scene_string(
+      good_scene_with("end_time = 2.5", "end_time = 2.5\ntime_step = 0.001\ncfl = 1.2\nmax_cfl = 1.0"), source_name));
+  BOOST_CHECK_NO_THROW(ibms::read_scene_string(
+      good_scene_with("end_time = 2.5", "end_time = 2.5\ncfl = 0.9\nmax_cfl = 1.0"), source_name));
 }
