@@ -5,13 +5,13 @@
 #   validation/cavity_swelling_particles/reference/ibms_trajectories_{nonswelling,swelling}.csv
 #   validation/cavity_deformable_objects/reference/ibms_deformation_k{10,100}.csv
 #     (the body cases at their validation grid, 100 x 100, as their ctest runs them)
-#   validation/dfg_cylinder_2d1/reference/ibms_dfg_2d1.csv          (D/h = 80, the slow label's finest)
-#   validation/dfg_cylinder_2d2/reference/ibms_dfg_2d2_forces.csv   (D/h = 40, t >= 8)
+#   validation/dfg_cylinder_2d1/reference/ibms_dfg_2d1.csv          (D/h = 40, the validation label's finest)
+#   validation/dfg_cylinder_2d2/reference/ibms_dfg_2d2_forces.csv   (D/h = 30, t >= 8)
 # usage: scripts/make-compare-references.sh IBMS_BINARY WORK_DIR
 # Runs that already have their output in WORK_DIR (<case>_<N>.h5 and its CSVs) are not rerun.
 # CAVITY_CASES="..." restricts the cavity cases; SKIP_SETTLING=1 skips the settling disk;
 # ONLY_BODIES=1 makes only the two body cases' references; ONLY_DFG=1 only the two DFG cases' (their
-# runs WORK_DIR/dfg_2d1_80 and dfg_2d2_40, e.g. links to build/validation/dfg_cylinder_*/ outputs). Their runs are WORK_DIR/<case>_<variant>.h5
+# runs WORK_DIR/dfg_2d1_40 and dfg_2d2_30, e.g. links to build/validation/dfg_cylinder_*/ outputs). Their runs are WORK_DIR/<case>_<variant>.h5
 # (variant nonswelling|swelling|k10|k100); links to the ctest outputs are reused, e.g.
 # build/validation/cavity_deformable_objects/k10{.h5,_bodies.csv} linked as
 # WORK_DIR/cavity_deformable_objects_k10{.h5,_bodies.csv}.
@@ -70,10 +70,10 @@ dfg_run() {  # case scene_dir n -> runs unless WORK_DIR has its _bodies.csv
   fi
 }
 if [[ ${ONLY_BODIES:-0} != 1 ]]; then
-  dfg_run dfg_2d1 dfg_cylinder_2d1 80
-  dfg_run dfg_2d2 dfg_cylinder_2d2 40
-  for spec in "dfg_2d1_80 dfg_cylinder_2d1/reference/ibms_dfg_2d1.csv steady" \
-              "dfg_2d2_40 dfg_cylinder_2d2/reference/ibms_dfg_2d2_forces.csv periodic"; do
+  dfg_run dfg_2d1 dfg_cylinder_2d1 40
+  dfg_run dfg_2d2 dfg_cylinder_2d2 30
+  for spec in "dfg_2d1_40 dfg_cylinder_2d1/reference/ibms_dfg_2d1.csv steady" \
+              "dfg_2d2_30 dfg_cylinder_2d2/reference/ibms_dfg_2d2_forces.csv periodic"; do
     read -r run target kind <<< "$spec"
     made_by=$(/usr/bin/python3 -c "import h5py; f = h5py.File('$work/$run.h5', 'r'); print(f.attrs['git_commit'])")
     /usr/bin/python3 - "$work/${run}_bodies.csv" "$src/validation/$target" "$kind" "$made_by" "$commit" <<'PY'
@@ -88,23 +88,16 @@ p = [col["probe_%03d/pressure" % k] for k in range(6)]
 dp = rim(p[0], p[1], p[2]) - rim(p[3], p[4], p[5])
 with open(dst, "w") as f:
     what = "the steady coefficients (last row)" if kind == "steady" else "the force history for t >= 8, every step"
-    f.write("# ibms reference for 'ibms compare' (docs/compare.md): %s of ibms's own run %s
-" % (what, src.split("/")[-1]))
-    f.write("# (validation/<case>/scene.toml at the grid in the name: D/h), ibms commit %s; written by
-" % made_by)
-    f.write("# scripts/make-compare-references.sh at commit %s. Delta p from the probes extrapolated to the rim.
-" % commit)
+    f.write("# ibms reference for 'ibms compare' (docs/compare.md): %s of ibms's own run %s\n" % (what, src.split("/")[-1]))
+    f.write("# (validation/<case>/scene.toml at the grid in the name: D/h), ibms commit %s; written by\n" % made_by)
+    f.write("# scripts/make-compare-references.sh at commit %s. Delta p from the probes extrapolated to the rim.\n" % commit)
     if kind == "steady":
-        f.write("drag_coefficient [-],lift_coefficient [-],pressure_difference [mass/(length time^2)]
-")
-        f.write("%.10g,%.10g,%.10g
-" % (col["body_000/drag_coefficient"][-1], col["body_000/lift_coefficient"][-1], dp[-1]))
+        f.write("drag_coefficient [-],lift_coefficient [-],pressure_difference [mass/(length time^2)]\n")
+        f.write("%.10g,%.10g,%.10g\n" % (col["body_000/drag_coefficient"][-1], col["body_000/lift_coefficient"][-1], dp[-1]))
     else:
-        f.write("time [time],drag_coefficient [-],lift_coefficient [-],pressure_difference [mass/(length time^2)]
-")
+        f.write("time [time],drag_coefficient [-],lift_coefficient [-],pressure_difference [mass/(length time^2)]\n")
         for k in np.nonzero(col["time"] >= 8.0)[0]:
-            f.write("%.10g,%.10g,%.10g,%.10g
-" % (col["time"][k], col["body_000/drag_coefficient"][k],
+            f.write("%.10g,%.10g,%.10g,%.10g\n" % (col["time"][k], col["body_000/drag_coefficient"][k],
                                                    col["body_000/lift_coefficient"][k], dp[k]))
 PY
   done

@@ -1,0 +1,52 @@
+#!/usr/bin/env bash
+# Claims (docs/compare.md, DFG cylinders): `ibms compare dfg_cylinder_2d1` gates c_D against the
+# published 5.57954 and against ibms's reference within 1 % (a value between passes, one 2 % off
+# fails, exit 1), and `ibms compare dfg_cylinder_2d2` recovers the Strouhal number and max c_D of a
+# synthetic force history (c_L = sin(2 pi f t), St = f D / U = 0.3 exactly; max c_D = 3.23 + 0.01)
+# with the same figures the case check uses, passes it against the published values, fails it when
+# the frequency is 2 % off; malformed files exit 2 naming the file and line.
+# usage: test_compare_dfg.sh IBMS VALIDATION_DIR
+set -u
+ibms=$1; validation=$2
+source "$(dirname "${BASH_SOURCE[0]}")/compare_test_lib.sh"  # expect_exit
+work=$(mktemp -d); trap 'rm -rf "$work"' EXIT
+cd "$work"
+failures=0
+run() { "$ibms" compare "$@" --validation-dir "$validation"; }
+
+# 2D-1: ibms's reference is 5.658 (+1.41 % from the published value): 5.62 is within 1 % of both.
+printf '# synthetic\nc_d,c_l,delta_p\n5.62,0.0106,0.1175\n' > within.csv
+expect_exit "2D-1 c_D 5.62 passes" 0 "dfg_cylinder_2d1: pass" run dfg_cylinder_2d1 within.csv
+printf 'drag_coefficient,lift_coefficient\n5.80,0.0106\n' > off.csv
+expect_exit "2D-1 c_D 5.80 fails against the published value" 1 "John & Matthies.*FAIL" run dfg_cylinder_2d1 off.csv
+expect_exit "2D-1 ibms's own reference accepted against itself" 1 "ibms reference\) - 1\|.* 0 .*pass" \
+  run dfg_cylinder_2d1 "$validation/dfg_cylinder_2d1/reference/ibms_dfg_2d1.csv"
+printf 'c_d\nabc\n' > bad.csv
+expect_exit "2D-1 non-number exits 2" 2 "bad.csv:2:" run dfg_cylinder_2d1 bad.csv
+printf 'c_l\n0.01\n' > nodrag.csv
+expect_exit "2D-1 missing drag column exits 2" 2 "nodrag.csv:1: .*drag_coefficient" run dfg_cylinder_2d1 nodrag.csv
+
+# 2D-2: 8 time units at dt = 1e-3 of c_L = sin(2 pi f t), c_D = 3.23 + 0.01 cos(4 pi f t), f = 3.
+history() {  # out, frequency
+  /usr/bin/python3 - "$1" "$2" <<'PY'
+import sys, math
+out, f = sys.argv[1], float(sys.argv[2])
+with open(out, "w") as h:
+    h.write("time,drag_coefficient,lift_coefficient\n")
+    for k in range(8001):
+        t = 4.0 + 1e-3 * k
+        h.write("%.6f,%.9f,%.9f\n" % (t, 3.23 + 0.01 * math.cos(4 * math.pi * f * t), math.sin(2 * math.pi * f * t + 0.3)))
+PY
+}
+history st.csv 3.0
+expect_exit "2D-2 St = 0.3 and max c_D = 3.24 pass against the published values" 1 \
+  "St / 0.3 \(Schaefer & Turek 1996\) - 1\|.*pass" run dfg_cylinder_2d2 st.csv
+grep -qE "max c_D / 3.23 \(Schaefer & Turek 1996\) - 1\|.*pass" out.txt ||
+  { echo "FAIL 2D-2 max c_D 3.24 should pass the 2 % gate"; failures=$((failures + 1)); }
+history st_off.csv 3.06
+expect_exit "2D-2 St 2 % high fails" 1 "St / 0.3 \(Schaefer & Turek 1996\) - 1\| .* 0.02.*FAIL" run dfg_cylinder_2d2 st_off.csv
+printf 'time,drag_coefficient,lift_coefficient\n0,3,0\n1,3,1\n' > short.csv
+expect_exit "2D-2 too short a history exits 2" 2 "short.csv" run dfg_cylinder_2d2 short.csv
+
+[[ $failures -eq 0 ]] && echo "all DFG compare claims hold" || echo "$failures claim(s) failed"
+exit $(( failures > 0 ))
