@@ -49,8 +49,9 @@ struct ProjectionStats {
 //  quick_convection: face values of the convected velocity by QUICK (Leonard 1979: quadratic
 //    upwind-biased, (6 q_up + 3 q_down - q_upup) / 8) instead of the central mean; a fourth-
 //    derivative dissipation of order |U| h^3 in place of the central scheme's dispersion;
-//  quadratic_wall: the viscous term's wall ghost of the tangential velocity from the quadratic
-//    through the wall value and the two first cells, u_g = (8 u_w - 6 u_1 + u_2) / 3, instead of the
+//  quadratic_wall: the viscous term's ghost of the tangential velocity at every side where it is
+//    given (walls and inflows, not outflows) from the quadratic through the side value and the two
+//    first cells, u_g = (8 u_w - 6 u_1 + u_2) / 3, instead of the
 //    linear 2 u_w - u_1 (the normal component keeps it: see add_wall_closure), whose
 //    wall-cell Laplacian has an O(1) truncation error (-u''/4). Crank-Nicolson on the quadratic
 //    closure: the explicit half directly; the implicit half by defect correction around the linear

@@ -60,7 +60,23 @@ void check_bodies_for_blow_up(const Simulation& sim) {
       const bool finite = std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(u[0]) && std::isfinite(u[1]);
       const bool inside_x = g.periodic_x || (x[0] > g.origin_x && x[0] < g.origin_x + g.length_x);
       const bool inside_y = g.periodic_y || (x[1] > g.origin_y && x[1] < g.origin_y + g.length_y);
-      if (finite && inside_x && inside_y) continue;
+      if (finite && inside_x && inside_y) {
+        // An open side has no wall for the kernel's mirror images (scene_checks.cpp: bodies start
+        // 3 cells away from it): a body that drifts that close stops the run with the side named.
+        const double reach = 3.0 * g.dx();
+        const double distance[4] = {x[0] - g.origin_x, g.origin_x + g.length_x - x[0], x[1] - g.origin_y,
+                                    g.origin_y + g.length_y - x[1]};
+        const char* names[4] = {"left", "right", "bottom", "top"};
+        for (int s = 0; s < 4; ++s) {
+          const SideKind kind = sim.boundaries().kind(g, static_cast<Side>(s));
+          if ((kind == SideKind::inflow || kind == SideKind::outflow) && distance[s] < reach)
+            throw BlowUpError(fmt::format(
+                "stopped at step {}, t = {:.6g}: body {} point {} at x = {:.6g}, y = {:.6g} came within 3 cells of the {} "
+                "side ({}): the immersed boundary cannot act across an open side",
+                f.step, f.time, b, p, x[0], x[1], names[s], side_kind_name(kind)));
+        }
+        continue;
+      }
       throw BlowUpError(fmt::format(
           "blow-up at step {}, t = {:.6g}: body {} point {} {} at x = {:.6g}, y = {:.6g} (u = {:.3g}, v = {:.3g})",
           f.step, f.time, b, p, finite ? "left the box" : "is non-finite", x[0], x[1], u[0], u[1]));
