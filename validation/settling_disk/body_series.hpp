@@ -37,7 +37,14 @@ inline SeriesTable read_series_csv(const std::string& path) {
       continue;
     }
     if (cells.size() != names.size()) throw std::runtime_error(path + ": ragged row");
-    for (std::size_t k = 0; k < cells.size(); ++k) table[names[k]].push_back(std::strtod(cells[k].c_str(), nullptr));
+    for (std::size_t k = 0; k < cells.size(); ++k) {
+      // A non-numeric cell is an error, not a 0 (issue 15 item 3).
+      char* end = nullptr;
+      const double value = std::strtod(cells[k].c_str(), &end);
+      if (end == cells[k].c_str() || (*end != '\0' && *end != '\r' && *end != ' '))
+        throw std::runtime_error(path + ": column " + names[k] + ": not a number: '" + cells[k] + "'");
+      table[names[k]].push_back(value);
+    }
   }
   if (names.empty() || table[names[0]].empty()) throw std::runtime_error(path + ": no data");
   return table;
@@ -51,7 +58,12 @@ inline double reference_value(const std::string& path, const std::string& quanti
   while (std::getline(in, line)) {
     if (line.empty() || line[0] == '#') continue;
     const std::vector<std::string> cells = split_csv_line(line);
-    if (cells.size() >= 2 && cells[0] == quantity) return std::strtod(cells[1].c_str(), nullptr);
+    if (cells.size() >= 2 && cells[0] == quantity) {
+      char* end = nullptr;
+      const double value = std::strtod(cells[1].c_str(), &end);
+      if (end == cells[1].c_str()) throw std::runtime_error(path + ": " + quantity + ": not a number: '" + cells[1] + "'");
+      return value;
+    }
   }
   throw std::runtime_error(path + ": no quantity " + quantity);
 }
