@@ -25,6 +25,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <map>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -105,15 +106,17 @@ int main(int argc, char** argv) {
     if (argc < 5) throw std::runtime_error("usage: see the header of check.cpp");
     const std::string mode = argv[1], name = argv[2], reference_path = argv[3];
     const auto ref = read_reference(reference_path);
-    std::string gates = "," + std::string(argv[4]) + ",";
-    const auto gated = [&](const char* g) { return gates.find("," + std::string(g) + ",") != std::string::npos; };
-    {  // every named gate must be known: a misspelt gate would silently check nothing
+    std::set<std::string> gates;  // every named gate must be known: a misspelt one would check nothing
+    {
       std::stringstream list(argv[4]);
       std::string g;
-      while (std::getline(list, g, ','))
+      while (std::getline(list, g, ',')) {
         if (!g.empty() && g != "drag_finest" && g != "drag_richardson" && g != "strouhal" && g != "drag_max" && g != "none")
           throw std::runtime_error("unknown gate '" + g + "'");
+        gates.insert(g);
+      }
     }
+    const auto gated = [&](const char* g) { return gates.count(g) > 0; };
     int first_grid = 5;
     double t_from = 0.0;
     if (mode == "periodic") t_from = std::atof(argv[first_grid++]);
