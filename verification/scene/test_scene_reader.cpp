@@ -85,7 +85,10 @@ void check_same_scene(const ibms::Scene& a, const ibms::Scene& b) {
   BOOST_TEST((a.fluid.gravity == b.fluid.gravity));
   for (const auto& [wa, wb] : {std::pair{a.walls.left, b.walls.left}, std::pair{a.walls.right, b.walls.right},
                                std::pair{a.walls.bottom, b.walls.bottom}, std::pair{a.walls.top, b.walls.top}})
-    BOOST_TEST((same(wa.speed, wb.speed) && same(wa.stop_time, wb.stop_time)));
+    BOOST_TEST((same(wa.speed, wb.speed) && same(wa.stop_time, wb.stop_time) && wa.kind == wb.kind &&
+                wa.profile == wb.profile && same(wa.velocity, wb.velocity) && wa.time_factor == wb.time_factor &&
+                same(wa.ramp_time, wb.ramp_time) && same(wa.factor_offset, wb.factor_offset) &&
+                same(wa.factor_amplitude, wb.factor_amplitude) && same(wa.factor_period, wb.factor_period)));
   BOOST_TEST((a.ibm.kernel == b.ibm.kernel && a.ibm.forcing_passes == b.ibm.forcing_passes));
   BOOST_TEST((a.ibm.forcing_stage == b.ibm.forcing_stage && a.ibm.inner_fluid_inertia == b.ibm.inner_fluid_inertia));
   BOOST_TEST(a.ibm.sub_markers == b.ibm.sub_markers);
@@ -116,6 +119,7 @@ void check_same_scene(const ibms::Scene& a, const ibms::Scene& b) {
   BOOST_TEST((same(a.output.snapshot_interval, b.output.snapshot_interval) &&
               a.output.centreline_profiles == b.output.centreline_profiles));
   BOOST_TEST((a.output.progress == b.output.progress && a.output.checkpoint_every == b.output.checkpoint_every));
+  BOOST_TEST((a.output.probes == b.output.probes));
 }
 
 }  // namespace
@@ -194,4 +198,45 @@ BOOST_AUTO_TEST_CASE(mutated_scenes_throw_nothing_but_input_error) {
   }
   BOOST_TEST_MESSAGE(n_rejected << " of " << n_trials << " mutated scenes rejected with InputError");
   BOOST_TEST(n_rejected > 0);
+}
+
+// Open sides (issue 11): every side kind with its keys, the inflow's time factors, and the probes
+// read back from the resolved text to equal values; the sides are as written.
+BOOST_AUTO_TEST_CASE(open_sides_and_probes_read_back_to_equal_values) {
+  for (const char* factor : {"time_factor = \"sinusoidal\"\nfactor_offset = 1.0\nfactor_amplitude = 0.25\nfactor_period = 0.3",
+                             "time_factor = \"ramp\"\nramp_time = 0.7"}) {
+    const std::string text = std::string(R"([run]
+end_time = 1.0
+[domain]
+length_x = 2.2
+length_y = 0.41
+cells_x = 44
+cells_y = 8
+[fluid]
+kinematic_viscosity = 0.001
+[walls.left]
+kind = "inflow"
+profile = "parabolic"
+velocity = 1.5
+)") + factor + R"(
+[walls.right]
+kind = "outflow"
+[walls.bottom]
+speed = 0.125
+stop_time = 0.5
+[output]
+file = ")" + ibms::test::output_path() + R"("
+probes = [[0.14, 0.2], [0.26, 0.2]]
+)";
+    const ibms::Scene first = ibms::read_scene_string(text, "channel.toml");
+    const ibms::Scene again = ibms::read_scene_string(first.resolved_text, "channel.toml");
+    check_same_scene(first, again);
+    BOOST_TEST(first.walls.left.kind == "inflow");
+    BOOST_TEST(first.walls.left.profile == "parabolic");
+    BOOST_TEST(first.walls.right.kind == "outflow");
+    BOOST_TEST(first.walls.bottom.kind == "wall");
+    BOOST_TEST(first.walls.bottom.speed == 0.125);
+    BOOST_TEST(first.output.probes.size() == 2u);
+    BOOST_TEST(first.output.probes[1][0] == 0.26);
+  }
 }
