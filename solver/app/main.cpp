@@ -7,6 +7,7 @@
 
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -128,6 +129,13 @@ int main(int argc, char** argv) {
   } catch (const ibms::BlowUpError& e) {
     std::fprintf(stderr, "ibms: run stopped: %s (output so far kept)\n", e.what());
     return 3;
+  } catch (const ibms::OutputError& e) {
+    std::fprintf(stderr, "ibms: output failed: %s\n", e.what());
+    // A failed H5Fflush/H5Fclose leaves the file open inside HDF5 1.10, whose exit handler then
+    // crashes closing it again (measured: SIGSEGV in H5F__close_cb under a file-size limit): leave
+    // without the library's exit handlers, after flushing our own streams.
+    std::fflush(nullptr);
+    std::_Exit(5);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "ibms: error: %s\n", e.what());
     return 1;

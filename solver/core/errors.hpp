@@ -16,4 +16,10 @@ struct BlowUpError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// Writing the output failed (disk full, file size limit, permission lost during the run): not bad
+// input. The message names the file and the system's reason; no temporary file is left behind.
+struct OutputError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
 }  // namespace ibms

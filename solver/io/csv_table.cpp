@@ -2,6 +2,7 @@
 #include "io/csv_table.hpp"
 
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 
@@ -45,10 +46,15 @@ void write_csv(const std::string& path, const std::vector<std::string>& comments
     text += "\n";
   }
   std::ofstream file(path, std::ios::binary | std::ios::trunc);
-  if (!file) throw InputError(fmt::format("{}: cannot create CSV file: {}", path, std::strerror(errno)));
+  if (!file) throw OutputError(fmt::format("{}: cannot create CSV file: {}", path, std::strerror(errno)));
+  errno = 0;
   file << text;
   file.close();
-  if (!file) throw InputError(fmt::format("{}: cannot write CSV file", path));
+  if (!file) {
+    const int reason = errno;
+    std::remove(path.c_str());  // a truncated table would read as a shorter run
+    throw OutputError(fmt::format("{}: cannot write CSV file: {}", path, reason != 0 ? std::strerror(reason) : "write failed"));
+  }
 }
 
 }  // namespace ibms

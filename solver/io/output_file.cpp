@@ -5,7 +5,9 @@
 
 #include <unistd.h>
 
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <ctime>
 #include <filesystem>
 #include <limits>
@@ -238,6 +240,15 @@ void OutputFile::write_checkpoint(const std::map<std::string, std::vector<double
   flush();
 }
 
-void OutputFile::flush() { check_hdf5(H5Fflush(file_.get(), H5F_SCOPE_GLOBAL), path_, "cannot flush"); }
+void OutputFile::flush() {
+  // Buffered writes reach the disk here: a failure is an output failure (disk full), not bad input.
+  errno = 0;
+  if (H5Fflush(file_.get(), H5F_SCOPE_GLOBAL) < 0) {
+    const int reason = errno;
+    H5Eclear2(H5E_DEFAULT);
+    throw OutputError(fmt::format("{}: cannot flush the HDF5 output: {}", path_,
+                                  reason != 0 ? std::strerror(reason) : "HDF5 write failed"));
+  }
+}
 
 }  // namespace ibms

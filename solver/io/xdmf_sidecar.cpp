@@ -101,13 +101,21 @@ void write_xdmf_sidecar(const std::string& xmf_path, const std::string& h5_basen
   const std::string temporary = xmf_path + ".tmp";
   {
     std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
-    if (!file) throw InputError(fmt::format("{}: cannot create XDMF sidecar: {}", temporary, std::strerror(errno)));
+    if (!file) throw OutputError(fmt::format("{}: cannot create XDMF sidecar: {}", temporary, std::strerror(errno)));
+    errno = 0;
     file << xdmf_text(h5_basename, grid, snapshots);
     file.close();
-    if (!file) throw InputError(fmt::format("{}: cannot write XDMF sidecar", temporary));
+    if (!file) {
+      const int reason = errno;
+      std::remove(temporary.c_str());  // no stray temporary; the previous sidecar stays as it was
+      throw OutputError(fmt::format("{}: cannot write XDMF sidecar: {}", temporary,
+                                    reason != 0 ? std::strerror(reason) : "write failed"));
+    }
   }
   if (std::rename(temporary.c_str(), xmf_path.c_str()) != 0) {
-    throw InputError(fmt::format("{}: cannot replace XDMF sidecar: {}", xmf_path, std::strerror(errno)));
+    const int reason = errno;
+    std::remove(temporary.c_str());
+    throw OutputError(fmt::format("{}: cannot replace XDMF sidecar: {}", xmf_path, std::strerror(reason)));
   }
 }
 

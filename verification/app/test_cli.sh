@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Claims: (1) `ibms run` on bad input exits with code 2, prints exactly one line naming the scene
 # file and the key, and creates no output file; (2) a run that blows up exits with code 3, the
-# message names step, time and place, and the HDF5 output written so far is readable.
+# message names step, time and place, and the HDF5 output written so far is readable; (3) a failed
+# write of the output exits with code 5 and the system's reason.
 set -u
 ibms=$1; good_scene=$2; body_scene=${3:-}
 work=$(mktemp -d); trap 'rm -rf "$work"' EXIT
@@ -63,6 +64,19 @@ elif ! /usr/bin/python3 -c "import h5py,sys; f=h5py.File('blow.h5','r'); assert 
   echo "FAIL blow-up: blow.h5 is not readable"; failures=$((failures + 1))
 else
   echo "ok   blow-up: $(cat err.txt)"
+fi
+
+# Output failure (issue 15 item 6): writes past a 40 kB file-size limit fail with EFBIG, as on a full
+# disk; the run exits with code 5 (not 2: the input was good), one line naming the file and the
+# system's reason, no crash (HDF5's exit handler is skipped), no stray XDMF temporary.
+rm -f full.*
+( trap '' XFSZ; ulimit -f 40
+  "$ibms" run good.toml --set domain.cells_x=32 --set domain.cells_y=32 --set run.end_time=0.5 -o full.h5 --quiet ) \
+  2> err.txt; code=$?
+if [[ $code -ne 5 ]] || ! grep -q "full.h5.*File too large" err.txt || [[ $(wc -l < err.txt) -ne 1 ]] || ls full.xmf.tmp 2>/dev/null; then
+  echo "FAIL output failure: exit $code:"; cat err.txt; failures=$((failures + 1))
+else
+  echo "ok   output failure: $(cat err.txt)"
 fi
 echo "$failures failure(s)"
 exit $((failures > 0))
