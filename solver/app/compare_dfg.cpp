@@ -24,8 +24,6 @@ constexpr double strouhal_tolerance = 0.01;       // 2D-2 St
 constexpr double drag_max_tolerance = 0.02;       // 2D-2 max c_D
 constexpr double periodic_window = 4.0;           // time units at the end of the history
 constexpr double diameter = 0.1, mean_speed_2d2 = 1.0;
-// ibms's probes (scene.toml): 0.01, 0.015, 0.02 in front of and behind the cylinder.
-constexpr std::array<double, 3> probe_distance{0.01, 0.015, 0.02};
 
 int column(const CompareTable& t, const std::vector<std::string>& aliases, bool required, const std::string& what) {
   const int c = t.find(aliases);
@@ -44,9 +42,11 @@ std::vector<double> pressure_difference(const CompareTable& t) {
     if (p[k] < 0) return {};
   }
   std::vector<double> out(t.lines.size());
-  for (std::size_t r = 0; r < out.size(); ++r)
-    out[r] = rim_pressure(probe_distance, {t.columns[p[0]][r], t.columns[p[1]][r], t.columns[p[2]][r]}) -
-             rim_pressure(probe_distance, {t.columns[p[3]][r], t.columns[p[4]][r], t.columns[p[5]][r]});
+  for (std::size_t r = 0; r < out.size(); ++r) {
+    std::array<double, 6> row{};
+    for (int k = 0; k < 6; ++k) row[k] = t.columns[p[k]][r];
+    out[r] = dfg_pressure_difference(row);
+  }
   return out;
 }
 

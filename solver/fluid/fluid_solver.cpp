@@ -292,9 +292,8 @@ ProjectionStats FluidSolver::project_smac(FluidState& state, double dt) {
   phi_.copy_interior_from(buffer_.data());
   fill_correction_ghosts(grid_, boundaries_, phi_);
 
-  // Step 5: U^{n+1} = U* - dt G_f phi (faces with a given flux are not corrected).
-  state.velocity_face_x = star_face_x_;
-  state.velocity_face_y = star_face_y_;
+  // Step 5: U^{n+1} = U* - dt G_f phi; faces with a given flux take it (walls, inflows at t^{n+1}).
+  set_given_faces(state.time + dt, state.velocity_face_x, state.velocity_face_y);
   IBMS_PARALLEL_ROWS
   for (int j = 0; j < grid_.ny; ++j)
     for (int i = faces.x_first; i <= faces.x_last; ++i)

@@ -17,6 +17,10 @@ double rim_pressure(const std::array<double, 3>& d, const std::array<double, 3>&
   return sum;
 }
 
+double dfg_pressure_difference(const std::array<double, 6>& p) {
+  return rim_pressure(dfg_probe_distance, {p[0], p[1], p[2]}) - rim_pressure(dfg_probe_distance, {p[3], p[4], p[5]});
+}
+
 PeriodicForces periodic_forces(const std::vector<double>& time, const std::vector<double>& drag,
                                const std::vector<double>& lift, const std::vector<double>& dp, double t_from,
                                double length, double speed) {

@@ -18,6 +18,12 @@ namespace ibms {
 // p at distance 0 from p(d_k), k = 0, 1, 2 (distinct distances) [pressure].
 double rim_pressure(const std::array<double, 3>& distance, const std::array<double, 3>& pressure);
 
+// The DFG scenes' probes (validation/dfg_cylinder_*/scene.toml): 0-2 lie 0.01, 0.015, 0.02 in front
+// of the cylinder, 3-5 as far behind it.
+inline constexpr std::array<double, 3> dfg_probe_distance{0.01, 0.015, 0.02};
+// Delta p = p(front point) - p(back point), each extrapolated to the rim from its three probes.
+double dfg_pressure_difference(const std::array<double, 6>& probe_pressure);
+
 struct PeriodicForces {
   double drag_max = NAN, lift_max = NAN;  // [-]
   double strouhal = NAN;                  // f L / U [-]

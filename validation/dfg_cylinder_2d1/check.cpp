@@ -13,7 +13,7 @@
 // drag_richardson: the Richardson c_D within 0.5 % (2D-1, three grids); strouhal: St at the finest
 // grid within 1 %; drag_max: max c_D at the finest grid within 2 % (2D-2). The CMake files say which
 // gate runs at which label and why.
-// steady (2D-1): the last row's c_D, c_L and Delta p (probes: pressure_difference below).
+// steady (2D-1): the last row's c_D, c_L and Delta p (probes: ibms::dfg_pressure_difference).
 // periodic (2D-2): over t >= t_from, the figures of ibms::periodic_forces (solver/sim/force_metrics.hpp,
 //   shared with `ibms compare`); the reference of 2D-2 is the midpoint of the published bounds.
 // Every other figure is reported (info) with its deviation from the reference and whether it lies
@@ -40,7 +40,6 @@ using ibms::PeriodicForces;
 using ibms::Richardson;
 using ibms::periodic_forces;
 using ibms::richardson;
-using ibms::rim_pressure;
 
 namespace {
 
@@ -92,13 +91,6 @@ bool report(const std::string& name, const std::string& label, double measured, 
   return true;
 }
 
-// Probes 0-2 lie 0.01, 0.015, 0.02 in front of the cylinder, 3-5 as far behind (the scenes).
-constexpr std::array<double, 3> probe_distance{0.01, 0.015, 0.02};
-
-double pressure_difference(const std::array<double, 6>& p) {
-  return rim_pressure(probe_distance, {p[0], p[1], p[2]}) - rim_pressure(probe_distance, {p[3], p[4], p[5]});
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -145,7 +137,7 @@ int main(int argc, char** argv) {
         const double cl = column(t, "body_000/lift_coefficient", file).back();
         std::array<double, 6> p{};
         for (int k = 0; k < 6; ++k) p[k] = column(t, "probe_00" + std::to_string(k) + "/pressure", file).back();
-        const double dp = pressure_difference(p);
+        const double dp = ibms::dfg_pressure_difference(p);
         figures.push_back({cd, cl, dp});
       } else {
         const auto& time = column(t, "time", file);
@@ -153,7 +145,7 @@ int main(int argc, char** argv) {
         for (std::size_t r = 0; r < time.size(); ++r) {
           std::array<double, 6> p{};
           for (int k = 0; k < 6; ++k) p[k] = column(t, "probe_00" + std::to_string(k) + "/pressure", file)[r];
-          dp[r] = pressure_difference(p);
+          dp[r] = ibms::dfg_pressure_difference(p);
         }
         const PeriodicForces f = periodic_forces(time, column(t, "body_000/drag_coefficient", file),
                                                  column(t, "body_000/lift_coefficient", file), dp, t_from, d, u_mean);
