@@ -221,12 +221,18 @@ def environment_section(out, build, source, tests):
                                  "in parallel, so wall time is lower)." % total))
 
 
-def build_pdf(tex, fig_files, build, output):
-    work = tempfile.mkdtemp(prefix="report-", dir=build)
-    with open(os.path.join(work, "report.tex"), "w", encoding="utf-8") as f:
+def write_sources(tex, fig_files, directory):
+    """report.tex and the figure PDFs it names, in one directory (what latexmk compiles)."""
+    os.makedirs(directory, exist_ok=True)
+    with open(os.path.join(directory, "report.tex"), "w", encoding="utf-8") as f:
         f.write(tex)
     for p in fig_files:
-        shutil.copy(p, work)
+        shutil.copy(p, directory)
+
+
+def build_pdf(tex, fig_files, build, output):
+    work = tempfile.mkdtemp(prefix="report-", dir=build)
+    write_sources(tex, fig_files, work)
     cmd = ["latexmk", "-pdf", "-interaction=nonstopmode", "-halt-on-error", "report.tex"]
     proc = subprocess.run(cmd, cwd=work, capture_output=True, text=True)
     pdf = os.path.join(work, "report.pdf")
@@ -242,10 +248,14 @@ def build_pdf(tex, fig_files, build, output):
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--build", required=True, help="build directory with the run outputs")
-    ap.add_argument("--output", required=True, help="PDF to write")
+    ap.add_argument("--output", help="PDF to write")
+    ap.add_argument("--tex-dir", help="write report.tex and its figures to this directory and stop "
+                    "before LaTeX (the data-to-figures-and-LaTeX part, tested without a TeX installation)")
     ap.add_argument("--source", default=os.path.dirname(os.path.dirname(os.path.abspath(__file__))),
                     help="repository root (reference data, case READMEs); default: this repo")
     args = ap.parse_args()
+    if (args.output is None) == (args.tex_dir is None):
+        ap.error("give --output (the PDF) or --tex-dir (the LaTeX source and figures), not both")
     start = time.time()
     build, source = os.path.abspath(args.build), os.path.abspath(args.source)
     if not os.path.isdir(build):
@@ -269,14 +279,18 @@ def main():
         environment_section(out, build, source, tests)
         bench.run_times_section(out, tests)
         out.append(r"\end{document}")
+        # Figures are referenced by base name from the LaTeX work directory.
         fig_files = glob.glob(os.path.join(fig_dir, "*.pdf"))
-        for p in fig_files:  # figures are referenced by base name from the LaTeX work directory
-            pass
-        build_pdf("\n".join(out), fig_files, build, args.output)
+        if args.tex_dir is not None:
+            write_sources("\n".join(out), fig_files, args.tex_dir)
+            target = os.path.join(args.tex_dir, "report.tex")
+        else:
+            build_pdf("\n".join(out), fig_files, build, args.output)
+            target = args.output
     finally:
         shutil.rmtree(fig_dir, ignore_errors=True)
     print("report: %s (%d validation cases, %d convergence tables, built in %.1f s)" %
-          (os.path.abspath(args.output), len(case_dirs(build, source, results)), len(conv),
+          (os.path.abspath(target), len(case_dirs(build, source, results)), len(conv),
            time.time() - start))
 
 

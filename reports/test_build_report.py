@@ -1,26 +1,36 @@
 #!/usr/bin/python3
-"""ctest `report_builds_from_synthetic_outputs`: builds the report from a tiny synthetic build
-directory (results.csv with a rerun duplicate and LaTeX special characters, one centre-line
-profile pair, one convergence table, a ctest log, a kernel-moment table, a work-precision table,
-a stability map (and a fluid one), a stage-cost table, and the solid tests' energy, restitution and contact-history
-tables) and checks that a PDF comes out.
-usage: test_build_report.py WORK_DIR     exit 0 pass, 1 fail, 77 skipped (no LaTeX / modules)"""
+"""ctest `report_latex_from_synthetic_outputs` and `report_pdf_from_synthetic_outputs`: builds the
+report from a tiny synthetic build directory (results.csv with a rerun duplicate and LaTeX special
+characters, one centre-line profile pair, one convergence table, a ctest log, a kernel-moment table,
+a work-precision table, a stability map (and a fluid one), a stage-cost table, and the solid tests'
+energy, restitution and contact-history tables).
+Stage `tex` (always runs; the README's test command installs its Python modules): the data, the
+figures and the LaTeX source (build_report.py --tex-dir) -- every figure the source includes exists
+and is a PDF, environments and braces balance, the computed figures are in the text and a stale
+rerun row is not. Stage `pdf` (skipped without LaTeX): the whole report compiles to a PDF whose
+text holds the same figures.
+usage: test_build_report.py tex|pdf WORK_DIR     exit 0 pass, 1 fail, 77 skipped (pdf stage, no LaTeX)"""
 import os
+import re
 import shutil
 import subprocess
 import sys
 import tempfile
 
 here = os.path.dirname(os.path.abspath(__file__))
-work = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else tempfile.mkdtemp(prefix="ibms_synthetic_"))
-if shutil.which("latexmk") is None or shutil.which("pdflatex") is None:
-    print("skipped: latexmk/pdflatex not installed (scripts/install-deps.sh --report)")
+if len(sys.argv) < 2 or sys.argv[1] not in ("tex", "pdf"):
+    sys.exit("usage: test_build_report.py tex|pdf [WORK_DIR]")
+stage = sys.argv[1]
+work = os.path.abspath(sys.argv[2] if len(sys.argv) > 2 else tempfile.mkdtemp(prefix="ibms_synthetic_"))
+if stage == "pdf" and (shutil.which("latexmk") is None or shutil.which("pdflatex") is None):
+    print("skipped: latexmk/pdflatex not installed (scripts/install-deps.sh --report); "
+          "the LaTeX source is tested by report_latex_from_synthetic_outputs")
     sys.exit(77)
 try:
     import h5py, matplotlib, numpy  # noqa: F401,E401
-except ImportError as e:
-    print("skipped: %s" % e)
-    sys.exit(77)
+except ImportError as e:  # installed by scripts/install-deps.sh: missing is a failure, not a skip
+    print("FAIL: %s (scripts/install-deps.sh installs python3-h5py, -matplotlib, -numpy)" % e)
+    sys.exit(1)
 
 shutil.rmtree(work, ignore_errors=True)
 case = os.path.join(work, "validation", "lid_driven_cavity_re100")
@@ -109,31 +119,81 @@ with open(os.path.join(res, "contact_history.csv"), "w") as f:
                 s = k / 20
                 f.write('"%s",%g,%g,%g,%g\n' % (case, e, s, -1 + (1 + e) * s, 0.006 * s * (1 - s)))
 
+# Figures the report computes from the tables above: slope of n^-2 error against n^3 time is -2/3,
+# the stage-cost ratio, the solid section's headings and its restitution row.
+expected = ("-0.667", "Stability map summary", "Kernel moments", "ratio 1.03",
+            "energy error over 1000 periods", "measured against target", "0.5015")
+
+
+def fail(message):
+    print("FAIL: " + message)
+    sys.exit(1)
+
+
+def check_text(text, where):
+    for e in expected:
+        if e not in text:
+            fail("'%s' not in the %s" % (e, where))
+    if "9.99" in text:  # the first run's energy table, replaced by the rerun's
+        fail("a stale (rerun-replaced) energy table row is in the %s" % where)
+
+
+if stage == "tex":
+    tex_dir = os.path.join(work, "tex")
+    proc = subprocess.run([sys.executable, os.path.join(here, "build_report.py"), "--build", work,
+                           "--tex-dir", tex_dir], capture_output=True, text=True, timeout=240)
+    print(proc.stdout, proc.stderr)
+    if proc.returncode != 0:
+        fail("build_report.py --tex-dir exited %d" % proc.returncode)
+    with open(os.path.join(tex_dir, "report.tex"), encoding="utf-8") as f:
+        tex = f.read()
+    # Structure a LaTeX run would reject: unbalanced environments or braces (escaped ones aside).
+    begins, ends = re.findall(r"\\begin\{(\w+\*?)\}", tex), re.findall(r"\\end\{(\w+\*?)\}", tex)
+    stack = []
+    for m in re.finditer(r"\\(begin|end)\{(\w+\*?)\}", tex):
+        if m.group(1) == "begin":
+            stack.append(m.group(2))
+        elif not stack or stack.pop() != m.group(2):
+            fail("\\end{%s} without its \\begin at offset %d" % (m.group(2), m.start()))
+    if stack:
+        fail("environments left open: %s" % stack)
+    unescaped = re.sub(r"\\[{}]", "", tex)
+    if unescaped.count("{") != unescaped.count("}"):
+        fail("unbalanced braces: %d { against %d }" % (unescaped.count("{"), unescaped.count("}")))
+    if not tex.rstrip().endswith("\\end{document}") or len(begins) < 10:
+        fail("report.tex is truncated (%d environments)" % len(begins))
+    figures = re.findall(r"\\includegraphics(?:\[[^]]*\])?\{([^}]+)\}", tex)
+    if len(figures) < 5:
+        fail("only %d figures in report.tex" % len(figures))
+    for name in figures:
+        path = os.path.join(tex_dir, name)
+        if not os.path.isfile(path):
+            fail("figure %s is included but not written" % name)
+        with open(path, "rb") as f:
+            if f.read(5) != b"%PDF-":
+                fail("figure %s is not a PDF" % name)
+    check_text(tex.replace("$", "").replace("{,}", ","), "LaTeX source")
+    leftovers = [d for d in os.listdir(work) if d.startswith("report-")]
+    if leftovers:
+        fail("temporary directories left behind: %s" % leftovers)
+    print("pass: %s (%d figures, %d environments)" % (os.path.join(tex_dir, "report.tex"), len(figures),
+                                                      len(begins)))
+    sys.exit(0)
+
 pdf = os.path.join(work, "report.pdf")
 proc = subprocess.run([sys.executable, os.path.join(here, "build_report.py"), "--build", work,
                        "--output", pdf], capture_output=True, text=True, timeout=240)
 print(proc.stdout, proc.stderr)
 if proc.returncode != 0:
-    print("FAIL: build_report.py exited %d" % proc.returncode)
-    sys.exit(1)
+    fail("build_report.py exited %d" % proc.returncode)
 with open(pdf, "rb") as f:
     head = f.read(5)
 size = os.path.getsize(pdf)
 if head != b"%PDF-" or size < 10000:
-    print("FAIL: %s is not a plausible PDF (%d bytes)" % (pdf, size))
-    sys.exit(1)
-if shutil.which("pdftotext"):  # the issue-5 sections are filled: slope of n^-2 error against n^3 time is -2/3
-    text = subprocess.run(["pdftotext", pdf, "-"], capture_output=True, text=True).stdout
-    for expected in ("-0.667", "Stability map summary", "Kernel moments", "ratio 1.03",
-                     "energy error over 1000 periods", "measured against target", "0.5015"):
-        if expected not in text:
-            print("FAIL: '%s' not in the report text" % expected)
-            sys.exit(1)
-    if "9.99" in text:  # the first run's energy table, replaced by the rerun's
-        print("FAIL: a stale (rerun-replaced) energy table row is in the report")
-        sys.exit(1)
+    fail("%s is not a plausible PDF (%d bytes)" % (pdf, size))
+if shutil.which("pdftotext"):
+    check_text(subprocess.run(["pdftotext", pdf, "-"], capture_output=True, text=True).stdout, "report text")
 leftovers = [d for d in os.listdir(work) if d.startswith("report-")]
 if leftovers:
-    print("FAIL: temporary directories left behind: %s" % leftovers)
-    sys.exit(1)
+    fail("temporary directories left behind: %s" % leftovers)
 print("pass: %s (%d bytes)" % (pdf, size))
