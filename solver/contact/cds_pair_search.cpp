@@ -1,5 +1,6 @@
-// CDS pair search, METHOD.md §1.9: body-box broad phase (walled boxes), cell list with bins
-// >= 2 r_max (periodic boxes), and brute force for reference.
+// CDS pair search, METHOD.md §1.9: body-box broad phase (walled boxes) and cell list with bins
+// >= 2 r_max (periodic boxes). The brute-force reference is a test oracle
+// (verification/oracles/brute_force_pair_search.hpp).
 #include "contact/cds_pair_search.hpp"
 
 #include <algorithm>
@@ -107,14 +108,6 @@ BinAxis make_axis(const ContactSpheres& spheres, const WallBox& box, int c, doub
 }
 
 }  // namespace
-
-PairSearchResult find_touching_pairs_brute_force(const ContactSpheres& spheres, const WallBox& box) {
-  PairSearchResult result;
-  for (int s = 0; s < spheres.n_spheres(); ++s)
-    for (int t = s + 1; t < spheres.n_spheres(); ++t) check_pair(spheres, box, s, t, result);
-  sort_pairs(result);
-  return result;
-}
 
 PairSearchResult find_touching_pairs_cell_list(const ContactSpheres& spheres, const WallBox& box) {
   PairSearchResult result;

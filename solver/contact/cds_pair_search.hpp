@@ -1,6 +1,7 @@
 // Pair search between contact-detection spheres (CDS) of different bodies, METHOD.md §1.9: a cell
-// list with bins of at least 2 r_max (so touching spheres sit in the same or adjacent bins) and a
-// brute-force O(n^2) reference. Spheres touch when |x_j - x_i| < r_i + r_j; periodic directions
+// list with bins of at least 2 r_max (so touching spheres sit in the same or adjacent bins), and a
+// body-box broad phase; the brute-force O(n^2) reference the tests compare them with is in
+// verification/oracles/. Spheres touch when |x_j - x_i| < r_i + r_j; periodic directions
 // of the box use the minimum image. Positions [length]; no grid, plain data. All searches return
 // the same pairs, sorted, so contact forces do not depend on which one ran.
 #pragma once
@@ -51,7 +52,6 @@ PairSearchResult find_touching_pairs_cell_list(const ContactSpheres& spheres, co
 PairSearchResult find_touching_pairs_body_bounds(const ContactSpheres& spheres, const WallBox& box);
 // The same into `out` (cleared, capacity reused) for walled boxes; periodic boxes: the cell list.
 void find_touching_pairs_body_bounds(const ContactSpheres& spheres, const WallBox& box, PairSearchResult& out);
-PairSearchResult find_touching_pairs_brute_force(const ContactSpheres& spheres, const WallBox& box);
 
 // x_to - x_from, minimum image in the periodic directions of the box [length].
 std::array<double, 2> separation(const std::array<double, 2>& from, const std::array<double, 2>& to,

@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "contact/cds_pair_search.hpp"
+#include "oracles/brute_force_pair_search.hpp"
 #include "contact/contact_forces.hpp"
 #include "solid/mass_spring_body.hpp"
 #include "wheel_collision.hpp"
@@ -49,7 +50,7 @@ BOOST_AUTO_TEST_CASE(cell_list_finds_exactly_the_brute_force_pairs) {
   for (bool periodic : {false, true}) {
     const WallBox box{{0.0, 0.0}, {1.0, 1.0}, {periodic, periodic}};
     const PairSearchResult cells = find_touching_pairs_cell_list(spheres, box);
-    const PairSearchResult brute = find_touching_pairs_brute_force(spheres, box);
+    const PairSearchResult brute = oracles::find_touching_pairs_brute_force(spheres, box);
     BOOST_TEST_MESSAGE(periodic << "  " << cells.pairs.size() << "  " << brute.pairs.size() << "  "
                                 << cells.n_pair_checks << "  " << brute.n_pair_checks);
     BOOST_TEST(brute.pairs.size() > 100u);  // a configuration with plenty of contacts
@@ -81,7 +82,7 @@ BOOST_AUTO_TEST_CASE(body_bounds_search_finds_exactly_the_brute_force_pairs) {
                                       std::pair{"lattice", gather_contact_spheres(model, bodies)}}) {
     const PairSearchResult bounds = find_touching_pairs_body_bounds(spheres, box);
     const PairSearchResult cells = find_touching_pairs_cell_list(spheres, box);
-    const PairSearchResult brute = find_touching_pairs_brute_force(spheres, box);
+    const PairSearchResult brute = oracles::find_touching_pairs_brute_force(spheres, box);
     BOOST_TEST_MESSAGE(name << "  " << bounds.pairs.size() << "  " << brute.pairs.size() << "  " << bounds.n_pair_checks
                             << "  " << cells.n_pair_checks << "  " << brute.n_pair_checks);
     BOOST_TEST(brute.pairs.size() > 0u);
@@ -118,9 +119,9 @@ BOOST_AUTO_TEST_CASE(cell_list_with_capped_and_few_bins_finds_the_brute_force_pa
   const WallBox walled{{0.0, 0.0}, {1.0, 1.0}, {false, false}};
   const WallBox periodic{{0.0, 0.0}, {0.25, 0.25}, {true, true}};
   const PairSearchResult a = find_touching_pairs_cell_list(tiny, walled);
-  const PairSearchResult b = find_touching_pairs_brute_force(tiny, walled);
+  const PairSearchResult b = oracles::find_touching_pairs_brute_force(tiny, walled);
   const PairSearchResult c = find_touching_pairs_cell_list(crowded, periodic);
-  const PairSearchResult d = find_touching_pairs_brute_force(crowded, periodic);
+  const PairSearchResult d = oracles::find_touching_pairs_brute_force(crowded, periodic);
   BOOST_TEST_MESSAGE("tiny: " << a.pairs.size() << " pairs; periodic two bins: " << c.pairs.size() << " pairs");
   BOOST_TEST(b.pairs.size() >= 20u);
   BOOST_TEST(a.pairs == b.pairs, boost::test_tools::per_element());

@@ -10,7 +10,7 @@
 
 #include "fluid/boundary_conditions.hpp"
 #include "fluid/operators.hpp"
-#include "fluid/reference_solver.hpp"
+#include "oracles/reference_solver.hpp"
 #include "fluid/spectral_solver.hpp"
 
 using namespace ibms;

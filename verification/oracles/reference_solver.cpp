@@ -1,5 +1,5 @@
 // Eigen sparse assembly of the 5-point operator with ghost rules (METHOD.md §2.5, §6) and CG.
-#include "fluid/reference_solver.hpp"
+#include "oracles/reference_solver.hpp"
 
 #include <Eigen/IterativeLinearSolvers>
 #include <Eigen/Sparse>
