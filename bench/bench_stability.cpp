@@ -35,7 +35,8 @@
 #include "sim/diagnostics.hpp"
 #include "sim/run.hpp"
 #include "solid/mass_spring_body.hpp"
-#include "validation/settling_disk/body_series.hpp"
+#include "metrics/body_series.hpp"
+#include "metrics/csv_reader.hpp"
 
 #include "bench_paths.hpp"
 
@@ -179,7 +180,7 @@ int main(int argc, char** argv) {
       run_simulation(sim, {path, /*quiet=*/true});
       std::printf("demo: the fixed-step run did not blow up\n");
     } catch (const BlowUpError& e) {
-      const validation::SeriesTable t = validation::read_series_csv(out_dir + "/demo_unstable_fixed_step_bodies.csv");
+      const SeriesTable t = read_series_csv(out_dir + "/demo_unstable_fixed_step_bodies.csv");
       long non_finite = 0, values = 0;
       for (const auto& [name, column] : t)
         for (double v : column) { ++values; non_finite += !std::isfinite(v); }

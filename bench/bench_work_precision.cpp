@@ -29,9 +29,10 @@
 #include "scene/scene_reader.hpp"
 #include "sim/diagnostics.hpp"
 #include "sim/run.hpp"
-#include "validation/common/centreline_extrema.hpp"
-#include "validation/common/profile_table.hpp"
-#include "validation/settling_disk/body_series.hpp"
+#include "metrics/profile.hpp"
+#include "metrics/grid_convergence.hpp"
+#include "metrics/body_series.hpp"
+#include "metrics/csv_reader.hpp"
 #include "verification/fluid/manufactured_solution.hpp"
 
 #include "bench_paths.hpp"
@@ -98,16 +99,10 @@ Point run_cavity(const std::string& case_name, int n, const std::string& work_di
       run_simulation(sim, {work_dir + "/" + case_name + "_" + std::to_string(n) + ".h5", /*quiet=*/true});
   const double seconds = seconds_since(start);
   const CentrelineProfiles p = centreline_profiles(sim);
-  const double worst = validation::largest_extremum_error(
-      validation::centreline_extrema(p.y, p.u, p.x, p.v),
-      validation::published_extrema(dir + "/reference/botella_peyret_extrema.csv"));
+  const double worst = largest_extremum_error(
+      centreline_extrema(p.y, p.u, p.x, p.v),
+      published_extrema(dir + "/reference/botella_peyret_extrema.csv"));
   return {n, 1.0 / n, summary.steps, seconds, worst};
-}
-
-double max_settling_speed(const std::vector<double>& v) {
-  double best = 0.0;
-  for (double x : v) best = std::max(best, -x);
-  return best;
 }
 
 // Settling disk with n_x cells across the 2 cm width (n_y = 3 n_x, rim spacing ~h) to t = 0.7 s.
@@ -122,21 +117,22 @@ Point run_settling(int n_x, const std::string& work_dir) {
   Simulation sim(scene);
   const RunSummary summary = run_simulation(sim, {out, /*quiet=*/true});
   const double seconds = seconds_since(start);
-  const validation::SeriesTable series = validation::read_series_csv(work_dir + "/settling_disk_" + std::to_string(n_x) + "_bodies.csv");
-  const validation::SeriesTable ref = validation::read_series_csv(dir + "/reference/ibms_settling_history.csv");
+  const SeriesTable series = read_series_csv(work_dir + "/settling_disk_" + std::to_string(n_x) + "_bodies.csv");
+  const SeriesTable ref = read_series_csv(dir + "/reference/ibms_settling_history.csv");
   const double speed = max_settling_speed(series.at("body_000/velocity_y"));
   const double speed_ref = max_settling_speed(ref.at("v"));
   return {n_x, 2.0 / n_x, summary.steps, seconds, std::abs(speed / speed_ref - 1.0)};
 }
 
-// Least-squares slope of log(error) against log(seconds) over all points.
+// Least-squares slope of log(error) against log(seconds) over all points (metrics::observed_order,
+// GSL's fit, with the wall time in the place of h).
 double work_precision_slope(const std::vector<Point>& points) {
-  double sx = 0, sy = 0, sxx = 0, sxy = 0, m = 0;
+  std::vector<double> seconds, errors;
   for (const Point& p : points) {
-    const double x = std::log(p.seconds), y = std::log(p.error);
-    sx += x; sy += y; sxx += x * x; sxy += x * y; m += 1;
+    seconds.push_back(p.seconds);
+    errors.push_back(p.error);
   }
-  return (m * sxy - sx * sy) / (m * sxx - sx * sx);
+  return observed_order(seconds, errors, 0).order;
 }
 
 // Wall time at which the error reaches `target`, interpolated in log-log between the first two

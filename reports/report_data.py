@@ -90,9 +90,11 @@ def read_reference_profile(path):
 
 
 def read_convergence(path):
-    """convergence.csv (title,N,h,error,order) appended by the convergence tests. A row with an
-    empty order starts a new table; the last table per title wins. Returns OrderedDict
-    title -> dict(N, h, error, order arrays)."""
+    """convergence.csv (title,N,h,error,order,fit_order,fit_standard_error) appended by the
+    convergence tests; the fit (least-squares order over the finest three levels and its standard
+    error, computed by the tests through metrics::observed_order) is on a table's finest row. A row
+    with an empty order starts a new table; the last table per title wins. Returns OrderedDict
+    title -> dict(N, h, error, order arrays, fit_order, fit_stderr: NaN where not written)."""
     tables = OrderedDict()
     if not os.path.isfile(path):
         return tables
@@ -107,7 +109,8 @@ def read_convergence(path):
             except ValueError:
                 continue
             if cells[4].strip() == "" or title not in current:
-                current[title] = dict(N=[], h=[], error=[], order=[])
+                current[title] = dict(N=[], h=[], error=[], order=[], fit_order=math.nan,
+                                      fit_stderr=math.nan)
                 tables.pop(title, None)
                 tables[title] = current[title]
             t = current[title]
@@ -115,17 +118,20 @@ def read_convergence(path):
             t["h"].append(h)
             t["error"].append(e)
             t["order"].append(float(cells[4]) if cells[4].strip() else math.nan)
+            if len(cells) >= 7 and cells[5].strip():
+                t["fit_order"] = float(cells[5])
+                t["fit_stderr"] = float(cells[6]) if cells[6].strip() else math.nan
     return tables
 
 
-def finest_three_slope(h, e):
-    """Least-squares slope of log e against log h over the finest three levels (as the tests)."""
+def fit_line(h, e, slope):
+    """Intercept of the line of the given slope through the finest three (h, e) in log-log (the
+    least-squares intercept for that slope), for drawing the tests' fit; NaN without a slope."""
     h, e = np.asarray(h, float)[-3:], np.asarray(e, float)[-3:]
     ok = (h > 0) & (e > 0) & np.isfinite(e)
-    if ok.sum() < 2:
-        return math.nan, math.nan
-    slope, intercept = np.polyfit(np.log(h[ok]), np.log(e[ok]), 1)
-    return float(slope), float(intercept)
+    if ok.sum() < 2 or not np.isfinite(slope):
+        return math.nan
+    return float(np.mean(np.log(e[ok])) - slope * np.mean(np.log(h[ok])))
 
 
 def read_ctest_logs(build):

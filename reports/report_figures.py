@@ -265,8 +265,9 @@ def convergence(tables, out):
         t = tables[title]
         h, e = np.array(t["h"]), np.array(t["error"])
         ax.loglog(h, e, "o-", ms=3.5, lw=1, label="measured")
-        slope, icpt = data.finest_three_slope(h, e)
-        if np.isfinite(slope):
+        slope = t.get("fit_order", math.nan)
+        icpt = data.fit_line(h, e, slope)
+        if np.isfinite(slope) and np.isfinite(icpt):
             hh = h[-3:]
             ax.loglog(hh, np.exp(icpt) * hh ** slope, "k--", lw=1, label="fit: slope %.2f" % slope)
         ax.set_title("(%d) %s" % (k + 1, _short(title.split(": ", 1)[-1], 40)), fontsize=7)

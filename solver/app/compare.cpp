@@ -1,9 +1,10 @@
-// `ibms compare` (compare.hpp). The metrics and tolerances are those of the case checks:
-// validation/common/cavity_check.cpp (max |centre-line velocity - Ghia| over the unflagged Ghia
-// points, tolerances of validation/CMakeLists.txt) and validation/settling_disk/check.cpp (maximum
-// settling speed within 3 % of 5.5 cm/s); the same metric is also taken against ibms's own finest
-// run (validation/<case>/reference/ibms_*.csv, see each reference/README_ibms.md). The two body
-// cavities are in compare_bodies.cpp.
+// `ibms compare` (compare.hpp). The metrics and criteria are those of the case checks, from the one
+// definition in the metrics module (metrics/case_criteria.hpp, metrics/profile.hpp,
+// metrics/body_series.hpp): validation/common/cavity_check.cpp (max |centre-line velocity - Ghia|
+// over the unflagged Ghia points) and validation/settling_disk/check.cpp (maximum settling speed
+// within 3 % of 5.5 cm/s); the same metric is also taken against ibms's own finest run
+// (validation/<case>/reference/ibms_*.csv, see each reference/README_ibms.md). The two body
+// cavities are in compare_bodies.cpp, the DFG cylinders in compare_dfg.cpp.
 #include "app/compare.hpp"
 
 #include <fmt/format.h>
@@ -17,11 +18,12 @@
 
 #include "app/compare_bodies.hpp"
 #include "app/compare_dfg.hpp"
-#include "app/compare_input.hpp"
 #include "app/compare_report.hpp"
 #include "core/errors.hpp"
-#include "validation/common/profile_table.hpp"
-#include "validation/settling_disk/body_series.hpp"
+#include "metrics/body_series.hpp"
+#include "metrics/case_criteria.hpp"
+#include "metrics/csv_reader.hpp"
+#include "metrics/profile.hpp"
 
 #ifndef IBMS_VALIDATION_DIR
 #define IBMS_VALIDATION_DIR ""
@@ -30,43 +32,24 @@
 namespace ibms {
 namespace {
 
-using validation::interpolate;
-using validation::profile_extremum;
+using criteria::CavityCase;
 
-struct CavityCase {
-  std::string name;
-  double tolerance;         // [lid speed]; validation/CMakeLists.txt (ibms_add_cavity_case)
-  std::string ghia_u, ghia_v;  // empty: no published profile (two-sided cavity)
-};
-
-// Tolerances: issue 2 / DESIGN.md §7 (0.01 at Re 100 and 400, 0.02 at Re 1000, the level Ghia's own
-// 129^2/257^2 solution allows). The two-sided cavity has no published profile; its ibms-reference
-// deviation uses the Re 100 tolerance, 0.01 of the lid speed.
-const std::vector<CavityCase>& cavity_cases() {
-  static const std::vector<CavityCase> cases{
-      {"lid_driven_cavity_re100", 0.01, "ghia_u_re100.csv", "ghia_v_re100.csv"},
-      {"lid_driven_cavity_re400", 0.01, "ghia_u_re400.csv", "ghia_v_re400.csv"},
-      {"lid_driven_cavity_re1000", 0.02, "ghia_u_re1000.csv", "ghia_v_re1000.csv"},
-      {"two_sided_cavity_re100", 0.01, "", ""}};
-  return cases;
-}
 const std::string settling_case = "settling_disk";
-constexpr double settling_tolerance = 0.03;  // relative; validation/settling_disk/README.md (issue 3 §5)
 
 struct Profile { std::vector<double> s, value; };  // s: coordinate along the line [length]
 
-void require_rows(const CompareTable& t, std::size_t n, const std::string& what) {
+void require_rows(const CsvTable& t, std::size_t n, const std::string& what) {
   if (t.lines.size() < n)
     throw InputError(t.path + ":" + std::to_string(t.header_line) + ": " + what + " needs at least " +
                      std::to_string(n) + " rows, got " + std::to_string(t.lines.size()));
 }
 
 // A (coordinate, value) profile from the columns named in `coordinate` and `value` aliases.
-bool take_profile(const CompareTable& t, const std::vector<std::string>& coordinate,
+bool take_profile(const CsvTable& t, const std::vector<std::string>& coordinate,
                   const std::vector<std::string>& value, Profile& out) {
   const int c = t.find(coordinate), v = t.find(value);
   if (c < 0 || v < 0) return false;
-  require_rows(t, 4, "a centre-line profile (4-point interpolation)");
+  require_rows(t, 4, "a centre-line profile");
   require_increasing(t, c);
   for (std::size_t k = 0; k < t.lines.size(); ++k)
     if (t.columns[c][k] < -1e-9 || t.columns[c][k] > 1 + 1e-9)
@@ -76,20 +59,16 @@ bool take_profile(const CompareTable& t, const std::vector<std::string>& coordin
   return true;
 }
 
-Profile reference_profile(const std::string& path) {
-  const validation::Table t = validation::read_table(path);
-  return {t.columns[0], t.columns[1]};
-}
-
-// max |submitted - reference| at the reference points inside the submitted range; n_used counts them.
-double max_deviation(const Profile& submitted, const std::vector<double>& s, const std::vector<double>& value,
-                     const std::vector<std::string>* flags, int& n_used) {
+// max |submitted - reference| at the unflagged reference points inside the submitted range;
+// n_used counts them.
+double max_deviation(const Profile& submitted, const ProfileTable& ref, int& n_used) {
+  const ProfileSpline spline(submitted.s, submitted.value);
   double worst = 0.0;
   n_used = 0;
-  for (std::size_t k = 0; k < s.size(); ++k) {
-    if (flags != nullptr && !(*flags)[k].empty()) continue;  // flagged Ghia points are excluded, as in the check
-    if (s[k] < submitted.s.front() - 1e-12 || s[k] > submitted.s.back() + 1e-12) continue;
-    worst = std::max(worst, std::abs(interpolate(submitted.s, submitted.value, s[k]) - value[k]));
+  for (std::size_t k = 0; k < ref.s.size(); ++k) {
+    if (!ref.flags[k].empty()) continue;
+    if (ref.s[k] < submitted.s.front() - 1e-12 || ref.s[k] > submitted.s.back() + 1e-12) continue;
+    worst = std::max(worst, std::abs(spline(ref.s[k]) - ref.f[k]));
     ++n_used;
   }
   return worst;
@@ -105,7 +84,7 @@ int compare_cavity(const CavityCase& c, const std::vector<std::string>& files, c
   Profile u, v;
   bool have_u = false, have_v = false;
   for (const std::string& f : files) {
-    const CompareTable t = read_compare_csv(f);
+    const CsvTable t = read_csv(f);
     bool used = false;
     if (take_profile(t, {"y"}, {"u"}, u)) { have_u = used = true; }
     if (take_profile(t, {"x"}, {"v"}, v)) { have_v = used = true; }
@@ -115,42 +94,41 @@ int compare_cavity(const CavityCase& c, const std::vector<std::string>& files, c
   }
   std::string all_files;
   for (const std::string& f : files) all_files += (all_files.empty() ? "" : ", ") + f;
-  if (!have_u) throw InputError(all_files + ": no u profile (columns y,u) for " + c.name);
-  if (!have_v) throw InputError(all_files + ": no v profile (columns x,v) for " + c.name);
+  if (!have_u) throw InputError(all_files + ": no u profile (columns y,u) for " + std::string(c.name));
+  if (!have_v) throw InputError(all_files + ": no v profile (columns x,v) for " + std::string(c.name));
   require_coverage(u, all_files, "u(0.5, y)");
   require_coverage(v, all_files, "v(x, 0.5)");
 
-  const std::string dir = ref_dir + "/" + c.name + "/reference/";
-  const Profile ref_u = reference_profile(dir + "ibms_centreline_u.csv");
-  const Profile ref_v = reference_profile(dir + "ibms_centreline_v.csv");
-  std::printf("ibms compare %s: %s\n", c.name.c_str(), all_files.c_str());
+  const std::string dir = ref_dir + "/" + std::string(c.name) + "/reference/";
+  const ProfileTable ref_u = read_profile_table(dir + "ibms_centreline_u.csv");
+  const ProfileTable ref_v = read_profile_table(dir + "ibms_centreline_v.csv");
+  std::printf("ibms compare %s: %s\n", std::string(c.name).c_str(), all_files.c_str());
   Verdict::header();
   Verdict verdict;
   int n_u = 0, n_v = 0;
   if (!c.ghia_u.empty()) {
-    const validation::Table gu = validation::read_table(dir + c.ghia_u), gv = validation::read_table(dir + c.ghia_v);
-    const double du = max_deviation(u, gu.columns[0], gu.columns[1], &gu.flags, n_u);
-    const double dv = max_deviation(v, gv.columns[0], gv.columns[1], &gv.flags, n_v);
+    const double du = max_deviation(u, read_profile_table(dir + std::string(c.ghia_u)), n_u);
+    const double dv = max_deviation(v, read_profile_table(dir + std::string(c.ghia_v)), n_v);
     verdict.line(fmt::format("max |centre-line velocity - Ghia| (lid speed 1; {}+{} points)", n_u, n_v),
                  c.tolerance, std::max(du, dv));
   }
-  const double du = max_deviation(u, ref_u.s, ref_u.value, nullptr, n_u);
-  const double dv = max_deviation(v, ref_v.s, ref_v.value, nullptr, n_v);
+  const double du = max_deviation(u, ref_u, n_u);
+  const double dv = max_deviation(v, ref_v, n_v);
   verdict.line(fmt::format("max |centre-line velocity - ibms reference| ({}+{} points)", n_u, n_v), c.tolerance,
                std::max(du, dv));
   // The extrema the checks' grid-convergence study uses, and the symmetry defect of the two-sided
   // case (exact in a symmetric scheme; reported, not gated, for another code).
-  Verdict::info("min u on x = 0.5", profile_extremum(u.s, u.value, false), profile_extremum(ref_u.s, ref_u.value, false));
-  Verdict::info("max v on y = 0.5", profile_extremum(v.s, v.value, true), profile_extremum(ref_v.s, ref_v.value, true));
-  Verdict::info("min v on y = 0.5", profile_extremum(v.s, v.value, false), profile_extremum(ref_v.s, ref_v.value, false));
+  const ProfileSpline su(u.s, u.value), sv(v.s, v.value), rsu(ref_u.s, ref_u.f), rsv(ref_v.s, ref_v.f);
+  Verdict::info("min u on x = 0.5", su.extremum(false), rsu.extremum(false));
+  Verdict::info("max v on y = 0.5", sv.extremum(true), rsv.extremum(true));
+  Verdict::info("min v on y = 0.5", sv.extremum(false), rsv.extremum(false));
   if (c.ghia_u.empty()) {
     double defect = 0.0;
     for (const double s : {0.125, 0.25, 0.375, 0.5})
-      defect = std::max({defect, std::abs(interpolate(u.s, u.value, s) + interpolate(u.s, u.value, 1 - s)),
-                         std::abs(interpolate(v.s, v.value, s) + interpolate(v.s, v.value, 1 - s))});
+      defect = std::max({defect, std::abs(su(s) + su(1 - s)), std::abs(sv(s) + sv(1 - s))});
     Verdict::info("point-symmetry defect |f(s) + f(1-s)|, s = 1/8..1/2", defect, 0.0);
   }
-  std::printf("%s: %s\n", c.name.c_str(), verdict.pass ? "pass" : "FAIL");
+  std::printf("%s: %s\n", std::string(c.name).c_str(), verdict.pass ? "pass" : "FAIL");
   return verdict.pass ? 0 : 1;
 }
 
@@ -158,7 +136,7 @@ int compare_cavity(const CavityCase& c, const std::vector<std::string>& files, c
 // optional y [cm] (centre height). Accepts ibms's own <stem>_bodies.csv by its column names.
 struct History { std::vector<double> t, v, y; };
 
-History take_history(const CompareTable& t) {
+History take_history(const CsvTable& t) {
   const int ct = t.find({"t", "time"});
   const int cv = t.find({"v", "velocity_y", "body_000/velocity_y"});
   const int cy = t.find({"y", "centroid_y", "body_000/centroid_y"});
@@ -171,10 +149,9 @@ History take_history(const CompareTable& t) {
 
 double max_speed(const History& h, double& at) {
   std::size_t k_max = 0;
-  for (std::size_t k = 0; k < h.v.size(); ++k)
-    if (-h.v[k] > -h.v[k_max]) k_max = k;
+  const double speed = max_settling_speed(h.v, &k_max);
   at = h.t[k_max];
-  return -h.v[k_max];
+  return speed;
 }
 
 double linear(const std::vector<double>& x, const std::vector<double>& f, double xq) {
@@ -183,21 +160,17 @@ double linear(const std::vector<double>& x, const std::vector<double>& f, double
   return (1 - w) * f[k - 1] + w * f[k];
 }
 
-double touchdown(const History& h, double level) {
-  for (std::size_t k = 1; k < h.y.size(); ++k)
-    if (h.y[k] <= level && h.y[k - 1] > level)
-      return h.t[k - 1] + (h.y[k - 1] - level) / (h.y[k - 1] - h.y[k]) * (h.t[k] - h.t[k - 1]);
-  return NAN;
-}
+double touchdown(const History& h, double level) { return first_crossing_below(h.t, h.y, level); }
 
 int compare_settling(const std::vector<std::string>& files, const std::string& ref_dir) {
   if (files.size() != 1) throw InputError("settling_disk: give exactly one CSV file (columns t,v[,y])");
-  const History h = take_history(read_compare_csv(files[0]));
+  const History h = take_history(read_csv(files[0]));
   const std::string dir = ref_dir + "/" + settling_case + "/reference/";
-  const History ref = take_history(read_compare_csv(dir + "ibms_settling_history.csv"));
+  const History ref = take_history(read_csv(dir + "ibms_settling_history.csv"));
   // Published values (reference/settling_disk_rho1.25.csv): max settling speed 5.5 cm/s, touchdown 0.80 s.
-  const double published = validation::reference_value(dir + "settling_disk_rho1.25.csv", "max_settling_speed");
-  const double touchdown_level = 0.14;  // cm: centre height of the touchdown time (the reference's definition)
+  const double published = reference_value(dir + "settling_disk_rho1.25.csv", "max_settling_speed");
+  const double touchdown_level = criteria::settling_touchdown_height;
+  const double settling_tolerance = criteria::settling_speed_tolerance;
   std::printf("ibms compare %s: %s\n", settling_case.c_str(), files[0].c_str());
   Verdict::header();
   double t_max = 0, t_max_ref = 0;
@@ -230,7 +203,7 @@ const std::string dkt_case = "dkt_two_disks";
 
 int compare_dkt(const std::vector<std::string>& files, const std::string& ref_dir) {
   if (files.size() != 1) throw InputError("dkt_two_disks: give exactly one CSV file (t,y_trailing,y_leading,v_trailing[,v_leading])");
-  const CompareTable t = read_compare_csv(files[0]);
+  const CsvTable t = read_csv(files[0]);
   const int ct = t.find({"t", "time"});
   const int cy0 = t.find({"y_trailing", "body_000/centroid_y"});
   const int cy1 = t.find({"y_leading", "body_001/centroid_y"});
@@ -242,8 +215,8 @@ int compare_dkt(const std::vector<std::string>& files, const std::string& ref_di
   require_rows(t, 2, "a DKT history");
   require_increasing(t, ct);
   const std::string ref = ref_dir + "/" + dkt_case + "/reference/wan_turek_dkt_digitized.csv";
-  const double speed_ref = validation::reference_value(ref, "max_settling_speed_trailing");
-  const double time_ref = validation::reference_value(ref, "time_of_max_speed_trailing");
+  const double speed_ref = reference_value(ref, "max_settling_speed_trailing");
+  const double time_ref = reference_value(ref, "time_of_max_speed_trailing");
   const std::vector<double>& time = t.columns[ct];
   std::size_t k_max = 0, k_max_leading = 0;
   double t_level = NAN;
@@ -256,15 +229,17 @@ int compare_dkt(const std::vector<std::string>& files, const std::string& ref_di
   std::printf("ibms compare %s: %s\n", dkt_case.c_str(), files[0].c_str());
   Verdict::header();
   Verdict verdict;
-  verdict.line(fmt::format("|trailing max settling speed / {:.4g} cm/s - 1|", speed_ref), 0.04, std::abs(speed / speed_ref - 1));
-  verdict.line(fmt::format("|time of that maximum - {:.4g} s| [s]", time_ref), 0.1, std::abs(time[k_max] - time_ref));
+  verdict.line(fmt::format("|trailing max settling speed / {:.4g} cm/s - 1|", speed_ref), criteria::dkt_speed_tolerance,
+               std::abs(speed / speed_ref - 1));
+  verdict.line(fmt::format("|time of that maximum - {:.4g} s| [s]", time_ref), criteria::dkt_time_tolerance,
+               std::abs(time[k_max] - time_ref));
   verdict.gate("trailing disk ends below the leading one (1 = yes)", "= 1",
                t.columns[cy0].back() < t.columns[cy1].back() ? 1.0 : 0.0, t.columns[cy0].back() < t.columns[cy1].back());
   if (cv1 >= 0)
     Verdict::info("leading max settling speed [cm/s]", -t.columns[cv1][k_max_leading],
-                  validation::reference_value(ref, "max_settling_speed_leading"));
+                  reference_value(ref, "max_settling_speed_leading"));
   Verdict::info("time the pair is horizontal [s] (set by the initial perturbation)", t_level,
-                validation::reference_value(ref, "time_pair_horizontal"));
+                reference_value(ref, "time_pair_horizontal"));
   std::printf("%s: %s\n", dkt_case.c_str(), verdict.pass ? "pass" : "FAIL");
   return verdict.pass ? 0 : 1;
 }
@@ -273,7 +248,7 @@ int compare_dkt(const std::vector<std::string>& files, const std::string& ref_di
 
 std::vector<std::string> compare_case_names() {
   std::vector<std::string> names;
-  for (const CavityCase& c : cavity_cases()) names.push_back(c.name);
+  for (const CavityCase& c : criteria::cavity_cases) names.emplace_back(c.name);
   names.push_back(settling_case);
   names.push_back(dkt_case);
   names.push_back("cavity_swelling_particles");
@@ -298,7 +273,7 @@ int compare_case(const std::string& case_name, const std::vector<std::string>& f
   if (std::find(names.begin(), names.end(), case_name) != names.end() &&
       !std::filesystem::is_directory(validation_dir + "/" + case_name + "/reference"))
     throw InputError(validation_dir + "/" + case_name + "/reference: not found (set --validation-dir)");
-  for (const CavityCase& c : cavity_cases())
+  for (const CavityCase& c : criteria::cavity_cases)
     if (c.name == case_name) return compare_cavity(c, files, validation_dir);
   if (case_name == settling_case) return compare_settling(files, validation_dir);
   if (case_name == dkt_case) return compare_dkt(files, validation_dir);

@@ -12,7 +12,9 @@
 #include <cstdio>
 #include <map>
 
-#include "app/compare_input.hpp"
+#include "metrics/body_series.hpp"
+#include "metrics/case_criteria.hpp"
+#include "metrics/csv_reader.hpp"
 #include "app/compare_report.hpp"
 #include "core/errors.hpp"
 
@@ -44,7 +46,7 @@ std::string g(double v) { return fmt::format("{:.10g}", v); }
 
 // Long format: one row per (time, particle); every particle has a row at every time, and each
 // particle's times increase strictly in file order.
-BodySeries read_long(const CompareTable& t, const std::vector<Quantity>& quantities, const std::string& columns_text) {
+BodySeries read_long(const CsvTable& t, const std::vector<Quantity>& quantities, const std::string& columns_text) {
   const int ct = t.find({"time", "t"}), cp = t.find({"particle", "body"});
   std::vector<int> cq;
   for (const Quantity& q : quantities) {
@@ -107,7 +109,7 @@ BodySeries read_long(const CompareTable& t, const std::vector<Quantity>& quantit
 std::string body_column(int b, const std::string& suffix) { return fmt::format("body_{:03d}/{}", b, suffix); }
 
 // ibms's <stem>_bodies.csv: `time` and body_NNN/<suffix> per body, one row per written step.
-BodySeries read_wide(const CompareTable& t, const std::vector<Quantity>& quantities) {
+BodySeries read_wide(const CsvTable& t, const std::vector<Quantity>& quantities) {
   const int ct = t.find({"time", "t"});
   if (ct < 0) throw InputError(where(t.path, t.header_line) + "ibms body series without a 'time' column");
   if (t.lines.size() < 2)
@@ -140,7 +142,7 @@ BodySeries read_wide(const CompareTable& t, const std::vector<Quantity>& quantit
 // body_000/<first quantity's suffix>.
 BodySeries read_body_series(const std::string& path, const std::vector<Quantity>& quantities,
                             const std::string& columns_text) {
-  const CompareTable t = read_compare_csv(path);
+  const CsvTable t = read_csv(path);
   if (t.find({"particle", "body"}) < 0 && t.find({body_column(0, quantities[0].wide_suffix)}) >= 0)
     return read_wide(t, quantities);
   return read_long(t, quantities, columns_text);
@@ -157,7 +159,8 @@ void require_window(const BodySeries& s, double t0, double t1, double slack, con
 // ---- cavity_swelling_particles ------------------------------------------------------------------
 
 const std::string swelling_case = "cavity_swelling_particles";
-constexpr double t_stop = 10.0, t_late = 15.0, t_end = 20.0;  // CMakeLists.txt of the case (check arguments)
+constexpr double t_stop = criteria::particles_t_stop, t_late = criteria::particles_t_late,
+                 t_end = criteria::particles_t_end;
 
 const std::vector<Quantity>& trajectory_quantities() {
   static const std::vector<Quantity> q{{{"x", "centroid_x"}, "centroid_x", true}, {{"y", "centroid_y"}, "centroid_y", true}};
@@ -171,16 +174,11 @@ bool chord_in_window(const BodySeries& s, std::size_t k, double t0, double t1) {
   return s.t[k - 1] >= t0 && s.t[k] <= t1;
 }
 
-// Mean over particles of the centroid path length over [t0, t1]: the sum of the chords between
-// consecutive output times both inside the window (as check.cpp's mean_path_length).
+// Mean over particles of the centroid path length over [t0, t1] (metrics/body_series.hpp: the one
+// definition, which the case check uses too).
 double mean_path_length(const BodySeries& s, double t0, double t1) {
   double total = 0;
-  for (std::size_t b = 0; b < s.bodies(); ++b) {
-    const auto& x = s.q[0][b];
-    const auto& y = s.q[1][b];
-    for (std::size_t k = 1; k < s.t.size(); ++k)
-      if (chord_in_window(s, k, t0, t1)) total += std::hypot(x[k] - x[k - 1], y[k] - y[k - 1]);
-  }
+  for (std::size_t b = 0; b < s.bodies(); ++b) total += path_length(s.t, s.q[0][b], s.q[1][b], t0, t1);
   return total / static_cast<double>(s.bodies());
 }
 
@@ -201,9 +199,9 @@ BodySeries read_trajectories(const std::string& path) {
 // ---- cavity_deformable_objects ------------------------------------------------------------------
 
 const std::string deformable_case = "cavity_deformable_objects";
-constexpr double deformable_end = 20.0;      // CMakeLists.txt of the case (check argument)
-constexpr double deformation_ratio_min = 2;  // README.md, check 5
-constexpr double area_min = 0.5, area_max = 1.5;  // README.md, check 4 (of A0)
+constexpr double deformable_end = criteria::deformable_t_end;
+constexpr double deformation_ratio_min = criteria::deformation_ratio_min;  // README.md, check 5
+constexpr double area_min = criteria::area_ratio_min, area_max = criteria::area_ratio_max;  // check 4 (of A0)
 
 struct DeformationFigures {
   std::size_t bodies = 0, times = 0;

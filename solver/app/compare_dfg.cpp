@@ -10,22 +10,22 @@
 #include <cmath>
 #include <cstdio>
 
-#include "app/compare_input.hpp"
+#include "metrics/csv_reader.hpp"
 #include "app/compare_report.hpp"
 #include "core/errors.hpp"
 #include "sim/force_metrics.hpp"
-#include "validation/settling_disk/body_series.hpp"
+#include "metrics/case_criteria.hpp"
 
 namespace ibms {
 namespace {
 
-constexpr double steady_drag_tolerance = 0.01;    // 2D-1 c_D (issue 11)
-constexpr double strouhal_tolerance = 0.01;       // 2D-2 St
-constexpr double drag_max_tolerance = 0.02;       // 2D-2 max c_D
+constexpr double steady_drag_tolerance = criteria::dfg_steady_drag_tolerance;
+constexpr double strouhal_tolerance = criteria::dfg_strouhal_tolerance;
+constexpr double drag_max_tolerance = criteria::dfg_drag_max_tolerance;
 constexpr double periodic_window = 4.0;           // time units at the end of the history
 constexpr double diameter = 0.1, mean_speed_2d2 = 1.0;
 
-int column(const CompareTable& t, const std::vector<std::string>& aliases, bool required, const std::string& what) {
+int column(const CsvTable& t, const std::vector<std::string>& aliases, bool required, const std::string& what) {
   const int c = t.find(aliases);
   if (c < 0 && required)
     throw InputError(t.path + ":" + std::to_string(t.header_line) + ": header needs a column " + what);
@@ -33,7 +33,7 @@ int column(const CompareTable& t, const std::vector<std::string>& aliases, bool 
 }
 
 // Delta p per row: a pressure_difference column, or ibms's six probe pressures; empty if neither.
-std::vector<double> pressure_difference(const CompareTable& t) {
+std::vector<double> pressure_difference(const CsvTable& t) {
   const int c = t.find({"pressure_difference", "delta_p", "dp"});
   if (c >= 0) return t.columns[c];
   std::array<int, 6> p{};
@@ -56,7 +56,7 @@ const std::vector<std::string> lift_names{"lift_coefficient", "c_l", "cl", "body
 struct SteadyFigures { double drag, lift, dp; };
 
 SteadyFigures steady_figures(const std::string& path) {
-  const CompareTable t = read_compare_csv(path);
+  const CsvTable t = read_csv(path);
   if (t.lines.empty()) throw InputError(path + ": no data rows");
   const int cd = column(t, drag_names, true, "drag_coefficient");
   const int cl = column(t, lift_names, true, "lift_coefficient");
@@ -65,7 +65,7 @@ SteadyFigures steady_figures(const std::string& path) {
 }
 
 PeriodicForces periodic_figures(const std::string& path) {
-  const CompareTable t = read_compare_csv(path);
+  const CsvTable t = read_csv(path);
   const int ct = column(t, {"time", "t"}, true, "time");
   const int cd = column(t, drag_names, true, "drag_coefficient");
   const int cl = column(t, lift_names, true, "lift_coefficient");
@@ -88,7 +88,7 @@ int compare_dfg_steady(const std::vector<std::string>& files, const std::string&
   const std::string dir = validation_dir + "/dfg_cylinder_2d1/reference/";
   const SteadyFigures f = steady_figures(files[0]);
   const SteadyFigures own = steady_figures(dir + "ibms_dfg_2d1.csv");
-  const double drag_ref = validation::reference_value(dir + "dfg_2d1.csv", "drag_coefficient");
+  const double drag_ref = reference_value(dir + "dfg_2d1.csv", "drag_coefficient");
   std::printf("ibms compare dfg_cylinder_2d1: %s\n", files[0].c_str());
   Verdict::header();
   Verdict verdict;
@@ -97,8 +97,8 @@ int compare_dfg_steady(const std::vector<std::string>& files, const std::string&
   verdict.line(fmt::format("|c_D / {:.6g} (ibms reference) - 1|", own.drag), steady_drag_tolerance,
                std::abs(f.drag / own.drag - 1));
   Verdict::info("c_D", f.drag, drag_ref);
-  Verdict::info("c_L", f.lift, validation::reference_value(dir + "dfg_2d1.csv", "lift_coefficient"));
-  if (!std::isnan(f.dp)) Verdict::info("Delta p", f.dp, validation::reference_value(dir + "dfg_2d1.csv", "pressure_difference"));
+  Verdict::info("c_L", f.lift, reference_value(dir + "dfg_2d1.csv", "lift_coefficient"));
+  if (!std::isnan(f.dp)) Verdict::info("Delta p", f.dp, reference_value(dir + "dfg_2d1.csv", "pressure_difference"));
   std::printf("dfg_cylinder_2d1: %s\n", verdict.pass ? "pass" : "FAIL");
   return verdict.pass ? 0 : 1;
 }
@@ -109,8 +109,8 @@ int compare_dfg_periodic(const std::vector<std::string>& files, const std::strin
   const PeriodicForces f = periodic_figures(files[0]);
   const PeriodicForces own = periodic_figures(dir + "ibms_dfg_2d2_forces.csv");
   const std::string ref = dir + "dfg_2d2.csv";
-  const double st_ref = validation::reference_value(ref, "strouhal_number");
-  const double cd_ref = validation::reference_value(ref, "drag_coefficient_max");
+  const double st_ref = reference_value(ref, "strouhal_number");
+  const double cd_ref = reference_value(ref, "drag_coefficient_max");
   std::printf("ibms compare dfg_cylinder_2d2: %s (%d lift periods in the last %g time units)\n", files[0].c_str(),
               f.periods, periodic_window);
   Verdict::header();
@@ -121,10 +121,10 @@ int compare_dfg_periodic(const std::vector<std::string>& files, const std::strin
   verdict.line(fmt::format("|St / {:.5g} (ibms reference) - 1|", own.strouhal), strouhal_tolerance, std::abs(f.strouhal / own.strouhal - 1));
   verdict.line(fmt::format("|max c_D / {:.5g} (ibms reference) - 1|", own.drag_max), drag_max_tolerance,
                std::abs(f.drag_max / own.drag_max - 1));
-  Verdict::info("max c_L", f.lift_max, validation::reference_value(ref, "lift_coefficient_max"));
+  Verdict::info("max c_L", f.lift_max, reference_value(ref, "lift_coefficient_max"));
   if (!std::isnan(f.pressure_difference_half_period))
     Verdict::info("Delta p half a period after max c_L", f.pressure_difference_half_period,
-                  validation::reference_value(ref, "pressure_difference_half_period"));
+                  reference_value(ref, "pressure_difference_half_period"));
   std::printf("dfg_cylinder_2d2: %s\n", verdict.pass ? "pass" : "FAIL");
   return verdict.pass ? 0 : 1;
 }

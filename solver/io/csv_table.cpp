@@ -1,7 +1,11 @@
 // CSV tables with units in the header (csv_table.hpp).
 #include "io/csv_table.hpp"
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
@@ -55,6 +59,37 @@ void write_csv(const std::string& path, const std::vector<std::string>& comments
     std::remove(path.c_str());  // a truncated table would read as a shorter run
     throw OutputError(fmt::format("{}: cannot write CSV file: {}", path, reason != 0 ? std::strerror(reason) : "write failed"));
   }
+}
+
+std::string append_csv_rows(const std::string& path, const std::string& header, const std::vector<std::string>& rows) {
+  if (rows.empty()) return "";
+  std::string block;
+  for (const std::string& r : rows) block += r + "\n";
+  int fd = ::open(path.c_str(), O_WRONLY | O_APPEND | O_CREAT | O_EXCL, 0644);
+  if (fd >= 0) {
+    if (!header.empty()) block = header + "\n" + block;
+  } else {
+    fd = ::open(path.c_str(), O_WRONLY | O_APPEND);
+  }
+  if (fd < 0) return fmt::format("{}: cannot append: {}", path, std::strerror(errno));
+  const ssize_t written = ::write(fd, block.data(), block.size());
+  const int reason = errno;
+  ::close(fd);
+  if (written != static_cast<ssize_t>(block.size()))
+    return fmt::format("{}: short write: {}", path, written < 0 ? std::strerror(reason) : "disk full?");
+  return "";
+}
+
+std::string csv_text(const std::string& text, bool always_quote) {
+  if (!always_quote && text.find_first_of(",\"\n") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return quoted + "\"";
+}
+
+std::string csv_number(double value, bool nan_empty) {
+  if (nan_empty && std::isnan(value)) return "";
+  return fmt::format("{:.17g}", value);
 }
 
 }  // namespace ibms

@@ -69,22 +69,4 @@ PeriodicForces periodic_forces(const std::vector<double>& time, const std::vecto
   return out;
 }
 
-Richardson richardson(double h1, double h2, double h3, double f1, double f2, double f3) {
-  Richardson r;
-  const double r21 = h2 / h1, r32 = h3 / h2, e21 = f2 - f1, e32 = f3 - f2;
-  if (e21 == 0.0 || e32 / e21 <= 0.0) return r;  // oscillatory or converged: no order
-  double p = std::log(std::abs(e32 / e21)) / std::log(r21);
-  for (int it = 0; it < 200; ++it) {  // fixed point of Celik et al. (2008) eq. 3 (s = 1)
-    const double q = std::log((std::pow(r21, p) - 1.0) / (std::pow(r32, p) - 1.0));
-    const double next = std::abs(std::log(std::abs(e32 / e21)) + q) / std::log(r21);
-    const bool done = std::abs(next - p) < 1e-12;
-    p = next;
-    if (done) break;
-  }
-  r.order = p;
-  r.value = (std::pow(r21, p) * f1 - f2) / (std::pow(r21, p) - 1.0);
-  r.gci = 1.25 * std::abs((f1 - f2) / f1) / (std::pow(r21, p) - 1.0);
-  return r;
-}
-
 }  // namespace ibms

@@ -4,9 +4,8 @@
 //    normal, by the quadratic through them evaluated at the rim (the diffuse immersed boundary
 //    smears the pressure jump over ~3 cells, so the value at the rim itself is a mixture);
 //  - periodic_forces: maxima of c_D and c_L, the Strouhal number from the mean period between
-//    upward crossings of c_L - mean(c_L), and Delta p half a period after the last lift maximum;
-//  - richardson: observed order, extrapolated value and fine-grid GCI over three grids with any
-//    refinement ratios (Celik et al. 2008, J. Fluids Eng. 130, 078001).
+//    upward crossings of c_L - mean(c_L), and Delta p half a period after the last lift maximum.
+// (Richardson extrapolation over grids: metrics/grid_convergence.hpp.)
 #pragma once
 #include <array>
 #include <cmath>
@@ -39,11 +38,5 @@ struct PeriodicForces {
 PeriodicForces periodic_forces(const std::vector<double>& time, const std::vector<double>& drag,
                                const std::vector<double>& lift, const std::vector<double>& pressure_difference,
                                double t_from, double length, double speed);
-
-struct Richardson {
-  double order = NAN, value = NAN, gci = NAN;  // NaN order and value: differences of changing sign
-};
-// f1 on the finest grid (spacing h1), f3 on the coarsest.
-Richardson richardson(double h1, double h2, double h3, double f1, double f2, double f3);
 
 }  // namespace ibms

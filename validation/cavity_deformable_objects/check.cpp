@@ -12,7 +12,9 @@
 //   5. the deformation measure is clearly larger for k = 10: the mean over bodies and output
 //      times of the deformation parameter (r_max - r_min)/(r_max + r_min) of the rim radii
 //      (solid/body_geometry.hpp) is at least twice that of k = 100.
-// usage: cavity_objects_check <end_time> <cds_radius> <base_k10> <base_k100>
+// usage: cavity_objects_check <cds_radius> <base_k10> <base_k100>
+// The end time, the area band and the deformation ratio are solver/metrics/case_criteria.hpp's
+// (one definition with `ibms compare`).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -20,8 +22,11 @@
 #include <string>
 
 #include "../common/results_csv.hpp"
-#include "../settling_disk/body_series.hpp"
+#include "metrics/body_series.hpp"
+#include "metrics/case_criteria.hpp"
+#include "metrics/csv_reader.hpp"
 
+using namespace ibms;
 using namespace ibms::validation;
 
 namespace {
@@ -63,21 +68,23 @@ RunFigures measure(const std::string& base) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 5) {
-    std::fprintf(stderr, "usage: %s <end_time> <cds_radius> <base_k10> <base_k100>\n", argv[0]);
+  if (argc != 4) {
+    std::fprintf(stderr, "usage: %s <cds_radius> <base_k10> <base_k100>\n", argv[0]);
     return 2;
   }
   try {
-    const double end_time = std::atof(argv[1]);
-    const double r_c = std::atof(argv[2]);
-    const RunFigures k10 = measure(argv[3]), k100 = measure(argv[4]);
+    const double end_time = criteria::deformable_t_end;
+    const double area_lo = criteria::area_ratio_min, area_hi = criteria::area_ratio_max;
+    const double ratio_min = criteria::deformation_ratio_min;
+    const double r_c = std::atof(argv[1]);
+    const RunFigures k10 = measure(argv[2]), k100 = measure(argv[3]);
     bool all = true;
     const std::string name = "cavity_deformable_objects";
     for (const auto& [label, f] : {std::pair{"k = 10", k10}, std::pair{"k = 100", k100}}) {
       const bool reached = f.end_time >= end_time * (1 - 1e-9);
       const bool inside_box = f.min_wall >= 0.5 * r_c;
       const bool apart = f.max_inside == 0 && f.max_crossings == 0 && f.min_rim >= r_c;
-      const bool bounded = f.area_min >= 0.5 && f.area_max <= 1.5;
+      const bool bounded = f.area_min >= area_lo && f.area_max <= area_hi;
       std::printf("%s %s: 1. reached t = %.4g (end %.4g)\n", reached ? "PASS" : "FAIL", label, f.end_time, end_time);
       std::printf("%s %s: 2. min rim-point distance to a wall %.4g (>= %.4g)\n", inside_box ? "PASS" : "FAIL", label,
                   f.min_wall, 0.5 * r_c);
@@ -92,16 +99,16 @@ int main(int argc, char** argv) {
       record(name, l + ": min rim-point distance to a wall (>= r_c / 2)", 0.5 * r_c, f.min_wall, inside_box);
       record(name, l + ": min rim-point distance between bodies (>= r_c, none inside another, no crossing edges)", r_c,
              f.min_rim, apart);
-      record(name, l + ": min area / A0 (>= 0.5)", 0.5, f.area_min, f.area_min >= 0.5);
-      record(name, l + ": max area / A0 (<= 1.5)", 1.5, f.area_max, f.area_max <= 1.5);
+      record(name, l + ": min area / A0 (>= 0.5)", area_lo, f.area_min, f.area_min >= area_lo);
+      record(name, l + ": max area / A0 (<= 1.5)", area_hi, f.area_max, f.area_max <= area_hi);
       record_info(name, l + ": mean deformation parameter", f.mean_deformation);
       record_info(name, l + ": max deformation parameter", f.max_deformation);
       all = all && reached && inside_box && apart && bounded;
     }
     const double ratio = k10.mean_deformation / k100.mean_deformation;
-    const bool softer = ratio >= 2.0;
+    const bool softer = ratio >= ratio_min;
     std::printf("%s 5. mean deformation k = 10 / k = 100 = %.3f (>= 2)\n", softer ? "PASS" : "FAIL", ratio);
-    record(name, "mean deformation parameter ratio k=10 / k=100 (>= 2)", 2.0, ratio, softer);
+    record(name, "mean deformation parameter ratio k=10 / k=100 (>= 2)", ratio_min, ratio, softer);
     return all && softer ? 0 : 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "cavity_objects_check: %s\n", e.what());

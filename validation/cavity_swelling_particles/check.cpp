@@ -7,13 +7,14 @@
 //      (thresholds from the CDS radius, README.md), no rim point inside another particle and no
 //      crossing rim edges (sampled at every output step);
 //   3. after the lids stop, the non-swelling particles travel further on average: the mean over
-//      particles of the centre-of-mass path length, integral of |V_com| dt over [t_stop, t_end]
-//      (internal rim oscillations do not move the centre of mass), is larger without swelling;
+//      particles of the centroid path length over [t_stop, t_end] (metrics::path_length, the sum of
+//      chords between output times: the one definition `ibms compare` uses too; it differs from the
+//      integral of the centre-of-mass speed by < 1.1 % on these runs) is larger without swelling;
 //   4. swelling particles keep moving as they push each other: over [t_late, t_end] the swelling
 //      run has more touching CDS pairs on average than the non-swelling run, and its particles'
 //      mean path length is larger.
-// usage: cavity_particles_check <t_stop> <t_late> <t_end> <min_gap> <case_name> <base_nonswelling>
-//        <base_swelling> <out_dir>
+// usage: cavity_particles_check <min_gap> <case_name> <base_nonswelling> <base_swelling> <out_dir>
+// t_stop, t_late and t_end are solver/metrics/case_criteria.hpp's (one definition with `ibms compare`).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -23,8 +24,11 @@
 #include <vector>
 
 #include "../common/results_csv.hpp"
-#include "../settling_disk/body_series.hpp"
+#include "metrics/body_series.hpp"
+#include "metrics/case_criteria.hpp"
+#include "metrics/csv_reader.hpp"
 
+using namespace ibms;
 using namespace ibms::validation;
 
 namespace {
@@ -41,19 +45,12 @@ int count_bodies(const SeriesTable& s) {
   return n;
 }
 
-// Mean over particles of the centre-of-mass path length over [t0, t1]: trapezoidal integral of
-// |V_com| over the output times.
+// Mean over particles of the centroid path length over [t0, t1] (metrics/body_series.hpp).
 double mean_path_length(const SeriesTable& s, double t0, double t1) {
   const auto& t = s.at("time");
   const int n = count_bodies(s);
   double total = 0;
-  for (int b = 0; b < n; ++b) {
-    const auto& u = s.at(body(b, "velocity_x"));
-    const auto& v = s.at(body(b, "velocity_y"));
-    for (std::size_t k = 1; k < t.size(); ++k)
-      if (t[k - 1] >= t0 && t[k] <= t1)
-        total += 0.5 * (std::hypot(u[k - 1], v[k - 1]) + std::hypot(u[k], v[k])) * (t[k] - t[k - 1]);
-  }
+  for (int b = 0; b < n; ++b) total += path_length(t, s.at(body(b, "centroid_x")), s.at(body(b, "centroid_y")), t0, t1);
   return total / n;
 }
 
@@ -89,19 +86,18 @@ void write_trajectories(const SeriesTable& s, double t0, double t1, const std::s
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 9) {
-    std::fprintf(stderr,
-                 "usage: %s <t_stop> <t_late> <t_end> <min_gap> <case_name> <base_nonswelling> <base_swelling> <out_dir>\n",
-                 argv[0]);
+  if (argc != 6) {
+    std::fprintf(stderr, "usage: %s <min_gap> <case_name> <base_nonswelling> <base_swelling> <out_dir>\n", argv[0]);
     return 2;
   }
   try {
-    const double t_stop = std::atof(argv[1]), t_late = std::atof(argv[2]), t_end = std::atof(argv[3]);
-    const double min_gap = std::atof(argv[4]);
-    const std::string name = argv[5];  // the case folder's name; the slow set prefixes its metrics
-    const SeriesTable plain = read_series_csv(std::string(argv[6]) + "_bodies.csv");
-    const SeriesTable swell = read_series_csv(std::string(argv[7]) + "_bodies.csv");
-    const std::string out_dir = argv[8];
+    const double t_stop = criteria::particles_t_stop, t_late = criteria::particles_t_late,
+                 t_end = criteria::particles_t_end;
+    const double min_gap = std::atof(argv[1]);
+    const std::string name = argv[2];  // the case folder's name; the slow set prefixes its metrics
+    const SeriesTable plain = read_series_csv(std::string(argv[3]) + "_bodies.csv");
+    const SeriesTable swell = read_series_csv(std::string(argv[4]) + "_bodies.csv");
+    const std::string out_dir = argv[5];
     write_trajectories(plain, t_stop, t_end, out_dir + "/trajectories_nonswelling.csv", "non-swelling");
     write_trajectories(swell, t_stop, t_end, out_dir + "/trajectories_swelling.csv", "swelling");
     const std::string prefix = out_dir.find("dem1e7") != std::string::npos ? "DEM 1e7: " : "";

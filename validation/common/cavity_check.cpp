@@ -4,12 +4,15 @@
 // prints the metric, the grid convergence index of Celik et al. (2008) of the profile extrema,
 // appends a result line to a CSV for the report, and exits non-zero on failure.
 //
-// usage: cavity_check ghia <case> <tolerance> <ref_u.csv> <ref_v.csv> <results.csv> <base_coarse> <base_medium> <base_fine>
-//        cavity_check symmetry <case> <tolerance> <results.csv> <constraints.csv> <base_coarse> <base_medium> <base_fine>
+// usage: cavity_check ghia <case> <ref_u.csv> <ref_v.csv> <results.csv> <base_coarse> <base_medium> <base_fine>
+//        cavity_check symmetry <case> <results.csv> <constraints.csv> <base_coarse> <base_medium> <base_fine>
+// The tolerance is the case's, from solver/metrics/case_criteria.hpp (one definition with `ibms
+// compare`); profiles are interpolated and their extrema located by metrics/profile.hpp.
 // The symmetry mode checks every row of <constraints.csv> (quantity,exact_value,basis) it knows;
 // a row it does not know is an error (a constraint added to the file cannot be skipped silently),
 // except a non-numeric exact value, which is reported as information.
 // where <base> is the HDF5 output path without ".h5" (profiles are <base>_centreline_u/v.csv).
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -19,22 +22,33 @@
 #include <string>
 #include <vector>
 
-#include "profile_table.hpp"
+#include "metrics/case_criteria.hpp"
+#include "metrics/csv_reader.hpp"
+#include "metrics/grid_convergence.hpp"
+#include "metrics/profile.hpp"
+#include "validation/common/results_csv.hpp"
 
-using namespace ibms::validation;
+using namespace ibms;
 
 namespace {
+
+using Table = ProfileTable;
 
 struct Profiles { Table u, v; };
 
 Profiles read_profiles(const std::string& base) {
-  return {read_table(base + "_centreline_u.csv"), read_table(base + "_centreline_v.csv")};
+  return {read_profile_table(base + "_centreline_u.csv"), read_profile_table(base + "_centreline_v.csv")};
+}
+
+double case_tolerance(const std::string& name) {
+  for (const criteria::CavityCase& c : criteria::cavity_cases)
+    if (c.name == name) return c.tolerance;
+  throw std::runtime_error("case '" + name + "' has no criteria in solver/metrics/case_criteria.hpp");
 }
 
 void append_result(const std::string& path, const std::string& name, const std::string& metric, double tolerance,
                    double measured, bool pass) {
-  std::ofstream out(path, std::ios::app);
-  out << name << ",\"" << metric << "\"," << tolerance << "," << measured << "," << (pass ? "pass" : "FAIL") << "\n";
+  validation::append_result_line(path, name, metric, tolerance, measured, pass ? "pass" : "FAIL");
 }
 
 // GCI of scalar profile quantities: an extremum (min/max) or the value at a point.
@@ -46,26 +60,28 @@ void report_gci(const std::vector<Profiles>& grids, const std::string& results, 
     double phi[3];
     for (int k = 0; k < 3; ++k) {
       const Table& t = q.use_u ? grids[k].u : grids[k].v;
-      phi[k] = q.kind == Quantity::value_at ? interpolate(t.columns[0], t.columns[1], q.at)
-                                            : profile_extremum(t.columns[0], t.columns[1], q.kind == Quantity::maximum);
+      const ProfileSpline spline(t.s, t.f);
+      phi[k] = q.kind == Quantity::value_at ? spline(q.at) : spline.extremum(q.kind == Quantity::maximum);
     }
-    const GciResult g = grid_convergence_index(phi[0], phi[1], phi[2], 2.0);
+    // Spacings in units of the fine one (refinement ratio 2 between the grids).
+    const GridConvergence g = grid_convergence(1.0, 2.0, 4.0, phi[2], phi[1], phi[0]);
     std::printf("  %-18s coarse %.6f  medium %.6f  fine %.6f  observed order %.2f  extrapolated %.6f  GCI_fine %.3f %%%s\n",
-                q.label, phi[0], phi[1], phi[2], g.observed_order, g.extrapolated, 100 * g.gci_fine,
-                g.monotone ? "" : "  (non-monotone convergence: GCI not meaningful)");
+                q.label, phi[0], phi[1], phi[2], g.order, g.extrapolated, 100 * g.gci_fine,
+                g.monotone ? "" : "  (non-monotone convergence: no order, no GCI)");
     // Reported, not gated: the GCI estimates our own discretisation error (DESIGN.md §6).
-    std::ofstream(results, std::ios::app) << name << ",\"GCI_fine of " << q.label << " (observed order "
-                                          << g.observed_order << ")\",," << g.gci_fine << ",info\n";
+    char metric[160];
+    std::snprintf(metric, sizeof metric, "GCI_fine of %s (observed order %.6g)", q.label, g.order);
+    validation::append_result_line(results, name, metric, NAN, g.gci_fine, "info");
   }
 }
 
 int check_ghia(char** argv) {
   const std::string name = argv[2];
-  const double tolerance = std::atof(argv[3]);
-  const Table ref_u = read_table(argv[4]), ref_v = read_table(argv[5]);
-  const std::string results = argv[6];
+  const double tolerance = case_tolerance(name);
+  const Table ref_u = read_profile_table(argv[3]), ref_v = read_profile_table(argv[4]);
+  const std::string results = argv[5];
   std::vector<Profiles> grids;
-  for (int k = 0; k < 3; ++k) grids.push_back(read_profiles(argv[7 + k]));
+  for (int k = 0; k < 3; ++k) grids.push_back(read_profiles(argv[6 + k]));
   const Profiles& fine = grids[2];
   std::printf("%s: centre-line velocity against Ghia et al. (1982), flagged points excluded\n", name.c_str());
   std::printf("  %8s %10s %10s %10s\n", "coord", "ghia", "ibms", "|diff|");
@@ -74,11 +90,12 @@ int check_ghia(char** argv) {
     const Table& ref = comp == 0 ? ref_u : ref_v;
     const Table& ours = comp == 0 ? fine.u : fine.v;
     std::printf("  %s\n", comp == 0 ? "u(0.5, y):" : "v(x, 0.5):");
-    for (std::size_t k = 0; k < ref.columns[0].size(); ++k) {
-      const double c = ref.columns[0][k], value = interpolate(ours.columns[0], ours.columns[1], c);
-      const double diff = std::abs(value - ref.columns[1][k]);
+    const ProfileSpline spline(ours.s, ours.f);
+    for (std::size_t k = 0; k < ref.s.size(); ++k) {
+      const double c = ref.s[k], value = spline(c);
+      const double diff = std::abs(value - ref.f[k]);
       const bool flagged = !ref.flags[k].empty();
-      std::printf("  %8.4f %10.5f %10.5f %10.5f%s\n", c, ref.columns[1][k], value, diff,
+      std::printf("  %8.4f %10.5f %10.5f %10.5f%s\n", c, ref.f[k], value, diff,
                   flagged ? "  (flagged in the reference: excluded)" : "");
       if (!flagged) worst = std::max(worst, diff);
     }
@@ -94,28 +111,16 @@ int check_ghia(char** argv) {
   return pass ? 0 : 1;
 }
 
-// Rows of a constraints file: quantity (quoted), exact value, basis.
+// Rows of a constraints file: quantity (quoted), exact value, basis (read_csv; all text).
 struct Constraint { std::string quantity, exact; };
 
 std::vector<Constraint> read_constraints(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error(path + ": cannot open");
+  const CsvTable t = read_csv(path, {{"quantity", "exact_value", "basis"}});
+  const int q = t.find({"quantity"}), e = t.find({"exact_value"});
+  if (q < 0 || e < 0) throw std::runtime_error(t.where() + "expected the columns quantity,exact_value,basis");
   std::vector<Constraint> rows;
-  bool header = true;
-  for (std::string line; std::getline(in, line);) {
-    if (line.empty() || line[0] == '#') continue;
-    if (header) { header = false; continue; }
-    // Split on commas outside double quotes.
-    std::vector<std::string> cells(1);
-    bool quoted = false;
-    for (char c : line) {
-      if (c == '"') quoted = !quoted;
-      else if (c == ',' && !quoted) cells.emplace_back();
-      else cells.back() += c;
-    }
-    if (cells.size() < 2) throw std::runtime_error(path + ": row '" + line + "' has no exact value");
-    rows.push_back({cells[0], cells[1]});
-  }
+  for (std::size_t k = 0; k < t.rows(); ++k)
+    rows.push_back({t.text[static_cast<std::size_t>(q)][k], t.text[static_cast<std::size_t>(e)][k]});
   return rows;
 }
 
@@ -123,10 +128,10 @@ std::vector<Constraint> read_constraints(const std::string& path) {
 // defect |measured - exact| over them and prints each.
 double check_constraints(const std::string& path, const Profiles& fine, double symmetry_defect_u,
                          double symmetry_defect_v) {
-  const std::vector<double>& y = fine.u.columns[0];
-  const std::vector<double>& u = fine.u.columns[1];
-  const double u_centre = interpolate(y, u, 0.5);
-  const double v_centre = interpolate(fine.v.columns[0], fine.v.columns[1], 0.5);
+  const std::vector<double>& y = fine.u.s;
+  const std::vector<double>& u = fine.u.f;
+  const double u_centre = ProfileSpline(y, u)(0.5);
+  const double v_centre = ProfileSpline(fine.v.s, fine.v.f)(0.5);
   double flux = 0.0;  // trapezoid over the profile points, walls included
   for (std::size_t k = 0; k + 1 < y.size(); ++k) flux += 0.5 * (u[k] + u[k + 1]) * (y[k + 1] - y[k]);
   double worst = 0.0;
@@ -160,23 +165,23 @@ double check_constraints(const std::string& path, const Profiles& fine, double s
 
 int check_symmetry(char** argv) {
   const std::string name = argv[2];
-  const double tolerance = std::atof(argv[3]);
-  const std::string results = argv[4];
-  const std::string constraints = argv[5];
+  const double tolerance = criteria::cavity_symmetry_tolerance;
+  const std::string results = argv[3];
+  const std::string constraints = argv[4];
   std::vector<Profiles> grids;
-  for (int k = 0; k < 3; ++k) grids.push_back(read_profiles(argv[6 + k]));
+  for (int k = 0; k < 3; ++k) grids.push_back(read_profiles(argv[5 + k]));
   const Profiles& fine = grids[2];
   // Point symmetry u(1-x, 1-y) = -u(x, y) restricted to the centre lines: u(0.5, 1-y) = -u(0.5, y)
   // and v(1-x, 0.5) = -v(x, 0.5); at the centre u = v = 0. Profile points are symmetric in y and x.
   double worst = 0;
   double defect[2] = {0.0, 0.0};
   for (int comp = 0; comp < 2; ++comp) {
-    const std::vector<double>& f = (comp == 0 ? fine.u : fine.v).columns[1];
+    const std::vector<double>& f = (comp == 0 ? fine.u : fine.v).f;
     for (std::size_t k = 0; k < f.size(); ++k) defect[comp] = std::max(defect[comp], std::abs(f[k] + f[f.size() - 1 - k]));
     worst = std::max(worst, defect[comp]);
   }
-  const double u_centre = interpolate(fine.u.columns[0], fine.u.columns[1], 0.5);
-  const double v_centre = interpolate(fine.v.columns[0], fine.v.columns[1], 0.5);
+  const double u_centre = ProfileSpline(fine.u.s, fine.u.f)(0.5);
+  const double v_centre = ProfileSpline(fine.v.s, fine.v.f)(0.5);
   worst = std::max({worst, std::abs(u_centre), std::abs(v_centre)});
   const bool pass = worst <= tolerance;
   std::printf("%s: u(0.5,0.5) = %.3e, v(0.5,0.5) = %.3e, max centre-line symmetry defect %.3e (tolerance %.1e): %s\n",
@@ -203,8 +208,8 @@ int check_symmetry(char** argv) {
 int main(int argc, char** argv) {
   try {
     const std::string mode = argc > 1 ? argv[1] : "";
-    if (mode == "ghia" && argc == 10) return check_ghia(argv);
-    if (mode == "symmetry" && argc == 9) return check_symmetry(argv);
+    if (mode == "ghia" && argc == 9) return check_ghia(argv);
+    if (mode == "symmetry" && argc == 8) return check_symmetry(argv);
     std::fprintf(stderr, "usage: see the comment at the top of validation/common/cavity_check.cpp\n");
     return 2;
   } catch (const std::exception& e) {

@@ -4,20 +4,23 @@
 // nothing (a check run by hand still prints its figures).
 #pragma once
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <string>
+
+#include "io/csv_table.hpp"
 
 namespace ibms::validation {
 
+// Through the one appender (io/csv_table.hpp: one write per line, no interleaving); a NaN
+// tolerance (info lines) is an empty column.
 inline void append_result_line(const std::string& path, const std::string& name, const std::string& metric,
                                double tolerance, double measured, const char* verdict) {
   if (path.empty()) return;
-  std::ofstream out(path, std::ios::app);
-  out.precision(8);
-  out << name << ",\"" << metric << "\",";
-  if (tolerance == tolerance) out << tolerance;  // NaN (info lines): empty column
-  out << "," << measured << "," << verdict << "\n";
+  const std::string failure = append_csv_rows(
+      path, "", {csv_text(name) + "," + csv_text(metric, /*always_quote=*/true) + "," + csv_number(tolerance, true) + "," +
+                 csv_number(measured) + "," + verdict});
+  if (!failure.empty()) std::fprintf(stderr, "results.csv: %s\n", failure.c_str());
 }
 
 inline std::string results_path_from_environment() {

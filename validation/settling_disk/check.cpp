@@ -4,46 +4,50 @@
 // differences between successive grids; exits non-zero unless the finest grid with D/h >= 25 is
 // within the tolerance.
 //
-// usage: settling_disk_check <reference.csv> <tolerance> <diameter> <n_x:base>...   (coarse to fine;
+// usage: settling_disk_check <reference.csv> <diameter> <n_x:base>...   (coarse to fine;
 //        n_x = cells across the 2 cm width)
+// The tolerance (3 %) and the touchdown height are solver/metrics/case_criteria.hpp's, the figures
+// metrics/body_series.hpp's: one definition with `ibms compare`.
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
 #include <vector>
 
-#include "body_series.hpp"
-#include "../common/results_csv.hpp"
+#include "metrics/body_series.hpp"
+#include "metrics/case_criteria.hpp"
+#include "metrics/csv_reader.hpp"
+#include "validation/common/results_csv.hpp"
 
+using namespace ibms;
 using namespace ibms::validation;
 
 int main(int argc, char** argv) {
-  if (argc < 5) {
-    std::fprintf(stderr, "usage: %s <reference.csv> <tolerance> <diameter> <n_x:base>...\n", argv[0]);
+  if (argc < 4) {
+    std::fprintf(stderr, "usage: %s <reference.csv> <diameter> <n_x:base>...\n", argv[0]);
     return 2;
   }
   try {
     const double reference = reference_value(argv[1], "max_settling_speed");
     const double reference_touchdown = reference_value(argv[1], "time_of_touchdown_centre_at_y_0.14");
-    const double tolerance = std::atof(argv[2]);
-    const double diameter = std::atof(argv[3]);
+    const double tolerance = criteria::settling_speed_tolerance;
+    const double diameter = std::atof(argv[2]);
     const double width = 2.0;  // cm, the channel of the reference
     std::printf("settling disk: max settling speed vs %.4g cm/s (tolerance %.1f %%), touchdown vs %.3g s\n",
                 reference, 100 * tolerance, reference_touchdown);
     std::printf("  n_x   D/h     max speed [cm/s]  deviation   t(max) [s]  touchdown [s]  change vs previous grid\n");
     double previous = NAN, finest_deviation = NAN, finest_resolution = 0;
-    for (int a = 4; a < argc; ++a) {
+    for (int a = 3; a < argc; ++a) {
       const std::string arg = argv[a];
       const int n_x = std::atoi(arg.substr(0, arg.find(':')).c_str());
       const std::string base = arg.substr(arg.find(':') + 1);
       const SeriesTable s = read_series_csv(base + "_bodies.csv");
-      const std::vector<double>& t = s.at("time");
-      const std::vector<double>& v = s.at("body_000/velocity_y");
+      const std::string file = base + "_bodies.csv";
+      const std::vector<double>& t = series_column(s, "time", file);
       std::size_t k_max = 0;
-      for (std::size_t k = 0; k < v.size(); ++k)
-        if (-v[k] > -v[k_max]) k_max = k;
-      const double speed = -v[k_max];
-      const double touchdown = first_crossing_below(t, s.at("body_000/centroid_y"), 0.14);
+      const double speed = max_settling_speed(series_column(s, "body_000/velocity_y", file), &k_max);
+      const double touchdown = first_crossing_below(t, series_column(s, "body_000/centroid_y", file),
+                                                    criteria::settling_touchdown_height);
       const double resolution = diameter / (width / n_x);
       const double deviation = speed / reference - 1.0;
       std::printf("  %4d  %6.2f  %10.4f        %+7.2f %%   %8.4f    %s      %s\n", n_x, resolution, speed,

@@ -17,10 +17,13 @@
 #include <string>
 #include <vector>
 
-#include "body_series.hpp"
-#include "../common/profile_table.hpp"
-#include "../common/results_csv.hpp"
+#include "metrics/body_series.hpp"
+#include "metrics/case_criteria.hpp"
+#include "metrics/csv_reader.hpp"
+#include "metrics/grid_convergence.hpp"
+#include "validation/common/results_csv.hpp"
 
+using namespace ibms;
 using namespace ibms::validation;
 
 namespace {
@@ -30,11 +33,12 @@ struct Settling {
 };
 
 Settling read_run(const std::string& base) {
-  const SeriesTable s = read_series_csv(base + "_bodies.csv");
-  const std::vector<double>& v = s.at("body_000/velocity_y");
+  const std::string file = base + "_bodies.csv";
+  const SeriesTable s = read_series_csv(file);
   Settling r;
-  for (double value : v) r.max_speed = std::max(r.max_speed, -value);
-  r.touchdown = first_crossing_below(s.at("time"), s.at("body_000/centroid_y"), 0.14);
+  r.max_speed = max_settling_speed(series_column(s, "body_000/velocity_y", file));
+  r.touchdown = first_crossing_below(series_column(s, "time", file), series_column(s, "body_000/centroid_y", file),
+                                     criteria::settling_touchdown_height);
   return r;
 }
 
@@ -89,8 +93,8 @@ int main(int argc, char** argv) {
     }
     const std::size_t n = h.size();
     for (const auto& [name, f] : {std::pair{"wheel", wheel_speed}, std::pair{"rigid", rigid_speed}}) {
-      const GciResult g = grid_convergence_index(f[n - 3], f[n - 2], f[n - 1], h[n - 2] / h[n - 1], h[n - 3] / h[n - 2]);
-      const double order = g.observed_order, value = g.extrapolated;
+      const GridConvergence g = grid_convergence(h[n - 1], h[n - 2], h[n - 3], f[n - 1], f[n - 2], f[n - 3]);
+      const double order = g.order, value = g.extrapolated;
       std::printf("  Richardson (finest three, %s): observed order %.2f, extrapolated %.4f cm/s (%+.2f %% vs %.4g)\n",
                   name, order, value, 100 * (value / reference - 1), reference);
       const std::string what = std::string(" of the max settling speed, ") + name + ", finest three grids";

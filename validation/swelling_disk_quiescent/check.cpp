@@ -12,8 +12,11 @@
 #include <string>
 
 #include "../common/results_csv.hpp"
-#include "../settling_disk/body_series.hpp"
+#include "metrics/body_series.hpp"
+#include "metrics/case_criteria.hpp"
+#include "metrics/csv_reader.hpp"
 
+using namespace ibms;
 using namespace ibms::validation;
 
 int main(int argc, char** argv) {

@@ -20,8 +20,11 @@
 #include <vector>
 
 #include "../common/results_csv.hpp"
-#include "../settling_disk/body_series.hpp"
+#include "metrics/body_series.hpp"
+#include "metrics/case_criteria.hpp"
+#include "metrics/csv_reader.hpp"
 
+using namespace ibms;
 using namespace ibms::validation;
 
 namespace {

@@ -36,6 +36,6 @@ BOOST_AUTO_TEST_CASE(circular_couette_velocity_is_first_order_in_l2_and_max) {
   BOOST_TEST_MESSAGE(verification::convergence_table("circular Couette, rim slip max|U - J u|", grids, h, slip));
   for (const auto* e : {&l2, &max}) {
     BOOST_TEST(verification::finest_three_slope(h, *e) >= 0.9);
-    for (double order : verification::pairwise_orders(h, *e)) BOOST_TEST(order > 0.0);
+    BOOST_TEST(verification::finest_three_fit(h, *e).standard_error <= verification::max_order_standard_error);
   }
 }

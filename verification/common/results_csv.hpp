@@ -4,13 +4,12 @@
 // write, so tests running in parallel do not interleave rows. Nothing happens when the variable is
 // unset; failures to write are reported on stderr, never thrown.
 #pragma once
-#include <fcntl.h>
-#include <unistd.h>
-
 #include <cstdio>
 #include <cstdlib>
 #include <string>
 #include <vector>
+
+#include "io/csv_table.hpp"
 
 namespace ibms::verification {
 
@@ -18,26 +17,11 @@ inline void append_results_csv(const std::string& file, const std::string& heade
                                const std::vector<std::string>& rows) {
   const char* dir = std::getenv("IBMS_RESULTS_DIR");
   if (dir == nullptr || *dir == '\0' || rows.empty()) return;
-  const std::string path = std::string(dir) + "/" + file;
-  std::string block;
-  for (const std::string& r : rows) block += r + "\n";
-  int fd = ::open(path.c_str(), O_WRONLY | O_APPEND | O_CREAT | O_EXCL, 0644);
-  if (fd >= 0) block = header + "\n" + block;
-  else fd = ::open(path.c_str(), O_WRONLY | O_APPEND);
-  if (fd < 0) {
-    std::fprintf(stderr, "append_results_csv: cannot append to %s\n", path.c_str());
-    return;
-  }
-  if (::write(fd, block.data(), block.size()) != static_cast<ssize_t>(block.size()))
-    std::fprintf(stderr, "append_results_csv: short write to %s\n", path.c_str());
-  ::close(fd);
+  const std::string failure = append_csv_rows(std::string(dir) + "/" + file, header, rows);
+  if (!failure.empty()) std::fprintf(stderr, "append_results_csv: %s\n", failure.c_str());
 }
 
 // One number as CSV text with full precision.
-inline std::string csv_number(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.17g", value);
-  return text;
-}
+inline std::string csv_number(double value) { return ibms::csv_number(value); }
 
 }  // namespace ibms::verification

@@ -11,7 +11,7 @@
 #include <filesystem>
 #include <string>
 
-#include "../../validation/settling_disk/body_series.hpp"
+#include "metrics/body_series.hpp"
 #include "core/errors.hpp"
 #include "scene/scene_reader.hpp"
 #include "sim/run.hpp"
@@ -60,7 +60,7 @@ BOOST_AUTO_TEST_CASE(fixed_step_instability_stops_with_message_and_no_nan_output
   BOOST_TEST(message.find("blow-up at step") != std::string::npos);
   BOOST_TEST(message.find("t = ") != std::string::npos);
   BOOST_TEST(message.find("body 0 point") != std::string::npos);
-  const validation::SeriesTable series = validation::read_series_csv((dir / "unstable_bodies.csv").string());
+  const SeriesTable series = read_series_csv((dir / "unstable_bodies.csv").string());
   long values = 0, non_finite = 0;
   for (const auto& [name, column] : series)
     for (double v : column) { ++values; non_finite += !std::isfinite(v); }
