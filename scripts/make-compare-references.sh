@@ -8,6 +8,10 @@
 #   validation/dfg_cylinder_2d1/reference/ibms_dfg_2d1.csv          (D/h = 40, the validation label's finest)
 #   validation/dfg_cylinder_2d2/reference/ibms_dfg_2d2_forces.csv   (D/h = 30, t >= 8)
 # usage: scripts/make-compare-references.sh IBMS_BINARY WORK_DIR
+# REFERENCE_OUT=DIR writes DIR/<case>/reference/ibms_*.csv instead of into the source tree's
+# validation/<case>/reference/ (the default); ONLY="<case> ..." (or "<case>/<ibms_file>.csv ...")
+# makes only those references and only the runs they need (the `slow` tests <case>_reference_regenerates,
+# validation/CMakeLists.txt, regenerate one case each this way).
 # Runs that already have their output in WORK_DIR (<case>_<N>.h5 and its CSVs) are not rerun.
 # CAVITY_CASES="..." restricts the cavity cases; SKIP_SETTLING=1 skips the settling disk;
 # ONLY_BODIES=1 makes only the two body cases' references; ONLY_DFG=1 only the two DFG cases' (their
@@ -20,10 +24,25 @@ ibms=$1; work=$2
 src=$(cd "$(dirname "$0")/.." && pwd)
 commit=$(git -C "$src" rev-parse --short=12 HEAD)
 mkdir -p "$work"
+out=${REFERENCE_OUT:-$src/validation}
+# wanted CASE [FILE...]: true if ONLY is unset or names CASE or one of CASE/FILE
+wanted() {
+  [[ -z ${ONLY:-} ]] && return 0
+  local case=$1; shift
+  local item f
+  for item in $ONLY; do
+    [[ $item == "$case" ]] && return 0
+    for f in "$@"; do [[ $item == "$case/$f" ]] && return 0; done
+  done
+  return 1
+}
+# target CASE FILE: the path a reference is written to (its folder made)
+target() { mkdir -p "$out/$1/reference"; echo "$out/$1/reference/$2"; }
 n_cavity=256
 [[ ${ONLY_BODIES:-0} == 1 || ${ONLY_DFG:-0} == 1 ]] && CAVITY_CASES=none SKIP_SETTLING=1
 for case in ${CAVITY_CASES:-lid_driven_cavity_re100 lid_driven_cavity_re400 lid_driven_cavity_re1000 two_sided_cavity_re100}; do
   [[ $case == none ]] && continue
+  wanted "$case" ibms_centreline_u.csv ibms_centreline_v.csv || continue
   base=$work/${case}_${n_cavity}
   if [[ ! -s ${base}_centreline_v.csv ]]; then
     echo "running $case at ${n_cavity}^2"
@@ -32,15 +51,16 @@ for case in ${CAVITY_CASES:-lid_driven_cavity_re100 lid_driven_cavity_re400 lid_
   fi
   made_by=$(/usr/bin/python3 -c "import h5py; f = h5py.File('$base.h5', 'r'); print(f.attrs['git_commit'])")
   for q in u v; do
+    wanted "$case" ibms_centreline_$q.csv || continue
     { echo "# ibms reference for 'ibms compare $case' (docs/compare.md): centre-line profile of ibms's own"
       echo "# ${n_cavity} x ${n_cavity} run of validation/$case/scene.toml (run to its steady-state criterion),"
       echo "# ibms commit $made_by; written by scripts/make-compare-references.sh at commit $commit."
-      cat "${base}_centreline_$q.csv"; } > "$src/validation/$case/reference/ibms_centreline_$q.csv"
+      cat "${base}_centreline_$q.csv"; } > "$(target "$case" ibms_centreline_$q.csv)"
   done
 done
 
 n_x=400; n_y=1200; markers=160   # D/h = 50, rim spacing ~h (the slow label's finest grid)
-if [[ ${SKIP_SETTLING:-0} != 1 ]]; then
+if [[ ${SKIP_SETTLING:-0} != 1 ]] && wanted settling_disk ibms_settling_history.csv; then
 base=$work/settling_disk_$n_x
 if [[ ! -s ${base}_bodies.csv ]]; then
   echo "running settling_disk at ${n_x} x ${n_y}"
@@ -56,7 +76,7 @@ made_by=$(/usr/bin/python3 -c "import h5py; f = h5py.File('$base.h5', 'r'); prin
   awk -F, 'BEGIN { OFS = "," } /^#/ { next }
     !h { h = 1; for (k = 1; k <= NF; ++k) { if ($k ~ /^body_000\/centroid_y/) cy = k; if ($k ~ /^body_000\/velocity_y/) cv = k }
          print "t [s],y [cm],v [cm/s]"; next }
-    { print $1, $cy, $cv }' "${base}_bodies.csv"; } > "$src/validation/settling_disk/reference/ibms_settling_history.csv"
+    { print $1, $cy, $cv }' "${base}_bodies.csv"; } > "$(target settling_disk ibms_settling_history.csv)"
 fi
 
 # DFG cylinders (docs/compare.md): the slow label's finest runs.
@@ -70,13 +90,14 @@ dfg_run() {  # case scene_dir n -> runs unless WORK_DIR has its _bodies.csv
   fi
 }
 if [[ ${ONLY_BODIES:-0} != 1 ]]; then
-  dfg_run dfg_2d1 dfg_cylinder_2d1 40
-  dfg_run dfg_2d2 dfg_cylinder_2d2 30
-  for spec in "dfg_2d1_40 dfg_cylinder_2d1/reference/ibms_dfg_2d1.csv steady" \
-              "dfg_2d2_30 dfg_cylinder_2d2/reference/ibms_dfg_2d2_forces.csv periodic"; do
-    read -r run target kind <<< "$spec"
+  wanted dfg_cylinder_2d1 ibms_dfg_2d1.csv && dfg_run dfg_2d1 dfg_cylinder_2d1 40
+  wanted dfg_cylinder_2d2 ibms_dfg_2d2_forces.csv && dfg_run dfg_2d2 dfg_cylinder_2d2 30
+  for spec in "dfg_2d1_40 dfg_cylinder_2d1 ibms_dfg_2d1.csv steady" \
+              "dfg_2d2_30 dfg_cylinder_2d2 ibms_dfg_2d2_forces.csv periodic"; do
+    read -r run dfg_case file kind <<< "$spec"
+    wanted "$dfg_case" "$file" || continue
     made_by=$(/usr/bin/python3 -c "import h5py; f = h5py.File('$work/$run.h5', 'r'); print(f.attrs['git_commit'])")
-    /usr/bin/python3 - "$work/${run}_bodies.csv" "$src/validation/$target" "$kind" "$made_by" "$commit" <<'PY'
+    /usr/bin/python3 - "$work/${run}_bodies.csv" "$(target "$dfg_case" "$file")" "$kind" "$made_by" "$commit" <<'PY'
 import sys, numpy as np
 src, dst, kind, made_by, commit = sys.argv[1:]
 lines = [l for l in open(src) if not l.startswith("#")]
@@ -119,6 +140,7 @@ run_body_case() {  # case, variant -> sets base; runs the scene unless WORK_DIR 
 # ${TRAJECTORY_STRIDE:-1}-th output time (to keep the files small).
 stride=${TRAJECTORY_STRIDE:-2}   # 2: ~200 kB per file instead of ~400 kB
 for variant in nonswelling swelling; do
+  wanted cavity_swelling_particles ibms_trajectories_$variant.csv || continue
   run_body_case cavity_swelling_particles $variant
   { echo "# ibms reference for 'ibms compare cavity_swelling_particles' (docs/compare.md): particle centroids"
     echo "# (rim-polygon area centroid) and diameters of ibms's own $variant run of"
@@ -132,10 +154,11 @@ for variant in nonswelling swelling; do
                                                if ($k ~ /^body_[0-9]+\/diameter/) { split($k, a, /[_\/]/); cd[a[2] + 0] = k } }
            nb = length(cx); next }
       $1 + 0 >= 10 && $1 + 0 <= 20 { if (m++ % stride) next; for (b = 0; b < nb; ++b) printf "%.10g,%d,%.10g,%.10g,%.10g\n", $1, b, $cx[b], $cy[b], $cd[b] }' \
-      "${base}_bodies.csv"; } > "$src/validation/cavity_swelling_particles/reference/ibms_trajectories_$variant.csv"
+      "${base}_bodies.csv"; } > "$(target cavity_swelling_particles ibms_trajectories_$variant.csv)"
 done
 # Deformation parameter and area / A0 (A0: the body's first output) of every body, t <= 20.
 for k in 10 100; do
+  wanted cavity_deformable_objects ibms_deformation_k$k.csv || continue
   run_body_case cavity_deformable_objects k$k
   { echo "# ibms reference for 'ibms compare cavity_deformable_objects' (docs/compare.md): deformation parameter"
     echo "# (r_max - r_min)/(r_max + r_min) of the rim distances from the rim centroid and rim-polygon area / A0 of"
@@ -147,6 +170,6 @@ for k in 10 100; do
                                                if ($k ~ /^body_[0-9]+\/area/) { split($k, a, /[_\/]/); ca[a[2] + 0] = k } }
            nb = length(cd); next }
       $1 + 0 <= 20 { for (b = 0; b < nb; ++b) { if (!(b in a0)) a0[b] = $ca[b]; printf "%.10g,%d,%.10g,%.10g\n", $1, b, $cd[b], $ca[b] / a0[b] } }' \
-      "${base}_bodies.csv"; } > "$src/validation/cavity_deformable_objects/reference/ibms_deformation_k$k.csv"
+      "${base}_bodies.csv"; } > "$(target cavity_deformable_objects ibms_deformation_k$k.csv)"
 done
 echo "references written"
