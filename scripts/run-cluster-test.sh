@@ -81,6 +81,8 @@ ProctrackType=proctrack/linuxproc
 TaskPlugin=task/none
 MpiDefault=none
 SchedulerType=sched/backfill
+# a backfill pass every 5 s (default 30): most jobs here last seconds
+SchedulerParameters=bf_interval=5
 SelectType=select/cons_tres
 SelectTypeParameters=CR_Core_Memory
 ReturnToService=2
@@ -102,7 +104,7 @@ if ! sinfo -h -o %T | grep -q idle; then echo "run-cluster-test: the node did no
 
 echo "== quick level through Slurm (workflow/profiles/slurm)"
 # The Slurm test is a fresh run: the workflow's status files and the report of this build go.
-rm -rf "$build/workflow" "$build/ibms_validation_report.pdf" "$build/validation/results.csv" "$build/sweeps"
+rm -rf "$build/workflow_state" "$build/ibms_validation_report.pdf" "$build/validation/results.csv" "$build/sweeps"
 wf_start=$(date +%s)
 status=0
 snakemake -s workflow/Snakefile --directory "$build" --configfile workflow/config/quick.yaml \
@@ -111,10 +113,10 @@ wf_seconds=$(( $(date +%s) - wf_start ))
 echo "== checks"
 /usr/bin/python3 workflow/ibms_workflow.py summary "$build" || status=1
 # Every job except the local ones ran as an sbatch job on the node (their logs name it).
-jobs_run=$(ls "$build"/workflow/slurm/ibms-*.out 2>/dev/null | wc -l)
+jobs_run=$(ls "$build"/workflow_state/slurm/ibms-*.out 2>/dev/null | wc -l)
 hosts=$(/usr/bin/python3 -c 'import glob, json, sys
-print(" ".join(sorted({json.load(open(p)).get("host", "?") for p in glob.glob(sys.argv[1] + "/workflow/tests/*.status")})))' "$build")
-echo "sbatch jobs: $jobs_run (logs in $build/workflow/slurm/), hosts of the case jobs: $hosts"
+print(" ".join(sorted({json.load(open(p)).get("host", "?") for p in glob.glob(sys.argv[1] + "/workflow_state/tests/*.status")})))' "$build")
+echo "sbatch jobs: $jobs_run (logs in $build/workflow_state/slurm/), hosts of the case jobs: $hosts"
 [[ $jobs_run -gt 0 ]] || { echo "run-cluster-test: no job went through sbatch" >&2; status=1; }
 [[ -s $build/ibms_validation_report.pdf ]] || { echo "run-cluster-test: no report" >&2; status=1; }
 [[ -s $build/validation/results.csv ]] || { echo "run-cluster-test: no results.csv" >&2; status=1; }

@@ -23,6 +23,13 @@ import re
 import subprocess
 
 RESULTS_NAME = "results.csv"
+# The workflow's own files in the build directory (status files, per-check results, logs, Slurm
+# job logs). Not `workflow/`: that is CMake's binary directory of the source folder workflow/.
+STATE_DIR = "workflow_state"
+
+
+def state_dir(build):
+    return os.path.join(os.path.abspath(build), STATE_DIR)
 
 
 def _properties(test):
@@ -92,7 +99,7 @@ def load_jobs(build, source, labels, exclude_cases=(), tests=None):
     build, source = os.path.abspath(build), os.path.abspath(source)
     cases = case_names(source)
     tests = show_tests(build) if tests is None else tests
-    wf = os.path.join(build, "workflow")
+    wf = state_dir(build)
     shared_results = os.path.join(build, "validation", RESULTS_NAME)
     setups = {}  # fixture -> [test names]
     by_name = {}

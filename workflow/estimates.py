@@ -8,10 +8,16 @@ with SECONDS_PER_CELL_STEP = 1.5e-7 s: the fluid step measured on this machine, 
 disk's 200 x 600 fluid stage 0.79e-7 s per cell. MARGIN = 4 covers body and contact work the
 cell count does not see and a slower node. When the run has finished before (its status file
 holds the measured seconds) the limit is at least 3x that. Memory: 300 MB plus 2 kB per cell
-(ibms keeps a few tens of doubles per cell). `ibms info` takes 2-12 s on the validation scenes,
-so its answers are cached in <build>/workflow/estimates.json (key: scene, sets, and the
-modification times of scene and ibms).
+(ibms keeps a few tens of doubles per cell).
+
+`ibms info` builds the run's solver (FFTW plans) and takes 2-12 s per validation scene on an idle
+core (up to a minute on a loaded machine), so its answers are computed once, in parallel
+(`prefetch`), and cached in <build>/workflow_estimates.json, keyed by the scene's path and
+content and the --set values. The key leaves out the ibms binary on purpose: a rebuild (every
+commit) would otherwise redo every estimate, and an estimate a code change has made stale is still
+a usable time limit (4x margin, and 3x the last measured time once a run has finished).
 """
+import hashlib
 import json
 import math
 import os
@@ -25,7 +31,8 @@ DEFAULT = {"mem_mb": 1000, "runtime": 60, "cells": None, "cell_steps": None}
 
 
 def _cache_path(wf):
-    return os.path.join(wf, "estimates.json")
+    # beside, not inside, the workflow's state directory (the Slurm test removes that one)
+    return os.path.join(os.path.dirname(os.path.abspath(wf)), "workflow_estimates.json")
 
 
 def _load(wf):
@@ -37,29 +44,58 @@ def _load(wf):
 
 
 def _store(wf, cache):
-    os.makedirs(wf, exist_ok=True)
     tmp = _cache_path(wf) + ".%d.tmp" % os.getpid()
     with open(tmp, "w") as f:
         json.dump(cache, f, indent=1, sort_keys=True)
     os.replace(tmp, _cache_path(wf))
 
 
+def _key(scene, sets):
+    try:
+        with open(scene, "rb") as f:
+            digest = hashlib.sha256(f.read()).hexdigest()[:16]
+    except OSError:
+        return None
+    return json.dumps([scene, digest, list(sets)])
+
+
+def _ask(scene, sets, ibms):
+    cmd = [ibms, "info", scene]
+    for s in sets:
+        cmd += ["--set", s]
+    out = subprocess.run(cmd, capture_output=True, text=True).stdout
+    m = re.search(r"^(\d+) x (\d+) cells", out, re.M)
+    c = re.search(r"estimated cost: ([0-9.eE+-]+) cell-steps", out)
+    return [int(m.group(1)) * int(m.group(2)) if m else None, float(c.group(1)) if c else None]
+
+
+def prefetch(runs, ibms, wf, workers=None):
+    """Fills the cache for every (scene, sets) of `runs` not in it yet, `workers` at a time."""
+    from concurrent.futures import ThreadPoolExecutor
+    cache = _load(wf)
+    todo = {}
+    for scene, sets in runs:
+        key = _key(scene, sets) if scene else None
+        if key and key not in cache:
+            todo[key] = (scene, list(sets))
+    if not todo:
+        return
+    with ThreadPoolExecutor(max_workers=workers or os.cpu_count() or 1) as pool:
+        answers = dict(zip(todo, pool.map(lambda a: _ask(a[0], a[1], ibms), todo.values())))
+    cache = _load(wf)
+    cache.update(answers)
+    _store(wf, cache)
+
+
 def info(scene, sets, ibms, wf):
     """(cells, cell_steps) from `ibms info`, cached; (None, None) when it cannot tell."""
-    try:
-        key = json.dumps([scene, sets, os.path.getmtime(scene), os.path.getmtime(ibms)])
-    except OSError:
+    key = _key(scene, sets)
+    if key is None:
         return None, None
     cache = _load(wf)
     if key not in cache:
-        cmd = [ibms, "info", scene]
-        for s in sets:
-            cmd += ["--set", s]
-        out = subprocess.run(cmd, capture_output=True, text=True).stdout
-        m = re.search(r"^(\d+) x (\d+) cells", out, re.M)
-        c = re.search(r"estimated cost: ([0-9.eE+-]+) cell-steps", out)
         cache = _load(wf)
-        cache[key] = [int(m.group(1)) * int(m.group(2)) if m else None, float(c.group(1)) if c else None]
+        cache[key] = _ask(scene, sets, ibms)
         _store(wf, cache)
     return tuple(cache[key])
 

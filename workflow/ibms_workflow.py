@@ -11,9 +11,12 @@ import json
 import os
 import sys
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import ctest_jobs  # noqa: E402
+
 
 def statuses(build):
-    wf = os.path.join(build, "workflow")
+    wf = ctest_jobs.state_dir(build)
     files = (glob.glob(os.path.join(wf, "tests", "*.status")) + glob.glob(os.path.join(wf, "bench", "*.status"))
              + glob.glob(os.path.join(wf, "verification.status"))
              + glob.glob(os.path.join(wf, "sweeps", "*", "*.json")))

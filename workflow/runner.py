@@ -18,6 +18,8 @@ import re
 import subprocess
 import time
 
+import ctest_jobs
+
 
 def _write_json(path, data):
     os.makedirs(os.path.dirname(path), exist_ok=True)
@@ -61,9 +63,9 @@ def _execute(command, cwd, env_extra, timeout, log_path):
 def run_test(job, build, threads=1):
     """One ctest test (a job of ctest_jobs.load_jobs)."""
     name = job["name"]
-    logs = os.path.join(build, "workflow", "logs")
+    logs = os.path.join(ctest_jobs.state_dir(build), "logs")
     for r in job["requires"]:
-        st = read_status(os.path.join(build, "workflow", "tests", r + ".status"))
+        st = read_status(os.path.join(ctest_jobs.state_dir(build), "tests", r + ".status"))
         if not st or st.get("status") != "pass":
             _finish(job, build, "not run", None, 0.0, "required run %s did not pass\n" % r)
             return

@@ -4,7 +4,9 @@ right --set values (linked keys, two axes, ids), bad expressions are refused; jo
 ctest test list as runs and checks with their fixtures, inputs and per-check results file; the
 runner's status file and its ctest-format log (read back by the report's reader) for a passing, a
 failing and a not-run test; `ibms compare` lines parse; the report's sweep section draws a figure.
-usage: test_workflow.py WORK_DIR        exit 0 pass, 1 fail, 77 skipped (matplotlib missing)"""
+With a build directory, also: the convergence sweeps run the same grids as their validation cases
+register in CMake (so the two cannot drift apart).
+usage: test_workflow.py WORK_DIR [BUILD_DIR]   exit 0 pass, 1 fail, 77 skipped (matplotlib missing)"""
 import json
 import os
 import shutil
@@ -142,6 +144,17 @@ def main():
     report_sweeps.sweeps_section(out, build, work)
     check(os.path.isfile(os.path.join(work, "sweep0.pdf")) and any("includegraphics" in o for o in out),
           "the report's sweep section draws the figure")
+    # -- the sweeps and the cases' own convergence studies use the same grids
+    if len(sys.argv) > 2:
+        real = ctest_jobs.load_jobs(os.path.abspath(sys.argv[2]), SOURCE, ["validation"])
+        for sweep_file, prefix in (("settling_disk_convergence.toml", "settling_disk_"),
+                                   ("cavity_re100_convergence.toml", "lid_driven_cavity_re100_run_")):
+            sw = sweeps.load(os.path.join(SOURCE, "sweeps", sweep_file), SOURCE, build)
+            case = sorted(int(a.split("=")[1]) for n, j in real.items()
+                          if n.startswith(prefix) and "rigid" not in n and j["kind"] == "run"
+                          for a in j["sets"] if a.startswith("domain.cells_x="))
+            grid = sorted(sw["grid"]["domain.cells_x"])
+            check(case == grid, "%s: grids %s = the case's validation runs %s" % (sweep_file, grid, case))
     print("%d failure(s)" % len(failures))
     return 1 if failures else 0
 
