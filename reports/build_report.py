@@ -5,7 +5,7 @@ usage: /usr/bin/python3 reports/build_report.py --build DIR --output FILE.pdf [-
 
 It reads only: DIR/validation/results.csv, DIR/validation/<case>/ outputs (HDF5, centre-line and
 body CSVs), the repo's validation/<case>/reference/ data, the CSV tables under
-DIR/verification_results/ (convergence, kernel moments, wheel energy, restitution) and ctest's DIR/Testing/Temporary/LastTest*.log (reports/README.md lists what each section reads).
+DIR/verification_results/ (convergence, kernel moments, wheel energy, restitution), the sweep tables DIR/sweeps/*.csv and ctest's DIR/Testing/Temporary/LastTest*.log (reports/README.md lists what each section reads).
 It recomputes no physics. Figures are vector PDF (matplotlib); the document is LaTeX compiled with
 `latexmk -pdf` in a temporary directory under DIR, removed on success and kept on failure.
 """
@@ -24,6 +24,7 @@ import report_data as data  # noqa: E402
 import report_figures as figs  # noqa: E402
 import report_bench as bench  # noqa: E402
 import report_solid as solid  # noqa: E402
+import report_sweeps as sweeps  # noqa: E402
 from report_latex import esc, num, status_cell, figure, longtable  # noqa: E402
 
 PREAMBLE = r"""\documentclass[10pt,a4paper]{article}
@@ -279,6 +280,7 @@ def main():
         bench.stability_section(out, build, fig_dir)
         bench.overhead_section(out, build)
         bench.forcing_passes_section(out, build)
+        sweeps.sweeps_section(out, build, fig_dir)
         environment_section(out, build, source, tests)
         bench.run_times_section(out, tests)
         out.append(r"\end{document}")

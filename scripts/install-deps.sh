@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages ibms needs that are not yet on this machine (run as root).
-# Usage: scripts/install-deps.sh [--report | --checkers]
-#   --report adds LaTeX for the PDF report; --checkers adds valgrind and Debian's clang with
-#   libFuzzer (scripts/run-sanitizers.sh, scripts/run-fuzz.sh)
+# Usage: scripts/install-deps.sh [--report | --checkers | --cluster]
+#   --report adds LaTeX for the PDF report and Snakemake for the main job (scripts/run-main.sh);
+#   --checkers adds valgrind and Debian's clang with libFuzzer (scripts/run-sanitizers.sh,
+#   scripts/run-fuzz.sh); --cluster adds Snakemake, Slurm and MUNGE for the single-node Slurm
+#   test (scripts/run-cluster-test.sh)
 set -euo pipefail
 packages=(build-essential cmake pkg-config git
           libeigen3-dev libgsl-dev libboost-test-dev libhdf5-dev libfftw3-dev
@@ -13,7 +15,10 @@ if [[ "${1:-}" == "--checkers" ]]; then
 fi
 if [[ "${1:-}" == "--report" ]]; then
   packages+=(latexmk texlive-latex-base texlive-latex-recommended texlive-latex-extra
-             texlive-fonts-recommended lmodern)
+             texlive-fonts-recommended lmodern snakemake)
+fi
+if [[ "${1:-}" == "--cluster" ]]; then
+  packages+=(snakemake slurm-wlm munge)
 fi
 missing=()
 for p in "${packages[@]}"; do

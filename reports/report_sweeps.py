@@ -1,0 +1,116 @@
+"""Report section of the sweeps (docs/workflow.md): one table and one figure per
+BUILD/sweeps/<name>.csv, written by the workflow's sweep_collect rule. Reads files only.
+
+The CSV: '#' comment lines (the first carries `sweep NAME: TITLE`, a `plot {json}` line names the
+x column, the y columns, an optional `series` column and `log`), one header line, one row per
+grid point (grid keys, status, exit_code, seconds, metric columns)."""
+import csv
+import glob
+import json
+import math
+import os
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+from report_latex import esc, figure, longtable  # noqa: E402
+
+
+def read_sweep(path):
+    """(title, plot dict, header list, rows as dicts) of a sweep CSV."""
+    title, plot, lines = os.path.splitext(os.path.basename(path))[0], {}, []
+    with open(path, encoding="utf-8", errors="replace") as f:
+        for line in f:
+            if line.startswith("#"):
+                text = line[1:].strip()
+                if text.startswith("sweep ") and ":" in text:
+                    title = text.split(":", 1)[1].strip()
+                elif text.startswith("plot "):
+                    try:
+                        plot = json.loads(text[5:])
+                    except ValueError:
+                        plot = {}
+            elif line.strip():
+                lines.append(line)
+    reader = csv.DictReader(lines)
+    rows = list(reader)
+    return title, plot, reader.fieldnames or [], rows
+
+
+def _float(text):
+    try:
+        return float(text)
+    except (TypeError, ValueError):
+        return math.nan
+
+
+def _cell(text):
+    value = _float(text)
+    if math.isfinite(value) and not str(text).lstrip("-").isdigit():
+        return ("%.4g" % value).replace("-", "$-$")
+    return esc(text or "")
+
+
+def plot_sweep(plot, rows, path):
+    """y columns against x, one line per y column and per value of the series column."""
+    x_key, ys, series = plot.get("x"), plot.get("y", []), plot.get("series")
+    if not x_key or not ys or not rows:
+        return None
+    groups = {}
+    for r in rows:
+        groups.setdefault(r.get(series, "") if series else "", []).append(r)
+    fig, ax = plt.subplots(figsize=(6.0, 3.6))
+    drawn = 0
+    for g, grows in sorted(groups.items()):
+        grows = sorted(grows, key=lambda r: _float(r.get(x_key)))
+        for y in ys:
+            pts = [(_float(r.get(x_key)), _float(r.get(y))) for r in grows]
+            pts = [(a, b) for a, b in pts if math.isfinite(a) and math.isfinite(b) and (b > 0 or not plot.get("log"))]
+            if not pts:
+                continue
+            label = y + ("" if not series else ", %s = %s" % (series, g))
+            ax.plot([a for a, _ in pts], [b for _, b in pts], "o-", label=label)
+            drawn += 1
+    if not drawn:
+        plt.close(fig)
+        return None
+    if plot.get("log"):
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+    ax.set_xlabel(x_key)
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(path)
+    plt.close(fig)
+    return path
+
+
+def sweeps_section(out, build, fig_dir):
+    files = sorted(glob.glob(os.path.join(build, "sweeps", "*.csv")))
+    out.append(r"\section{Sweeps}")
+    if not files:
+        out.append(r"\emph{No sweep results: \texttt{sweeps/*.csv} not found in the build directory "
+                   r"(the workflow's sweeps, \texttt{docs/workflow.md}).}")
+        return
+    out.append("Each sweep file (\\texttt{sweeps/*.toml}) names a scene and a parameter grid; the "
+               "workflow runs every point and collects its metrics (\\texttt{ibms compare} on the "
+               "run's outputs, and the wall time) into \\texttt{BUILD/sweeps/<name>.csv}.\n")
+    for k, path in enumerate(files):
+        title, plot, header, rows = read_sweep(path)
+        out.append(r"\subsection{%s}" % esc(title))
+        if not rows:
+            out.append(r"\emph{The sweep has no rows.}")
+            continue
+        table = [[_cell(r.get(h, "")) for h in header] for r in rows]
+        spec = "".join("r" for _ in header)
+        out.append(longtable(spec, [r"\texttt{%s}" % esc(h) for h in header], table,
+                             caption="Sweep \\texttt{%s}: one row per grid point." %
+                                     esc(os.path.basename(path))))
+        p = plot_sweep(plot, rows, os.path.join(fig_dir, "sweep%d.pdf" % k))
+        if p:
+            out.append(figure(p, "Sweep \\texttt{%s}: %s against \\texttt{%s}." %
+                              (esc(os.path.basename(path)), esc(", ".join(plot.get("y", []))),
+                               esc(plot.get("x", ""))), height=0.4))

@@ -1,0 +1,163 @@
+#!/usr/bin/python3
+"""Unit test of the workflow's helpers (no Snakemake run, no solver): sweep files expand into the
+right --set values (linked keys, two axes, ids), bad expressions are refused; jobs come out of a
+ctest test list as runs and checks with their fixtures, inputs and per-check results file; the
+runner's status file and its ctest-format log (read back by the report's reader) for a passing, a
+failing and a not-run test; `ibms compare` lines parse; the report's sweep section draws a figure.
+With a build directory, also: the convergence sweeps run the same grids as their validation cases
+register in CMake (so the two cannot drift apart).
+usage: test_workflow.py WORK_DIR [BUILD_DIR]   exit 0 pass, 1 fail, 77 skipped (matplotlib missing)"""
+import json
+import os
+import shutil
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+SOURCE = os.path.dirname(HERE)
+sys.path.insert(0, HERE)
+sys.path.insert(0, os.path.join(SOURCE, "reports"))
+try:
+    import matplotlib  # noqa: F401
+    import numpy  # noqa: F401
+except ImportError:
+    sys.exit(77)
+import ctest_jobs  # noqa: E402
+import runner  # noqa: E402
+import sweeps  # noqa: E402
+
+failures = []
+
+
+def check(cond, what):
+    print(("pass  " if cond else "FAIL  ") + what)
+    if not cond:
+        failures.append(what)
+
+
+def main():
+    work = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else "workflow-test")
+    shutil.rmtree(work, ignore_errors=True)
+    os.makedirs(work)
+    build = os.path.join(work, "build")
+    os.makedirs(os.path.join(build, "validation"))
+
+    # -- sweeps: the settling-disk file of the repository, and a two-axis one
+    s = sweeps.load(os.path.join(SOURCE, "sweeps", "settling_disk_convergence.toml"), SOURCE, build)
+    check([p["sets"] for p in s["points"]] == [
+        ["domain.cells_x=100", "domain.cells_y=300", "bodies.0.n_surface_points=40"],
+        ["domain.cells_x=150", "domain.cells_y=450", "bodies.0.n_surface_points=60"],
+        ["domain.cells_x=200", "domain.cells_y=600", "bodies.0.n_surface_points=80"]],
+        "settling-disk sweep: cells_y = 3 cells_x and N_l = 0.4 cells_x as in its CMakeLists.txt")
+    two = os.path.join(work, "two.toml")
+    with open(two, "w") as f:
+        f.write('scene = "validation/lid_driven_cavity_re100/scene.toml"\n[grid]\n'
+                '"domain.cells_x" = [64, 128]\n"ibm.forcing_passes" = [1, 3]\n'
+                '[linked]\n"domain.cells_y" = "domain_cells_x * forcing_passes"\n')
+    t = sweeps.load(two, SOURCE, build)
+    check(len(t["points"]) == 4 and t["name"] == "two", "two axes: 4 points, name from the file")
+    check(t["points"][3]["sets"] == ["domain.cells_x=128", "ibm.forcing_passes=3", "domain.cells_y=384"],
+          "linked key by full and by short name: %s" % t["points"][3]["sets"])
+    check(len({p["id"] for p in t["points"]}) == 4, "point ids distinct: %s" % [p["id"] for p in t["points"]])
+    for bad in ("__import__('os')", "cells_x.real", "open('x')", "unknown * 2"):
+        try:
+            sweeps.evaluate(bad, {"cells_x": 1})
+            check(False, "expression refused: %s" % bad)
+        except ValueError:
+            check(True, "expression refused: %s" % bad)
+
+    text = ("ibms compare settling_disk: a.csv\n"
+            "  metric                                                          tolerance     measured   result\n"
+            "  |max settling speed / 5.5 cm/s (published) - 1|                      0.03     0.010647   pass\n"
+            "  max settling speed [cm/s]                                      submitted 5.44144, reference 5.54151   info\n"
+            "settling_disk: pass\n")
+    m = sweeps.parse_compare(text)
+    check(m == {"|max settling speed / 5.5 cm/s (published) - 1|": 0.010647, "max settling speed [cm/s]": 5.44144},
+          "ibms compare lines parsed: %s" % m)
+
+    # -- jobs from a ctest test list (the json-v1 layout)
+    ok, fail = os.path.join(build, "ok.sh"), os.path.join(build, "fail.sh")
+    for path, rc in ((ok, 0), (fail, 1)):
+        with open(path, "w") as f:
+            f.write("#!/bin/sh\necho \"$@\"\necho line >> \"$IBMS_VALIDATION_RESULTS\"\nexit %d\n" % rc)
+        os.chmod(path, 0o755)
+    scene = os.path.join(SOURCE, "validation", "settling_disk", "scene.toml")
+    shared = os.path.join(build, "validation", "results.csv")
+
+    def test(name, command, **props):
+        return {"name": name, "command": command,
+                "properties": [{"name": k, "value": v} for k, v in props.items()]}
+    tests = [
+        test("settling_disk_100_run", [ok, "-DSCENE=" + scene, "-DSETS=a=1\\;b=2"], LABELS=["validation"],
+             FIXTURES_SETUP=["settling_disk_runs"], WORKING_DIRECTORY=build),
+        test("settling_disk_check", [ok, shared], LABELS=["validation"], FIXTURES_REQUIRED=["settling_disk_runs"],
+             ENVIRONMENT=["IBMS_VALIDATION_RESULTS=" + shared], WORKING_DIRECTORY=build),
+        test("dkt_two_disks_run_160", [fail], LABELS=["validation"], FIXTURES_SETUP=["dkt"], WORKING_DIRECTORY=build),
+        test("dkt_two_disks_check_160", [ok], LABELS=["validation"], FIXTURES_REQUIRED=["dkt"], WORKING_DIRECTORY=build),
+        test("settling_disk_300_run", [ok], LABELS=["slow"], FIXTURES_SETUP=["slow_runs"], WORKING_DIRECTORY=build),
+        test("test_unit", [ok], LABELS=["unit"], WORKING_DIRECTORY=build),
+    ]
+    jobs = ctest_jobs.load_jobs(build, SOURCE, ["validation"], tests=tests)
+    check(list(jobs) == ["settling_disk_100_run", "settling_disk_check", "dkt_two_disks_run_160",
+                         "dkt_two_disks_check_160"], "validation label selects 4 jobs: %s" % list(jobs))
+    run, chk = jobs["settling_disk_100_run"], jobs["settling_disk_check"]
+    check(run["kind"] == "run" and chk["kind"] == "check" and chk["requires"] == ["settling_disk_100_run"],
+          "run and check kinds, check requires the fixture's run")
+    check(run["inputs"] == [ok, scene] and run["scene"] == scene and run["sets"] == ["a=1", "b=2"],
+          "run inputs (program, scene) and --set values from -DSETS: %s %s" % (run["inputs"], run["sets"]))
+    check(any("/settling_disk/reference/" in p for p in chk["inputs"]), "check inputs hold the case's references")
+    check(chk["command"][1] == chk["results"] and chk["env"]["IBMS_VALIDATION_RESULTS"] == chk["results"],
+          "check writes its own results file, not results.csv")
+    excl = ctest_jobs.load_jobs(build, SOURCE, ["validation"], exclude_cases=["dkt_two_disks"], tests=tests)
+    check("dkt_two_disks_run_160" not in excl, "exclude_cases leaves a case out")
+
+    for name in jobs:
+        runner.run_test(jobs[name], build)
+    st = {n: runner.read_status(jobs[n]["status"])["status"] for n in jobs}
+    check(st == {"settling_disk_100_run": "pass", "settling_disk_check": "pass", "dkt_two_disks_run_160": "FAIL",
+                 "dkt_two_disks_check_160": "not run"}, "statuses: %s" % st)
+    with open(chk["results"]) as f:
+        check(f.read() == "line\n", "one result line in the check's file")
+    runner.run_test(chk, build)
+    with open(chk["results"]) as f:
+        check(f.read() == "line\n", "a rerun replaces the check's lines (no duplicates)")
+    import report_data
+    logs = {t["name"]: t["status"] for t in report_data.read_ctest_logs(build)}
+    check(logs == {"settling_disk_100_run": "pass", "settling_disk_check": "pass", "dkt_two_disks_run_160": "FAIL",
+                   "dkt_two_disks_check_160": "skipped"} or logs.get("dkt_two_disks_run_160") == "FAIL"
+          and logs.get("settling_disk_check") == "pass", "the report reads the runner's logs: %s" % logs)
+
+    # -- collect and the report's figure
+    pts = []
+    for k, p in enumerate(s["points"]):
+        path = os.path.join(work, "p%d.json" % k)
+        with open(path, "w") as f:
+            json.dump(dict(values=p["values"], status="pass", exit_code=3, seconds=1.0 + k,
+                           metrics={"error_published": 0.02 / (k + 1), "error_ibms_reference": 0.03 / (k + 1) ** 2}), f)
+        pts.append(path)
+    csv_path = os.path.join(build, "sweeps", s["name"] + ".csv")
+    sweeps.collect(s, pts, csv_path)
+    import report_sweeps
+    title, plot, header, rows = report_sweeps.read_sweep(csv_path)
+    check(header[:4] == ["domain.cells_x", "status", "exit_code", "seconds"] and len(rows) == 3 and plot["log"],
+          "sweep CSV: header %s, %d rows" % (header, len(rows)))
+    out = []
+    report_sweeps.sweeps_section(out, build, work)
+    check(os.path.isfile(os.path.join(work, "sweep0.pdf")) and any("includegraphics" in o for o in out),
+          "the report's sweep section draws the figure")
+    # -- the sweeps and the cases' own convergence studies use the same grids
+    if len(sys.argv) > 2:
+        real = ctest_jobs.load_jobs(os.path.abspath(sys.argv[2]), SOURCE, ["validation"])
+        for sweep_file, prefix in (("settling_disk_convergence.toml", "settling_disk_"),
+                                   ("cavity_re100_convergence.toml", "lid_driven_cavity_re100_run_")):
+            sw = sweeps.load(os.path.join(SOURCE, "sweeps", sweep_file), SOURCE, build)
+            case = sorted(int(a.split("=")[1]) for n, j in real.items()
+                          if n.startswith(prefix) and "rigid" not in n and j["kind"] == "run"
+                          for a in j["sets"] if a.startswith("domain.cells_x="))
+            grid = sorted(sw["grid"]["domain.cells_x"])
+            check(case == grid, "%s: grids %s = the case's validation runs %s" % (sweep_file, grid, case))
+    print("%d failure(s)" % len(failures))
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
