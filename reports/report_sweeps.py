@@ -15,6 +15,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
+from report_bench import _float  # noqa: E402
 from report_latex import esc, figure, longtable  # noqa: E402
 
 
@@ -37,13 +38,6 @@ def read_sweep(path):
     reader = csv.DictReader(lines)
     rows = list(reader)
     return title, plot, reader.fieldnames or [], rows
-
-
-def _float(text):
-    try:
-        return float(text)
-    except (TypeError, ValueError):
-        return math.nan
 
 
 def _cell(text):

@@ -139,13 +139,18 @@ def check_text(text, where):
         fail("a stale (rerun-replaced) energy table row is in the %s" % where)
 
 
-if stage == "tex":
-    tex_dir = os.path.join(work, "tex")
-    proc = subprocess.run([sys.executable, os.path.join(here, "build_report.py"), "--build", work,
-                           "--tex-dir", tex_dir], capture_output=True, text=True, timeout=240)
+def build_report(*args):
+    """build_report.py on the synthetic build directory with `args`; fails the test on an error."""
+    proc = subprocess.run([sys.executable, os.path.join(here, "build_report.py"), "--build", work] + list(args),
+                          capture_output=True, text=True, timeout=240)
     print(proc.stdout, proc.stderr)
     if proc.returncode != 0:
-        fail("build_report.py --tex-dir exited %d" % proc.returncode)
+        fail("build_report.py %s exited %d" % (" ".join(args), proc.returncode))
+
+
+if stage == "tex":
+    tex_dir = os.path.join(work, "tex")
+    build_report("--tex-dir", tex_dir)
     with open(os.path.join(tex_dir, "report.tex"), encoding="utf-8") as f:
         tex = f.read()
     # Structure a LaTeX run would reject: unbalanced environments or braces (escaped ones aside).
@@ -182,11 +187,7 @@ if stage == "tex":
     sys.exit(0)
 
 pdf = os.path.join(work, "report.pdf")
-proc = subprocess.run([sys.executable, os.path.join(here, "build_report.py"), "--build", work,
-                       "--output", pdf], capture_output=True, text=True, timeout=240)
-print(proc.stdout, proc.stderr)
-if proc.returncode != 0:
-    fail("build_report.py exited %d" % proc.returncode)
+build_report("--output", pdf)
 with open(pdf, "rb") as f:
     head = f.read(5)
 size = os.path.getsize(pdf)
