@@ -256,11 +256,19 @@ void FluidSolver::predict_momentum(FluidState& state, double dt, const CellField
 }
 
 ProjectionStats FluidSolver::project_smac(FluidState& state, double dt) {
+  const ProjectionStats stats = project(state, dt, nullptr);
+  end_step(state, dt);
+  return stats;
+}
+
+ProjectionStats FluidSolver::project(FluidState& state, double dt, const FaceForcing* forcing) {
   ProjectionStats stats;
   const double inv_dx = 1.0 / grid_.dx(), inv_dy = 1.0 / grid_.dy();
   // Momentum interpolation (METHOD.md §2.3 step 3): remove the wide gradient of p^n from the
   // cell velocity, average to the face, add the compact face gradient back.
   //   U*_{i-1/2} = mean(u* + dt G_c p^n) - dt (p_i - p_{i-1})/dx
+  // With a FaceForcing, the force's cell increment is taken out of u* before the mean and its face
+  // increment added after it (the balanced form, see FaceForcing).
   // grad_x_/grad_y_ still hold G_c p^n from the predictor; p^n ghosts are filled.
   IBMS_PARALLEL_ROWS
   for (int j = 0; j < grid_.ny; ++j)
@@ -268,6 +276,14 @@ ProjectionStats FluidSolver::project_smac(FluidState& state, double dt) {
       phi_(i, j) = star_x_(i, j) + dt * grad_x_(i, j);  // phi_ and work_ as scratch for u-hat
       work_(i, j) = star_y_(i, j) + dt * grad_y_(i, j);
     }
+  if (forcing != nullptr) {
+    IBMS_PARALLEL_ROWS
+    for (int j = 0; j < grid_.ny; ++j)
+      for (int i = 0; i < grid_.nx; ++i) {
+        phi_(i, j) -= (*forcing->cell_x)(i, j);
+        work_(i, j) -= (*forcing->cell_y)(i, j);
+      }
+  }
   // Ghosts: periodic wraps, and zero gradient at an outflow (u-hat like the velocity; p^n's ghosts
   // are those of the predictor, p = 0 at an outflow); faces with a given flux are set below.
   fill_neumann_ghosts(grid_, phi_);
@@ -282,6 +298,14 @@ ProjectionStats FluidSolver::project_smac(FluidState& state, double dt) {
   for (int j = faces.y_first; j <= faces.y_last; ++j)
     for (int i = 0; i < grid_.nx; ++i)
       star_face_y_(i, j) = 0.5 * (work_(i, j - 1) + work_(i, j)) - dt * (p(i, j) - p(i, j - 1)) * inv_dy;
+  if (forcing != nullptr) {
+    IBMS_PARALLEL_ROWS
+    for (int j = 0; j < grid_.ny; ++j)
+      for (int i = faces.x_first; i <= faces.x_last; ++i) star_face_x_(i, j) += (*forcing->face_x)(i, j);
+    IBMS_PARALLEL_ROWS
+    for (int j = faces.y_first; j <= faces.y_last; ++j)
+      for (int i = 0; i < grid_.nx; ++i) star_face_y_(i, j) += (*forcing->face_y)(i, j);
+  }
   set_given_faces(state.time + dt, star_face_x_, star_face_y_);  // walls, inflows at t^{n+1}
   sync_periodic_faces(grid_, star_face_x_, star_face_y_);
   stats.max_divergence_before = max_abs_divergence(grid_, star_face_x_, star_face_y_);
@@ -324,14 +348,79 @@ ProjectionStats FluidSolver::project_smac(FluidState& state, double dt) {
 
   stats.max_velocity_change = max_change;
   stats.max_velocity = max_velocity;
-  // N^n becomes N^{n-1} of the next step.
+  return stats;
+}
+
+void FluidSolver::homogeneous_projection(double dt, CellField& increment_x, CellField& increment_y,
+                                         const FaceField* face_increment_x, const FaceField* face_increment_y) {
+  // The projection is affine in u*: of u* + g it gives P(u*) + P_0(g), P_0 the projection with
+  // homogeneous data (no flux through the faces with a given flux; p^n's gradient is in P(u*)).
+  phi_ = increment_x;
+  work_ = increment_y;
+  fill_neumann_ghosts(grid_, phi_);
+  fill_neumann_ghosts(grid_, work_);
+  const FaceRange faces = corrected_faces();
+  star_face_x_.fill(0.0);  // faces with a given flux: no increment
+  star_face_y_.fill(0.0);
+  const bool balanced = face_increment_x != nullptr && face_increment_y != nullptr;
+  IBMS_PARALLEL_ROWS
+  for (int j = 0; j < grid_.ny; ++j)
+    for (int i = faces.x_first; i <= faces.x_last; ++i)
+      star_face_x_(i, j) = balanced ? (*face_increment_x)(i, j) : 0.5 * (phi_(i - 1, j) + phi_(i, j));
+  IBMS_PARALLEL_ROWS
+  for (int j = faces.y_first; j <= faces.y_last; ++j)
+    for (int i = 0; i < grid_.nx; ++i)
+      star_face_y_(i, j) = balanced ? (*face_increment_y)(i, j) : 0.5 * (work_(i, j - 1) + work_(i, j));
+  sync_periodic_faces(grid_, star_face_x_, star_face_y_);
+  divergence(grid_, star_face_x_, star_face_y_, 1.0 / dt, buffer_.data());
+  poisson_->solve(/*a=*/0.0, /*b=*/1.0, buffer_.data(), buffer_.data());
+  phi_.copy_interior_from(buffer_.data());
+  fill_correction_ghosts(grid_, boundaries_, phi_);
+  centre_gradient(grid_, phi_, grad_x_, grad_y_);
+  IBMS_PARALLEL_ROWS
+  for (int j = 0; j < grid_.ny; ++j)
+    for (int i = 0; i < grid_.nx; ++i) {
+      increment_x(i, j) -= dt * grad_x_(i, j);
+      increment_y(i, j) -= dt * grad_y_(i, j);
+    }
+}
+
+double FluidSolver::project_increment(FluidState& state, double dt, CellField& increment_x, CellField& increment_y,
+                                      const FaceField* face_increment_x, const FaceField* face_increment_y) {
+  homogeneous_projection(dt, increment_x, increment_y, face_increment_x, face_increment_y);
+  const double inv_dx = 1.0 / grid_.dx(), inv_dy = 1.0 / grid_.dy();
+  const FaceRange faces = corrected_faces();
+  IBMS_PARALLEL_ROWS
+  for (int j = 0; j < grid_.ny; ++j)
+    for (int i = faces.x_first; i <= faces.x_last; ++i)
+      state.velocity_face_x(i, j) += star_face_x_(i, j) - dt * (phi_(i, j) - phi_(i - 1, j)) * inv_dx;
+  IBMS_PARALLEL_ROWS
+  for (int j = faces.y_first; j <= faces.y_last; ++j)
+    for (int i = 0; i < grid_.nx; ++i)
+      state.velocity_face_y(i, j) += star_face_y_(i, j) - dt * (phi_(i, j) - phi_(i, j - 1)) * inv_dy;
+  sync_periodic_faces(grid_, state.velocity_face_x, state.velocity_face_y);
+  double max_change = 0.0;
+#if defined(_OPENMP)
+#pragma omp parallel for schedule(static) reduction(max : max_change)
+#endif
+  for (int j = 0; j < grid_.ny; ++j)
+    for (int i = 0; i < grid_.nx; ++i) {
+      max_change = std::max({max_change, std::abs(increment_x(i, j)), std::abs(increment_y(i, j))});
+      state.velocity_x(i, j) += increment_x(i, j);
+      state.velocity_y(i, j) += increment_y(i, j);
+      state.pressure(i, j) += phi_(i, j);
+    }
+  return max_change;
+}
+
+void FluidSolver::end_step(FluidState& state, double dt) {
+  // N^n becomes N^{n-1} of the next step; the clock moves to t^{n+1}.
   std::swap(state.convection_x_prev, conv_x_);
   std::swap(state.convection_y_prev, conv_y_);
   state.has_convection_prev = true;
   state.time_step_prev = dt;
   state.time += dt;
   state.step += 1;
-  return stats;
 }
 
 double FluidSolver::kinetic_energy(const FluidState& state) const {

@@ -64,6 +64,19 @@ struct FluidSchemes {
   bool quadratic_wall = false;
 };
 
+// A force of the step as it enters the face velocities of the momentum interpolation (balanced
+// form): u* holds the cell increment dt S F (cell_x, cell_y); the faces take dt S_f F spread onto
+// the faces (face_x, face_y) in place of the mean of the cell increment. Where the force is balanced
+// by a pressure jump (G_c p = f at the cells, G_f p = f at the faces), the faces then carry no
+// dt (mean(G_c) - G_f) p term of the jump, which would be a flux through an immersed boundary of
+// order dt that changes its forces with the time step.
+struct FaceForcing {
+  const CellField* cell_x = nullptr;
+  const CellField* cell_y = nullptr;
+  const FaceField* face_x = nullptr;
+  const FaceField* face_y = nullptr;
+};
+
 class FluidSolver {
  public:
   FluidSolver(const Grid& grid, double kinematic_viscosity, const FluidBoundaries& boundaries,
@@ -101,7 +114,23 @@ class FluidSolver {
   CellField& velocity_star_y() { return star_y_; }
 
   // METHOD.md §2.3 steps 3-5: momentum interpolation, L phi = D U*/dt, corrections of U_f, u, p.
-  // Writes level n+1 into `state` and advances its time and step.
+  // Writes the fields of level n+1 into `state`; its clock stays at t^n until end_step.
+  // forcing: a force in u* that the faces take in the balanced form (FaceForcing), or null.
+  ProjectionStats project(FluidState& state, double dt, const FaceForcing* forcing = nullptr);
+  // P_0 g in place: the homogeneous projection of a cell increment g (no flux through the faces
+  // with a given flux): g -= dt G_c phi with L phi = D mean(g) / dt. The face increment
+  // mean(g) - dt G_f phi and phi stay in the solver's work fields until the next call.
+  // With face_increment_x/y given, the faces take them instead of mean(g) (the balanced form).
+  void homogeneous_projection(double dt, CellField& increment_x, CellField& increment_y,
+                              const FaceField* face_increment_x = nullptr, const FaceField* face_increment_y = nullptr);
+  // After project: adds the projection of a cell increment g (dt S dF of a forcing correction) to
+  // the fields of level n+1: u += P_0 g, U_f += mean(g) - dt G_f phi, p += phi (g is overwritten
+  // by P_0 g). Returns max |P_0 g| over the cells and both components.
+  double project_increment(FluidState& state, double dt, CellField& increment_x, CellField& increment_y,
+                           const FaceField* face_increment_x = nullptr, const FaceField* face_increment_y = nullptr);
+  // Closes the step: N^n becomes N^{n-1} (AB2 history), t^n + dt, step + 1.
+  void end_step(FluidState& state, double dt);
+  // project then end_step: the step of a scene without immersed boundary.
   ProjectionStats project_smac(FluidState& state, double dt);
 
   // Kinetic energy per unit density and depth, 0.5 sum |u|^2 dx dy [length^4/time^2].

@@ -53,6 +53,33 @@ MappedStencil map_stencil(KernelKind kernel, double coordinate, double origin, d
   return mapped;
 }
 
+// Marker coordinate -> stencil over the faces 0..n_cells normal to one direction (face m at
+// origin + m spacing). Beyond a wall, face -k mirrors face k and face n + k mirrors face n - k
+// (ghost_side -1 / +1: the normal component is odd about the wall); periodic faces wrap to 0..n-1.
+MappedStencil map_face_stencil(KernelKind kernel, double coordinate, double origin, double spacing, int n_cells,
+                               bool periodic) {
+  const KernelStencil stencil = kernel_stencil(kernel, (coordinate - origin) / spacing);
+  MappedStencil mapped;
+  mapped.n_nodes = stencil.n_nodes;
+  for (int k = 0; k < stencil.n_nodes; ++k) {
+    int node = stencil.first + k;
+    int side = 0;
+    if (periodic) {
+      node = ((node % n_cells) + n_cells) % n_cells;
+    } else if (node < 0) {
+      node = -node;
+      side = -1;
+    } else if (node > n_cells) {
+      node = 2 * n_cells - node;
+      side = +1;
+    }
+    mapped.cell[k] = node;
+    mapped.weight[k] = stencil.weight[k];
+    mapped.ghost_side[k] = side;
+  }
+  return mapped;
+}
+
 void check_field(const Grid& grid, const CellField& field, const char* name) {
   if (field.nx() != grid.nx || field.ny() != grid.ny)
     throw std::invalid_argument(std::string(name) + " does not match the grid");
@@ -125,6 +152,41 @@ void spread(const Grid& grid, KernelKind kernel, const std::vector<std::array<do
       }
     }
   }
+}
+
+void spread_to_faces(const Grid& grid, KernelKind kernel, const std::vector<std::array<double, 2>>& markers,
+                     const std::vector<std::array<double, 2>>& marker_force, const std::vector<double>& marker_volume,
+                     FaceField& face_x, FaceField& face_y) {
+  if (face_x.ni() != grid.nx + 1 || face_x.nj() != grid.ny || face_y.ni() != grid.nx || face_y.nj() != grid.ny + 1)
+    throw std::invalid_argument("spread_to_faces: face fields do not match the grid");
+  if (marker_force.size() != markers.size() || marker_volume.size() != markers.size())
+    throw std::invalid_argument("spread_to_faces: markers, forces and volumes differ in length");
+  const double inverse_cell_area = 1.0 / (grid.dx() * grid.dy());
+  for (std::size_t l = 0; l < markers.size(); ++l) {
+    // Cell-centre stencils check the marker lies in the box; the face stencils reuse its position.
+    const MappedStencil cx = map_stencil(kernel, markers[l][0], grid.origin_x, grid.dx(), grid.nx, grid.periodic_x, "x");
+    const MappedStencil cy = map_stencil(kernel, markers[l][1], grid.origin_y, grid.dy(), grid.ny, grid.periodic_y, "y");
+    const MappedStencil fx = map_face_stencil(kernel, markers[l][0], grid.origin_x, grid.dx(), grid.nx, grid.periodic_x);
+    const MappedStencil fy = map_face_stencil(kernel, markers[l][1], grid.origin_y, grid.dy(), grid.ny, grid.periodic_y);
+    const double ax = marker_force[l][0] * marker_volume[l] * inverse_cell_area;
+    const double ay = marker_force[l][1] * marker_volume[l] * inverse_cell_area;
+    // Each reflection is a factor -1, as for the cell centres: the normal component is odd about
+    // a wall's faces, the tangential one odd about the wall between the mirrored cells.
+    for (int ky = 0; ky < cy.n_nodes; ++ky)
+      for (int kx = 0; kx < fx.n_nodes; ++kx) {
+        const double sign = (fx.ghost_side[kx] != 0) == (cy.ghost_side[ky] != 0) ? 1.0 : -1.0;
+        face_x(fx.cell[kx], cy.cell[ky]) += sign * fx.weight[kx] * cy.weight[ky] * ax;
+      }
+    for (int ky = 0; ky < fy.n_nodes; ++ky)
+      for (int kx = 0; kx < cx.n_nodes; ++kx) {
+        const double sign = (cx.ghost_side[kx] != 0) == (fy.ghost_side[ky] != 0) ? 1.0 : -1.0;
+        face_y(cx.cell[kx], fy.cell[ky]) += sign * cx.weight[kx] * fy.weight[ky] * ay;
+      }
+  }
+  if (grid.periodic_x)
+    for (int j = 0; j < grid.ny; ++j) face_x(grid.nx, j) = face_x(0, j);
+  if (grid.periodic_y)
+    for (int i = 0; i < grid.nx; ++i) face_y(i, grid.ny) = face_y(i, 0);
 }
 
 }  // namespace ibms

@@ -36,4 +36,13 @@ void spread(const Grid& grid, KernelKind kernel, const std::vector<std::array<do
             const std::vector<std::array<double, 2>>& marker_force,
             const std::vector<double>& marker_volume, CellField& force_x, CellField& force_y);
 
+// The same spreading onto the face-normal components: F_x onto the x-faces (x_{i-1/2}, y_j), F_y
+// onto the y-faces (x_i, y_{j-1/2}), with the kernel centred at the faces; adds. Shares beyond a wall
+// go to the mirrored face with a factor -1 per reflection; a periodic direction's last face is set
+// equal to its first. Used where a force must enter the face velocities as the pressure gradient
+// does (balanced momentum interpolation, fluid/fluid_solver.hpp).
+void spread_to_faces(const Grid& grid, KernelKind kernel, const std::vector<std::array<double, 2>>& markers,
+                     const std::vector<std::array<double, 2>>& marker_force, const std::vector<double>& marker_volume,
+                     FaceField& face_x, FaceField& face_y);
+
 }  // namespace ibms

@@ -139,6 +139,9 @@ std::string resolved_scene_toml(const Scene& scene) {
   out += fmt::format("inner_fluid_inertia = {}\n", toml_string(ibm.inner_fluid_inertia));
   out += fmt::format("sub_markers = {}\n", toml_bool(ibm.sub_markers));
   out += fmt::format("marker_retraction = {}\n", toml_float(ibm.marker_retraction));
+  out += fmt::format("coupling = {}\n", toml_string(ibm.coupling));
+  out += fmt::format("slip_tolerance = {}\n", toml_float(ibm.slip_tolerance));
+  out += fmt::format("max_coupling_iterations = {}\n", ibm.max_coupling_iterations);
 
   for (const BodySpec& body : scene.bodies) append_body(out, body);
 

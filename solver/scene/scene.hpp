@@ -81,6 +81,17 @@ struct IbmSpec {
   // regularised kernel makes the forced body look larger than its rim by a fraction of a cell
   // (validation/dfg_cylinder_2d1/README.md measures it); 0 = markers on the rim [-].
   double marker_retraction = 0.0;
+  // How the forces hold the no-slip condition (docs/method.md, "Coupling"):
+  //  "uhlmann"  Uhlmann (2005): the forcing passes on the explicit estimate, the force then enters
+  //             the implicit solve; the implicit solve and the projection leave a slip at the end
+  //             of the step that scales with nu dt / h^2 (the papers' scheme);
+  //  "no_slip"  the forces are the Lagrange multipliers of the no-slip constraint at t^{n+1}: the
+  //             previous step's forces enter the implicit solve as a predictor, and corrections are
+  //             projected with the pressure until the slip |J u^{n+1} - U_target| is below
+  //             slip_tolerance U_ref at every marker (Taira & Colonius 2007, in incremental form).
+  std::string coupling = "uhlmann";
+  double slip_tolerance = 1.0e-3;    // no_slip: largest slip left at the end of the step / U_ref [-]
+  int max_coupling_iterations = 100; // no_slip: GMRES products (one Poisson solve each) per step at most [-]
 };
 
 struct SwellingSpec {

@@ -133,6 +133,9 @@ void read_ibm(const TomlTableReader& table, IbmSpec& ibm) {
                     schema::inner_fluid_inertia_choices);
   table.read_bool("sub_markers", ibm.sub_markers);
   table.read_real("marker_retraction", ibm.marker_retraction, Need::optional, Bounds{0.0, false, 1.0, true});
+  table.read_choice("coupling", ibm.coupling, schema::coupling_choices);
+  table.read_real("slip_tolerance", ibm.slip_tolerance, Need::optional, Bounds{0.0, true, 1.0, false});
+  table.read_integer("max_coupling_iterations", ibm.max_coupling_iterations, Need::optional, /*lower=*/1);
 }
 
 void read_swelling(const TomlTableReader& table, double diameter, SwellingSpec& swelling) {

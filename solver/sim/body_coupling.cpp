@@ -31,7 +31,8 @@ BodyCoupling::BodyCoupling(const MassSpringBody& body, std::size_t max_markers)
     : fluid_force(body.n_points()), inner_fluid_force(body.n_points()), external_force(body.n_points()),
       triangle_cells(body.n_surface), triangle_momentum(body.n_surface) {
   const std::size_t capacity = std::max<std::size_t>(max_markers, body.n_surface);
-  for (auto* v : {&marker, &target_velocity, &interpolated_velocity, &pass_force, &pass_increment, &forcing_sum})
+  for (auto* v : {&marker, &target_velocity, &interpolated_velocity, &pass_force, &pass_increment, &forcing_sum,
+                  &previous_force})
     v->reserve(capacity);
   marker_edge.reserve(capacity);
   marker_fraction.reserve(capacity);
@@ -155,6 +156,67 @@ void apply_direct_forcing(const Grid& grid, KernelKind kernel, const WallVelocit
       spread(grid, kernel, c.marker, c.pass_increment, c.marker_volume, velocity_star_x, velocity_star_y);
     }
   }
+}
+
+bool spread_previous_forces(const Grid& grid, KernelKind kernel, double dt, std::vector<BodyCoupling>& coupling,
+                            CellField& velocity_star_x, CellField& velocity_star_y) {
+  for (const BodyCoupling& c : coupling)
+    if (c.previous_force.size() != c.marker.size()) return false;
+  for (BodyCoupling& c : coupling) {
+    for (std::size_t l = 0; l < c.marker.size(); ++l)
+      for (int d = 0; d < 2; ++d) {
+        c.forcing_sum[l][d] = c.previous_force[l][d];
+        c.pass_increment[l][d] = dt * c.previous_force[l][d];
+      }
+    spread(grid, kernel, c.marker, c.pass_increment, c.marker_volume, velocity_star_x, velocity_star_y);
+  }
+  return true;
+}
+
+double measure_slip(const Grid& grid, KernelKind kernel, const WallVelocities& walls, const CellField& velocity_x,
+                    const CellField& velocity_y, std::vector<BodyCoupling>& coupling) {
+  double largest = 0.0;
+  for (BodyCoupling& c : coupling) {
+    interpolate(grid, kernel, walls, velocity_x, velocity_y, c.marker, c.interpolated_velocity);
+    double max2 = 0.0, sum2 = 0.0;
+    for (std::size_t l = 0; l < c.marker.size(); ++l) {
+      for (int d = 0; d < 2; ++d) c.pass_increment[l][d] = c.target_velocity[l][d] - c.interpolated_velocity[l][d];
+      const double r2 = c.pass_increment[l][0] * c.pass_increment[l][0] + c.pass_increment[l][1] * c.pass_increment[l][1];
+      max2 = std::max(max2, r2);
+      sum2 += r2;
+    }
+    c.slip_max = std::sqrt(max2) / c.slip_reference_speed;
+    c.slip_rms = c.marker.empty() ? 0.0 : std::sqrt(sum2 / static_cast<double>(c.marker.size())) / c.slip_reference_speed;
+    largest = std::max(largest, c.slip_max);
+  }
+  return largest;
+}
+
+void spread_slip_correction(const Grid& grid, KernelKind kernel, double dt, std::vector<BodyCoupling>& coupling,
+                            CellField& increment_x, CellField& increment_y) {
+  for (BodyCoupling& c : coupling) {
+    for (std::size_t l = 0; l < c.marker.size(); ++l)
+      for (int d = 0; d < 2; ++d) c.forcing_sum[l][d] += c.pass_increment[l][d] / dt;
+    spread(grid, kernel, c.marker, c.pass_increment, c.marker_volume, increment_x, increment_y);
+  }
+}
+
+void spread_step_forces(const Grid& grid, KernelKind kernel, double dt, std::vector<BodyCoupling>& coupling,
+                        CellField& force_cell_x, CellField& force_cell_y, FaceField& force_face_x, FaceField& force_face_y) {
+  force_cell_x.fill(0.0);
+  force_cell_y.fill(0.0);
+  force_face_x.fill(0.0);
+  force_face_y.fill(0.0);
+  for (BodyCoupling& c : coupling) {
+    for (std::size_t l = 0; l < c.marker.size(); ++l)
+      for (int d = 0; d < 2; ++d) c.pass_increment[l][d] = dt * c.forcing_sum[l][d];
+    spread(grid, kernel, c.marker, c.pass_increment, c.marker_volume, force_cell_x, force_cell_y);
+    spread_to_faces(grid, kernel, c.marker, c.pass_increment, c.marker_volume, force_face_x, force_face_y);
+  }
+}
+
+void keep_forces(std::vector<BodyCoupling>& coupling) {
+  for (BodyCoupling& c : coupling) c.previous_force.assign(c.forcing_sum.begin(), c.forcing_sum.end());
 }
 
 void compute_fluid_reaction(double fluid_density, std::vector<BodyCoupling>& coupling) {

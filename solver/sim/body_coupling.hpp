@@ -58,6 +58,15 @@ struct BodyCoupling {
   // in it: gravity acts on the bodies only (§2.6), as the buoyancy-corrected weight.
   Vec2 hydrodynamic_force{0.0, 0.0};
   double hydrodynamic_torque = 0.0;
+  // The slip left at the end of the step, |J u^{n+1} - U_target_l| / U_ref over the markers: the
+  // largest and the root mean square [-]. U_ref is the body's reference_speed, else the scene's
+  // driving speed (slip_reference_speed).
+  double slip_max = 0.0;
+  double slip_rms = 0.0;
+  double slip_reference_speed = 1.0;       // [length/time]
+  // ibm.coupling = "no_slip": the forces F_l of the latest step, the predictor of the next one while
+  // the marker count stays the same (previous_force.size() == marker.size(); empty before the first step).
+  std::vector<Vec2> previous_force;        // [length/time^2]
 
   // max_markers: capacity reserved once for the marker arrays, so that sub-markers added as the
   // body swells (up to 1.5x the nominal swollen edge) do not reallocate them within the step loop.
@@ -87,6 +96,29 @@ void prepare_markers(const std::vector<MassSpringBody>& bodies,
 void apply_direct_forcing(const Grid& grid, KernelKind kernel, const WallVelocities& walls, double dt,
                           int n_passes, std::vector<BodyCoupling>& coupling, CellField& velocity_star_x,
                           CellField& velocity_star_y);
+
+// The forces of the previous step as the predictor of ibm.coupling = "no_slip": if every body has
+// them for its present markers, forcing_sum = previous_force and u~ += dt S F (returns true);
+// otherwise nothing is changed (returns false) and the caller forces by apply_direct_forcing.
+bool spread_previous_forces(const Grid& grid, KernelKind kernel, double dt, std::vector<BodyCoupling>& coupling,
+                            CellField& velocity_star_x, CellField& velocity_star_y);
+
+// Slip of the velocity (velocity_x, velocity_y) at the markers: r_l = U_target_l - J u (kept in
+// pass_increment), slip_max and slip_rms of every body; returns the largest slip_max.
+double measure_slip(const Grid& grid, KernelKind kernel, const WallVelocities& walls, const CellField& velocity_x,
+                    const CellField& velocity_y, std::vector<BodyCoupling>& coupling);
+
+// One correction of the no-slip iteration after measure_slip: dF_l = r_l / dt is added to
+// forcing_sum, and dt S dF = S r is added to (increment_x, increment_y).
+void spread_slip_correction(const Grid& grid, KernelKind kernel, double dt, std::vector<BodyCoupling>& coupling,
+                            CellField& increment_x, CellField& increment_y);
+
+// force_cell = dt S F and force_face = dt S_f F of forcing_sum F of every body (overwritten).
+void spread_step_forces(const Grid& grid, KernelKind kernel, double dt, std::vector<BodyCoupling>& coupling,
+                        CellField& force_cell_x, CellField& force_cell_y, FaceField& force_face_x, FaceField& force_face_y);
+
+// previous_force = forcing_sum of every body (the predictor of the next step).
+void keep_forces(std::vector<BodyCoupling>& coupling);
 
 // F_f = -rho_f forcing_sum_l dV_l of every marker, returned to the rim points of its edge with
 // weights (1 - w, w); 0 on the centre (METHOD.md §1.6, §3.6).

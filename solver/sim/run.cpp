@@ -130,6 +130,8 @@ std::vector<SeriesValue> body_series(const Simulation& sim) {
   // mean (compatibility, METHOD.md §1.8), with each body's largest forcing target speed.
   row.push_back({"max_fluid_velocity_component", "length/time", sim.last_projection.max_velocity});
   row.push_back({"poisson_removed_mean_bodies", "1/time^2", sim.last_projection.removed_mean});
+  if (sim.enforces_no_slip())
+    row.push_back({"coupling_iterations", "-", static_cast<double>(sim.last_coupling_iterations)});
   for (std::size_t b = 0; b < sim.bodies().size(); ++b) {
     const MassSpringBody& body = sim.bodies()[b];
     const std::string name = body_name(b);

@@ -5,6 +5,8 @@
 #include <chrono>
 #include <cmath>
 
+#include <fmt/format.h>
+
 #include "core/errors.hpp"
 #include "solid/spring_forces.hpp"
 
@@ -72,6 +74,20 @@ Simulation::Simulation(const Scene& scene)
   }
   apply_swelling_schedules(swelling_, fluid_.time, bodies_);
   set_instability_bounds();
+  for (std::size_t b = 0; b < bodies_.size(); ++b)
+    coupling_[b].slip_reference_speed =
+        scene.bodies[b].reference_speed > 0.0 ? scene.bodies[b].reference_speed : driving_speed_;
+  if (enforces_no_slip()) {
+    slip_increment_x = CellField(grid_);
+    slip_increment_y = CellField(grid_);
+    force_cell_x = CellField(grid_);
+    force_cell_y = CellField(grid_);
+    force_face_x = FaceField::x_faces(grid_);
+    force_face_y = FaceField::y_faces(grid_);
+    std::size_t unknowns = 0;
+    for (const BodyCoupling& c : coupling_) unknowns += 2 * c.marker.capacity();
+    no_slip_work.reserve(unknowns);
+  }
   if (scene.contact.stiffness > 0.0) {
     contact_model_ = ContactModel(scene.contact);
     contact_box_ = WallBox{{grid_.origin_x, grid_.origin_y}, {grid_.length_x, grid_.length_y},
@@ -205,13 +221,20 @@ std::vector<std::string> Simulation::stage_names() const {
                         ? ", quadratic wall closure by " + std::to_string(FluidSolver::wall_closure_sweeps) +
                               " defect-correction sweeps)"
                         : ")"));
-  if (has_bodies())
+  if (has_bodies() && enforces_no_slip())
+    stages.push_back("immersed-boundary forcing (" + scene_.ibm.kernel +
+                     ", no_slip coupling: the previous step's forces inside the Crank-Nicolson solve; first step " +
+                     std::to_string(scene_.ibm.forcing_passes) + " pass(es); target = marker velocity minus swelling part)");
+  else if (has_bodies())
     stages.push_back("immersed-boundary forcing (" + scene_.ibm.kernel + ", " + std::to_string(scene_.ibm.forcing_passes) +
                      " pass(es) on the " +
                      (forces_explicit_estimate() ? "explicit estimate, force inside the Crank-Nicolson solve"
                                                  : "Crank-Nicolson prediction") +
                      "; target = marker velocity minus swelling part)");
   stages.push_back("projection (momentum interpolation, DCT/FFT Poisson)");
+  if (has_bodies() && enforces_no_slip())
+    stages.push_back("no-slip corrections (force corrections projected until the slip at t^{n+1} <= " +
+                     fmt::format("{:g}", scene_.ibm.slip_tolerance) + " U_ref)");
   if (has_bodies()) {
     stages.push_back("fluid reaction on the rim points");
     stages.push_back(scene_.ibm.inner_fluid_inertia == "kempe"

@@ -16,6 +16,7 @@
 #include "sim/body_coupling.hpp"
 #include "sim/body_update.hpp"
 #include "sim/inner_fluid_inertia.hpp"
+#include "sim/no_slip_coupling.hpp"
 #include "sim/stage_timers.hpp"
 #include "solid/mass_spring_body.hpp"
 #include "solid/rigid_motion.hpp"
@@ -40,6 +41,8 @@ class Simulation {
   bool has_bodies() const { return scene_.has_bodies(); }
   // ibm.forcing_stage: the markers force the explicit estimate (Uhlmann 2005) or the CN prediction.
   bool forces_explicit_estimate() const { return scene_.ibm.forcing_stage == "explicit_estimate"; }
+  // ibm.coupling = "no_slip": the forces are corrected until no-slip holds at t^{n+1}.
+  bool enforces_no_slip() const { return has_bodies() && scene_.ibm.coupling == "no_slip"; }
   // Names of the pipeline stages this scene runs, in order (`ibms info` prints them).
   std::vector<std::string> stage_names() const;
 
@@ -101,6 +104,17 @@ class Simulation {
   std::vector<ImplicitSpringSystem> implicit_systems;  // per body: storage of the implicit spring step
 
   ProjectionStats last_projection;  // diagnostics of the latest step
+  // ibm.coupling = "no_slip": the projected increment of one correction (allocated once), and the
+  // corrections of the latest step and of the run.
+  CellField slip_increment_x, slip_increment_y;
+  // ibm.coupling = "no_slip": the step's force dt S F on the cells and dt S_f F on the faces (the
+  // balanced momentum interpolation, FaceForcing); after the projection the faces are the scratch
+  // of the corrections' face increments.
+  CellField force_cell_x, force_cell_y;
+  FaceField force_face_x, force_face_y;
+  NoSlipWorkspace no_slip_work;
+  int last_coupling_iterations = 0;
+  long total_coupling_iterations = 0;
   int last_n_substeps = 0;          // solid sub-steps of the latest step, most of any group [-]
   long last_body_substeps = 0;      // solid sub-steps of the latest step summed over bodies [-]
   long total_substeps = 0;          // solid sub-steps since the Simulation was built (most of any group) [-]

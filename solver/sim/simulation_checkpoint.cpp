@@ -146,6 +146,12 @@ void write_simulation_checkpoint(OutputFile& out, const Simulation& sim, double 
     const BodyCoupling& c = sim.coupling()[b];
     arrays[prefix + "inner_angular_momentum"] = {c.inner_angular_momentum, c.inner_reference_centre[0],
                                                  c.inner_reference_centre[1]};
+    // ibm.coupling = "no_slip": the latest forces, the next step's predictor (count first, then values).
+    if (sim.enforces_no_slip()) {
+      std::vector<double> forces{static_cast<double>(c.previous_force.size())};
+      for (const Vec2& force : c.previous_force) forces.insert(forces.end(), {force[0], force[1]});
+      arrays[prefix + "previous_force"] = forces;
+    }
     if (body.kind != BodyKind::mass_spring) {
       const RigidState& r = sim.rigid()[b].state;
       arrays[prefix + "rigid_state"] = {r.centre[0], r.centre[1], r.angle, r.velocity[0], r.velocity[1],
@@ -212,6 +218,16 @@ double restore_simulation(const Checkpoint& checkpoint, const std::string& path,
     const std::vector<double> angular = read.array(prefix + "inner_angular_momentum", 3);
     c.inner_angular_momentum = angular[0];
     c.inner_reference_centre = {angular[1], angular[2]};
+    if (sim.enforces_no_slip()) {
+      const auto found = checkpoint.arrays.find(prefix + "previous_force");
+      if (found == checkpoint.arrays.end() || found->second.empty()) read.fail(prefix + "previous_force", "missing");
+      const double n = found->second[0];
+      if (!(n >= 0.0 && n <= static_cast<double>(c.previous_force.capacity()) && n == std::floor(n)))
+        read.fail(prefix + "previous_force", fmt::format("marker count {} is not in [0, {}]", n, c.previous_force.capacity()));
+      const std::vector<double>& values = read.array(prefix + "previous_force", 1 + 2 * static_cast<std::size_t>(n));
+      c.previous_force.resize(static_cast<std::size_t>(n));
+      for (std::size_t l = 0; l < c.previous_force.size(); ++l) c.previous_force[l] = {values[1 + 2 * l], values[2 + 2 * l]};
+    }
     if (body.kind != BodyKind::mass_spring) {
       const std::vector<double> r = read.array(prefix + "rigid_state", 6);
       sim.rigid()[b].state = {{r[0], r[1]}, r[2], {r[3], r[4]}, r[5]};

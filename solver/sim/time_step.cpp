@@ -1,62 +1,137 @@
-// One step n -> n+1 of METHOD.md §7. Read top to bottom; each line is one substep.
-// Scenes without bodies run only the predictor and the projection.
+// One step n -> n+1 of docs/method.md §7. advance_one_step reads as the method: one call per
+// sub-step, each timed inside. Scenes without bodies run only the prediction, the projection and
+// the clock.
+#include <algorithm>
+#include <cmath>
+
+#include "sim/no_slip_coupling.hpp"
 #include "sim/simulation.hpp"
 
 namespace ibms {
 
-void advance_one_step(Simulation& sim, double dt) {
-  FluidState& fluid = sim.fluid();
-  StageTimers& timers = sim.timers();
-  const double time_n = fluid.time;
-  if (sim.has_bodies()) {
-    auto t = timers.time(Stage::schedules);
-    apply_swelling_schedules(sim.swelling(), time_n, sim.bodies());  // D(t^n), M at constant density, §1.8
-    prepare_markers(sim.bodies(), sim.swelling(), time_n, fluid.time_step_prev, sim.grid(),
-                    sim.scene().ibm.sub_markers, sim.coupling(),
-                    sim.scene().ibm.marker_retraction * sim.grid().dx());  // X^n, dV_l, U_target, §1.8, §3.6
-  }
-  const auto force_markers = [&](CellField& velocity_x, CellField& velocity_y) {
-    auto t = timers.time(Stage::ib_forcing);
-    apply_direct_forcing(sim.grid(), sim.kernel(), wall_velocities_at(sim.boundaries(), time_n), dt,
-                         sim.scene().ibm.forcing_passes, sim.coupling(), velocity_x,
-                         velocity_y);  // F = (U_target - J u)/dt, u += dt S F, §3.5
-  };
+namespace {
+
+// 1. D(t^n) and M at constant density (§1.8); markers X^n, dV_l and U_target (§1.8, §3.6).
+void prepare_bodies(Simulation& sim, double time_n) {
+  auto t = sim.timers().time(Stage::schedules);
+  const FluidState& fluid = sim.fluid();
+  apply_swelling_schedules(sim.swelling(), time_n, sim.bodies());
+  prepare_markers(sim.bodies(), sim.swelling(), time_n, fluid.time_step_prev, sim.grid(), sim.scene().ibm.sub_markers,
+                  sim.coupling(), sim.scene().ibm.marker_retraction * sim.grid().dx());
+}
+
+// F = (U_target - J u)/dt in forcing passes, u += dt S F (§3.5), on velocity_star.
+void force_markers(Simulation& sim, double time_n, double dt) {
+  auto t = sim.timers().time(Stage::ib_forcing);
   FluidSolver& solver = sim.fluid_solver();
-  if (sim.has_bodies() && sim.forces_explicit_estimate()) {
-    // Uhlmann (2005) steps 1-5: force the explicit estimate, the force enters the implicit solve.
-    { auto t = timers.time(Stage::predictor); solver.predict_explicit(fluid, dt); }  // u~_e
-    force_markers(solver.velocity_star_x(), solver.velocity_star_y());               // u~_e + dt f
-    { auto t = timers.time(Stage::predictor); solver.complete_prediction(fluid, dt); }  // u~ with f
+  apply_direct_forcing(sim.grid(), sim.kernel(), wall_velocities_at(sim.boundaries(), time_n), dt,
+                       sim.scene().ibm.forcing_passes, sim.coupling(), solver.velocity_star_x(), solver.velocity_star_y());
+}
+
+// 2. The momentum prediction u~ (§2.3) with the immersed-boundary force (§3.1):
+//  - no_slip coupling: the previous step's forces in the Crank-Nicolson solve (when the markers
+//    are the same; otherwise as Uhlmann);
+//  - Uhlmann (2005) steps 1-5: force the explicit estimate, the force enters the implicit solve;
+//  - ibm.forcing_stage = "implicit_prediction": force the Crank-Nicolson prediction.
+void predict(Simulation& sim, double time_n, double dt) {
+  FluidState& fluid = sim.fluid();
+  FluidSolver& solver = sim.fluid_solver();
+  if (!sim.has_bodies()) {
+    auto t = sim.timers().time(Stage::predictor);
+    solver.predict_momentum(fluid, dt, nullptr, nullptr);
+    return;
+  }
+  if (sim.enforces_no_slip() || sim.forces_explicit_estimate()) {
+    { auto t = sim.timers().time(Stage::predictor); solver.predict_explicit(fluid, dt); }  // u~_e
+    bool predicted = false;
+    if (sim.enforces_no_slip()) {
+      auto t = sim.timers().time(Stage::ib_forcing);
+      predicted = spread_previous_forces(sim.grid(), sim.kernel(), dt, sim.coupling(), solver.velocity_star_x(),
+                                         solver.velocity_star_y());  // u~_e + dt S F^{n-1}
+    }
+    if (!predicted) force_markers(sim, time_n, dt);                                        // u~_e + dt f
+    if (sim.enforces_no_slip()) {
+      auto t = sim.timers().time(Stage::ib_forcing);
+      spread_step_forces(sim.grid(), sim.kernel(), dt, sim.coupling(), sim.force_cell_x, sim.force_cell_y,
+                         sim.force_face_x, sim.force_face_y);  // dt S F, dt S_f F for the faces
+    }
+    { auto t = sim.timers().time(Stage::predictor); solver.complete_prediction(fluid, dt); }  // u~ with f
   } else {
-    { auto t = timers.time(Stage::predictor); solver.predict_momentum(fluid, dt, nullptr, nullptr); }  // u~, §2.3
-    if (sim.has_bodies()) force_markers(solver.velocity_star_x(), solver.velocity_star_y());  // u~ + dt f
+    { auto t = sim.timers().time(Stage::predictor); solver.predict_momentum(fluid, dt, nullptr, nullptr); }  // u~
+    force_markers(sim, time_n, dt);                                                                         // u~ + dt f
   }
-  {
-    auto t = timers.time(Stage::projection);
-    sim.last_projection = sim.fluid_solver().project_smac(fluid, dt);  // u^{n+1}, U_f^{n+1}, p^{n+1}
+}
+
+// 3. u^{n+1}, U_f^{n+1}, p^{n+1} (§2.3 steps 3-5).
+void project(Simulation& sim, double dt) {
+  auto t = sim.timers().time(Stage::projection);
+  const FaceForcing balanced{&sim.force_cell_x, &sim.force_cell_y, &sim.force_face_x, &sim.force_face_y};
+  sim.last_projection = sim.fluid_solver().project(sim.fluid(), dt, sim.enforces_no_slip() ? &balanced : nullptr);
+}
+
+// 4. The slip at t^{n+1} (§3.7); with the no_slip coupling, force corrections projected with the
+// pressure until no-slip holds at every marker (sim/no_slip_coupling.hpp).
+void hold_no_slip(Simulation& sim, double time_n, double dt) {
+  auto t = sim.timers().time(Stage::ib_forcing);
+  FluidState& fluid = sim.fluid();
+  const WallVelocities walls = wall_velocities_at(sim.boundaries(), time_n + dt);
+  if (!sim.enforces_no_slip()) {
+    measure_slip(sim.grid(), sim.kernel(), walls, fluid.velocity_x, fluid.velocity_y, sim.coupling());
+    return;
   }
-  if (sim.has_bodies()) {
-    auto t = timers.time(Stage::bodies);
-    compute_fluid_reaction(sim.fluid_density(), sim.coupling());  // F_f,l = -rho_f sum F_l dV_l, §1.6
-    sim.inner_fluid_inertia(sim.grid(), sim.fluid_density(), fluid, sim.bodies(), dt,
-                            sim.coupling());  // F_int = rho_f dI/dt (variant K) or 0 (A), §1.7
-    compute_hydrodynamic_loads(sim.bodies(), sim.coupling());  // F, T of the fluid on each body (eq. 1.7a)
-    sim.last_contact_stats = ContactStats{};
-    // Each group of bodies that may touch within the step takes its own sub-step; contact sub-steps
-    // only for a group that may touch something (issues 10 and 12).
-    SubstepGroups& groups = sim.substep_groups(dt);
-    const double global_limit = groups.group_of.empty() ? sim.global_contact_limit(dt) : HUGE_VAL;
-    const SolidStepCount count =
-        advance_bodies({time_n, dt, sim.fluid_density(), sim.scene().fluid.gravity, global_limit,
-                        sim.fixed_solid_substeps, &sim.spectral_workspace, &sim.implicit_systems},
-                       sim.swelling(), sim.contact_forces, groups, sim.coupling(), sim.contact_work(), sim.rigid(),
-                       sim.bodies());  // sub-steps by body kind, §5.3
-    sim.last_n_substeps = count.max_substeps;
-    sim.last_body_substeps = count.body_substeps;
-    sim.total_substeps += count.max_substeps;
-    sim.total_body_substeps += count.body_substeps;
-    sim.total_contact_work += groups.contact_work;
+  const IbmSpec& ibm = sim.scene().ibm;
+  const NoSlipResult result =
+      hold_no_slip(sim.grid(), sim.kernel(), walls, dt, ibm.slip_tolerance, ibm.max_coupling_iterations,
+                   sim.fluid_solver(), fluid, sim.coupling(), sim.slip_increment_x, sim.slip_increment_y,
+                   sim.force_face_x, sim.force_face_y, sim.no_slip_work);
+  keep_forces(sim.coupling());
+  sim.last_coupling_iterations = result.products;
+  sim.total_coupling_iterations += result.products;
+  if (result.products > 0) {
+    // The corrections changed u^{n+1}: its largest speed anew, its change since u^n at most by their sum.
+    double largest = 0.0;
+    for (int j = 0; j < sim.grid().ny; ++j)
+      for (int i = 0; i < sim.grid().nx; ++i)
+        largest = std::max({largest, std::abs(fluid.velocity_x(i, j)), std::abs(fluid.velocity_y(i, j))});
+    sim.last_projection.max_velocity = largest;
+    sim.last_projection.max_velocity_change += result.max_change;
   }
+}
+
+// 6. The fluid on the bodies and the bodies' sub-steps (§1.6, §1.7, §5.3).
+void advance_body_stage(Simulation& sim, double time_n, double dt) {
+  auto t = sim.timers().time(Stage::bodies);
+  compute_fluid_reaction(sim.fluid_density(), sim.coupling());  // F_f,l = -rho_f sum F_l dV_l, §1.6
+  sim.inner_fluid_inertia(sim.grid(), sim.fluid_density(), sim.fluid(), sim.bodies(), dt,
+                          sim.coupling());  // F_int = rho_f dI/dt (variant K) or 0 (A), §1.7
+  compute_hydrodynamic_loads(sim.bodies(), sim.coupling());  // F, T of the fluid on each body (eq. 1.7a)
+  sim.last_contact_stats = ContactStats{};
+  // Each group of bodies that may touch within the step takes its own sub-step; contact sub-steps
+  // only for a group that may touch something.
+  SubstepGroups& groups = sim.substep_groups(dt);
+  const double global_limit = groups.group_of.empty() ? sim.global_contact_limit(dt) : HUGE_VAL;
+  const SolidStepCount count =
+      advance_bodies({time_n, dt, sim.fluid_density(), sim.scene().fluid.gravity, global_limit,
+                      sim.fixed_solid_substeps, &sim.spectral_workspace, &sim.implicit_systems},
+                     sim.swelling(), sim.contact_forces, groups, sim.coupling(), sim.contact_work(), sim.rigid(),
+                     sim.bodies());
+  sim.last_n_substeps = count.max_substeps;
+  sim.last_body_substeps = count.body_substeps;
+  sim.total_substeps += count.max_substeps;
+  sim.total_body_substeps += count.body_substeps;
+  sim.total_contact_work += groups.contact_work;
+}
+
+}  // namespace
+
+void advance_one_step(Simulation& sim, double dt) {
+  const double time_n = sim.fluid().time;
+  if (sim.has_bodies()) prepare_bodies(sim, time_n);            // 1. D(t^n), X^n, U_target
+  predict(sim, time_n, dt);                                     // 2. u~ with the IB force
+  project(sim, dt);                                             // 3. u^{n+1}, U_f^{n+1}, p^{n+1}
+  if (sim.has_bodies()) hold_no_slip(sim, time_n, dt);          // 4. slip at t^{n+1}; no_slip: corrections
+  sim.fluid_solver().end_step(sim.fluid(), dt);                 // 5. t^{n+1}, AB2 history
+  if (sim.has_bodies()) advance_body_stage(sim, time_n, dt);    // 6. bodies to t^{n+1}
 }
 
 }  // namespace ibms

@@ -1,0 +1,160 @@
+// GMRES on the marker constraint of the no_slip coupling (see no_slip_coupling.hpp).
+#include "sim/no_slip_coupling.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ibms {
+
+void NoSlipWorkspace::reserve(std::size_t n) {
+  basis.assign((restart + 1) * n, 0.0);
+  images.assign(restart * n, 0.0);
+  hessenberg.assign((restart + 1) * restart, 0.0);
+  cosine.assign(restart, 0.0);
+  sine.assign(restart, 0.0);
+  rotated.assign(restart + 1, 0.0);
+  coefficients.assign(restart, 0.0);
+  rhs.reserve(n);
+  solution.reserve(n);
+  residual.reserve(n);
+}
+
+namespace {
+
+std::size_t unknowns(const std::vector<BodyCoupling>& coupling) {
+  std::size_t n = 0;
+  for (const BodyCoupling& c : coupling) n += 2 * c.marker.size();
+  return n;
+}
+
+// Marker vector (scaled by each body's reference speed) <-> pass_increment [length/time].
+void scatter(const double* x, std::vector<BodyCoupling>& coupling) {
+  std::size_t k = 0;
+  for (BodyCoupling& c : coupling)
+    for (auto& u : c.pass_increment)
+      for (int d = 0; d < 2; ++d) u[d] = c.slip_reference_speed * x[k++];
+}
+
+// Largest |r_l| over the markers, r_l the 2-vector of marker l.
+double max_marker_norm(const double* r, std::size_t n) {
+  double largest = 0.0;
+  for (std::size_t k = 0; k + 1 < n; k += 2) largest = std::max(largest, std::hypot(r[k], r[k + 1]));
+  return largest;
+}
+
+double dot(const double* a, const double* b, std::size_t n) {
+  double s = 0.0;
+  for (std::size_t k = 0; k < n; ++k) s += a[k] * b[k];
+  return s;
+}
+
+}  // namespace
+
+NoSlipResult hold_no_slip(const Grid& grid, KernelKind kernel, const WallVelocities& walls, double dt,
+                          double tolerance, int max_products, FluidSolver& solver, FluidState& state,
+                          std::vector<BodyCoupling>& coupling, CellField& increment_x, CellField& increment_y,
+                          FaceField& face_increment_x, FaceField& face_increment_y, NoSlipWorkspace& work) {
+  NoSlipResult result;
+  const std::size_t n = unknowns(coupling);
+  const int m_max = NoSlipWorkspace::restart;
+  const WallVelocities at_rest{};  // the increments have homogeneous wall data
+  // dt S dF onto the cells and the faces, dt dF in pass_increment.
+  const auto spread_increment = [&]() {
+    increment_x.fill(0.0);
+    increment_y.fill(0.0);
+    face_increment_x.fill(0.0);
+    face_increment_y.fill(0.0);
+    for (BodyCoupling& c : coupling) {
+      spread(grid, kernel, c.marker, c.pass_increment, c.marker_volume, increment_x, increment_y);
+      spread_to_faces(grid, kernel, c.marker, c.pass_increment, c.marker_volume, face_increment_x, face_increment_y);
+    }
+  };
+  // y = J P_0 S (U_ref x) / U_ref.
+  const auto apply = [&](const double* x, double* y) {
+    scatter(x, coupling);
+    spread_increment();
+    solver.homogeneous_projection(dt, increment_x, increment_y, &face_increment_x, &face_increment_y);
+    std::size_t k = 0;
+    for (BodyCoupling& c : coupling) {
+      interpolate(grid, kernel, at_rest, increment_x, increment_y, c.marker, c.interpolated_velocity);
+      for (const auto& u : c.interpolated_velocity)
+        for (int d = 0; d < 2; ++d) y[k++] = u[d] / c.slip_reference_speed;
+    }
+    ++result.products;
+  };
+
+  for (;;) {
+    // The slip of the present u^{n+1}: r = (U_target - J u) / U_ref (measure_slip leaves U_target - J u
+    // in pass_increment).
+    const double slip = measure_slip(grid, kernel, walls, state.velocity_x, state.velocity_y, coupling);
+    if (slip <= tolerance || result.products >= max_products) break;
+    work.rhs.resize(n);
+    work.solution.assign(n, 0.0);
+    work.residual.resize(n);
+    {
+      std::size_t k = 0;
+      for (const BodyCoupling& c : coupling)
+        for (const auto& r : c.pass_increment)
+          for (int d = 0; d < 2; ++d) work.rhs[k++] = r[d] / c.slip_reference_speed;
+    }
+    // One GMRES cycle from x = 0, stopped when the true residual's largest marker slip is half the
+    // tolerance (the margin absorbs the round-off of applying the correction on the grid).
+    const double beta = std::sqrt(dot(work.rhs.data(), work.rhs.data(), n));
+    double* V = work.basis.data();
+    double* W = work.images.data();
+    double* H = work.hessenberg.data();
+    const auto h = [&](int i, int j) -> double& { return H[i + (m_max + 1) * j]; };
+    for (std::size_t k = 0; k < n; ++k) V[k] = work.rhs[k] / beta;
+    std::fill(work.rotated.begin(), work.rotated.end(), 0.0);
+    work.rotated[0] = beta;
+    int m = 0;
+    while (m < m_max && result.products < max_products) {
+      const int j = m;
+      double* w = V + (j + 1) * n;
+      apply(V + j * n, W + j * n);
+      std::copy(W + j * n, W + (j + 1) * n, w);
+      for (int i = 0; i <= j; ++i) {  // modified Gram-Schmidt
+        h(i, j) = dot(w, V + i * n, n);
+        for (std::size_t k = 0; k < n; ++k) w[k] -= h(i, j) * V[i * n + k];
+      }
+      h(j + 1, j) = std::sqrt(dot(w, w, n));
+      if (h(j + 1, j) > 0.0)
+        for (std::size_t k = 0; k < n; ++k) w[k] /= h(j + 1, j);
+      for (int i = 0; i < j; ++i) {  // the previous rotations on the new column
+        const double a = h(i, j), b = h(i + 1, j);
+        h(i, j) = work.cosine[i] * a + work.sine[i] * b;
+        h(i + 1, j) = -work.sine[i] * a + work.cosine[i] * b;
+      }
+      const double a = h(j, j), b = h(j + 1, j), r = std::hypot(a, b);
+      work.cosine[j] = r > 0.0 ? a / r : 1.0;
+      work.sine[j] = r > 0.0 ? b / r : 0.0;
+      h(j, j) = r;
+      h(j + 1, j) = 0.0;
+      work.rotated[j + 1] = -work.sine[j] * work.rotated[j];
+      work.rotated[j] *= work.cosine[j];
+      m = j + 1;
+      // Coefficients y of x = V y (back substitution), and the true residual b - A V y.
+      for (int i = m - 1; i >= 0; --i) {
+        double s = work.rotated[i];
+        for (int l = i + 1; l < m; ++l) s -= h(i, l) * work.coefficients[l];
+        work.coefficients[i] = h(i, i) != 0.0 ? s / h(i, i) : 0.0;
+      }
+      std::copy(work.rhs.begin(), work.rhs.end(), work.residual.begin());
+      for (int i = 0; i < m; ++i)
+        for (std::size_t k = 0; k < n; ++k) work.residual[k] -= work.coefficients[i] * W[i * n + k];
+      if (max_marker_norm(work.residual.data(), n) <= 0.5 * tolerance || !(h(j + 1, j) > 0.0)) break;
+    }
+    for (int i = 0; i < m; ++i)
+      for (std::size_t k = 0; k < n; ++k) work.solution[k] += work.coefficients[i] * V[i * n + k];
+    // The correction: forcing_sum += U_ref x / dt; u^{n+1}, U_f^{n+1}, p^{n+1} += the projection of S (U_ref x).
+    scatter(work.solution.data(), coupling);
+    for (BodyCoupling& c : coupling)
+      for (std::size_t l = 0; l < c.marker.size(); ++l)
+        for (int d = 0; d < 2; ++d) c.forcing_sum[l][d] += c.pass_increment[l][d] / dt;
+    spread_increment();
+    result.max_change += solver.project_increment(state, dt, increment_x, increment_y, &face_increment_x, &face_increment_y);
+  }
+  return result;
+}
+
+}  // namespace ibms

@@ -1,0 +1,49 @@
+// The no_slip coupling (docs/method.md §3.7): the immersed-boundary forces as the Lagrange
+// multipliers of the no-slip constraint at the end of the step. After the projection, the marker
+// force corrections dF solve
+//     J P_0 S (dt dF) = U_target - J u^{n+1},
+// J interpolation, S spreading (onto the cells, and onto the faces for the face velocities: the
+// balanced momentum interpolation of FaceForcing), P_0 the homogeneous projection, so that the velocity
+// u^{n+1} + P_0 S (dt dF) holds J u = U_target at every marker; the pressure takes the gradient
+// part of the force. The system is small (two unknowns per marker) and solved by GMRES with
+// restarts (Saad & Schultz 1986), one Poisson solve per product; the unknowns of each body are
+// scaled by its reference speed, and the iteration stops when the largest slip of any marker is
+// below the tolerance (a maximum norm, checked on the true residual of the marker system).
+#pragma once
+#include <cstddef>
+#include <vector>
+
+#include "core/fields.hpp"
+#include "core/grid.hpp"
+#include "fluid/fluid_solver.hpp"
+#include "ibm/delta_kernel.hpp"
+#include "ibm/ib_operators.hpp"
+#include "sim/body_coupling.hpp"
+
+namespace ibms {
+
+// Storage of the marker-space GMRES, reserved once for the largest marker count.
+struct NoSlipWorkspace {
+  static constexpr int restart = 20;  // Krylov vectors per cycle
+  std::vector<double> basis;          // V: (restart + 1) vectors of n
+  std::vector<double> images;         // A V: restart vectors of n
+  std::vector<double> hessenberg;     // (restart + 1) x restart, column-major
+  std::vector<double> cosine, sine, rotated, coefficients;
+  std::vector<double> rhs, solution, residual;
+  void reserve(std::size_t max_unknowns);
+};
+
+struct NoSlipResult {
+  int products = 0;      // J P_0 S products (one Poisson solve each)
+  double max_change = 0; // sum over corrections of max |P_0 g|, a bound on the change of u^{n+1} [length/time]
+};
+
+// Corrects forcing_sum and the level n+1 fields of `state` until the slip of every body is at most
+// tolerance (in units of its slip_reference_speed) or max_products products were spent; leaves
+// slip_max and slip_rms of the final state. walls: the wall speeds at t^{n+1}.
+NoSlipResult hold_no_slip(const Grid& grid, KernelKind kernel, const WallVelocities& walls, double dt,
+                          double tolerance, int max_products, FluidSolver& solver, FluidState& state,
+                          std::vector<BodyCoupling>& coupling, CellField& increment_x, CellField& increment_y,
+                          FaceField& face_increment_x, FaceField& face_increment_y, NoSlipWorkspace& work);
+
+}  // namespace ibms
