@@ -58,6 +58,10 @@ struct BodyCoupling {
   // in it: gravity acts on the bodies only (§2.6), as the buoyancy-corrected weight.
   Vec2 hydrodynamic_force{0.0, 0.0};
   double hydrodynamic_torque = 0.0;
+  // The no-slip error left at the end of the step: max and RMS over the markers of
+  // |J u^{n+1} - U_target| / U_ref [-] (filled by the coupling; 0 where it does not measure it).
+  double slip_max = 0.0;
+  double slip_rms = 0.0;
 
   // max_markers: capacity reserved once for the marker arrays, so that sub-markers added as the
   // body swells (up to 1.5x the nominal swollen edge) do not reallocate them within the step loop.
