@@ -38,7 +38,13 @@ Vec2 body_volume_momentum(const Simulation& sim, std::size_t b) {
   return {area * velocity[0], area * velocity[1]};
 }
 
-ControlVolumeMonitor::ControlVolumeMonitor(const Simulation& sim) : bodies_(sim.bodies().size()) {}
+ControlVolumeMonitor::ControlVolumeMonitor(const Simulation& sim)
+    : bodies_(sim.grid().nx >= 5 && sim.grid().ny >= 5 ? sim.bodies().size() : 0) {}
+
+const BodyControlVolume& ControlVolumeMonitor::body(std::size_t b) const {
+  static const BodyControlVolume none;
+  return b < bodies_.size() ? bodies_[b] : none;
+}
 
 void ControlVolumeMonitor::begin_step(const Simulation& sim) {
   const Grid& g = sim.grid();
@@ -50,7 +56,7 @@ void ControlVolumeMonitor::begin_step(const Simulation& sim) {
     ForceVector lower{}, upper{};
     bounding_box(body, lower, upper);
     const CellRectangle rectangle = control_volume_around(g, lower, upper, body.diameter);
-    cv.clearance = control_volume_clearance(g, rectangle, lower, upper);
+    cv.start_clearance = control_volume_clearance(g, rectangle, lower, upper);
     if (cv.after_step == f.step && rectangle == cv.rectangle) {
       cv.before = cv.after;  // the same fields on the same rectangle: the same bits
     } else {
@@ -70,6 +76,7 @@ void ControlVolumeMonitor::end_step(const Simulation& sim, double dt) {
     cv.after = control_volume_terms(sim.grid(), cv.rectangle, flow_fields(f), nu);
     cv.after_step = f.step;
     cv.force = control_volume_force(cv.before, cv.after, dt, rho);
+    cv.clearance = cv.start_clearance;
     const Vec2 body_momentum = body_volume_momentum(sim, b);
     for (int d = 0; d < 2; ++d) cv.force[d] += rho * (body_momentum[d] - cv.body_momentum_before[d]) / dt;
   }

@@ -9,7 +9,9 @@
 // Nothing is carried from one step to the next that the fluid state does not hold: the terms at
 // t^{n+1} are reused at the start of the next step only while the rectangle stays the same and the
 // fluid has not moved on, otherwise recomputed from the fields, so that a run restarted from a
-// checkpoint computes the same bits. Storage is sized once; the steps allocate nothing.
+// checkpoint computes the same bits. Storage is sized once; the steps allocate nothing. On a grid
+// with fewer than 5 cells in a direction there is no rectangle: every body reports force 0 and
+// clearance 0.
 #pragma once
 #include <vector>
 
@@ -19,8 +21,9 @@
 namespace ibms {
 
 struct BodyControlVolume {
-  CellRectangle rectangle;        // the rectangle of the latest step
-  double clearance = 0.0;         // control_volume_clearance at t^n [length]
+  CellRectangle rectangle;        // the rectangle of the step under way (begin_step)
+  double start_clearance = 0.0;   // control_volume_clearance of that rectangle at t^n [length]
+  double clearance = 0.0;         // the same for the step of `force` [length]
   ControlVolumeTerms before, after;
   Vec2 body_momentum_before{0.0, 0.0};  // (A V)^n [length^3/time]
   long after_step = -1;           // fluid step at which `after` was taken (-1: none)
@@ -32,8 +35,7 @@ class ControlVolumeMonitor {
   explicit ControlVolumeMonitor(const Simulation& sim);
   void begin_step(const Simulation& sim);
   void end_step(const Simulation& sim, double dt);
-  const BodyControlVolume& body(std::size_t b) const { return bodies_[b]; }
-  std::size_t size() const { return bodies_.size(); }
+  const BodyControlVolume& body(std::size_t b) const;
 
  private:
   std::vector<BodyControlVolume> bodies_;
