@@ -15,6 +15,7 @@
 #include "io/csv_table.hpp"
 #include "io/checkpoint.hpp"
 #include "io/output_file.hpp"
+#include "sim/control_volume_monitor.hpp"
 #include "sim/diagnostics.hpp"
 #include "sim/simulation_checkpoint.hpp"
 #include "solid/body_geometry.hpp"
@@ -30,7 +31,7 @@
 namespace ibms {
 namespace {
 
-std::vector<SeriesValue> body_series(const Simulation& sim);
+std::vector<SeriesValue> body_series(const Simulation& sim, const ControlVolumeMonitor& control_volumes);
 std::vector<SeriesValue> probe_series(const Simulation& sim);
 
 // Body series kept in memory for <stem>_bodies.csv (one column per series, time first).
@@ -53,15 +54,16 @@ void write_body_table(const std::string& h5_path, const Simulation& sim, const B
   const std::filesystem::path base = std::filesystem::path(h5_path).replace_extension("");
   write_csv(base.string() + "_bodies.csv",
             {"ibms body series: per body centroid of the rim polygon, centre-of-mass velocity, (rigid and",
-             "prescribed: angle, angular velocity), hydrodynamic force and torque about the centre (drag and lift",
-             "coefficients when the body has a reference_speed), diameter D(t), rim-polygon area, spring energy,",
+             "prescribed: angle, angular velocity), hydrodynamic force and torque about the centre, the same force by a",
+             "control-volume momentum balance (drag and lift coefficients of both when the body has a reference_speed),",
+             "the slip left at the markers, diameter D(t), rim-polygon area, spring energy,",
              "sub-steps of the step; output.probes: pressure and velocity at each probe point; source scene: " +
                  sim.scene().source_file},
             table.headers, table.columns);
 }
 
-void write_series(OutputFile& out, const Simulation& sim, double dt, double cfl, double steady_residual,
-                  BodyTable& bodies) {
+void write_series(OutputFile& out, const Simulation& sim, const ControlVolumeMonitor& control_volumes, double dt,
+                  double cfl, double steady_residual, BodyTable& bodies) {
   const FluidState& f = sim.fluid();
   const ProjectionStats& ps = sim.last_projection;
   std::vector<SeriesValue> row({
@@ -85,7 +87,7 @@ void write_series(OutputFile& out, const Simulation& sim, double dt, double cfl,
     row.push_back({"inflow_flux", "length^2/time", in});
     row.push_back({"net_boundary_flux", "length^2/time", net_inflow(g, f.velocity_face_x, f.velocity_face_y)});
   }
-  std::vector<SeriesValue> body_row = body_series(sim);
+  std::vector<SeriesValue> body_row = body_series(sim, control_volumes);
   for (const SeriesValue& v : probe_series(sim)) body_row.push_back(v);
   if (!body_row.empty()) bodies.append(f.time, body_row);
   for (const SeriesValue& v : body_row) row.push_back(v);
@@ -121,9 +123,10 @@ std::vector<SeriesValue> probe_series(const Simulation& sim) {
   return row;
 }
 
-// Per-body series: centroid of the rim polygon, centre-of-mass velocity, diameter (the swelling
-// law's D), rim-polygon area, elastic energy and the sub-steps of the latest step.
-std::vector<SeriesValue> body_series(const Simulation& sim) {
+// Per-body series: centroid of the rim polygon, centre-of-mass velocity, the forces of the step
+// (immersed-boundary reaction and control-volume balance), the slip left at the markers, diameter
+// (the swelling law's D), rim-polygon area, elastic energy and the sub-steps of the latest step.
+std::vector<SeriesValue> body_series(const Simulation& sim, const ControlVolumeMonitor& control_volumes) {
   std::vector<SeriesValue> row;
   if (!sim.has_bodies()) return row;
   // Coupling diagnostics of the step: largest fluid velocity component and the Poisson removed
@@ -136,14 +139,7 @@ std::vector<SeriesValue> body_series(const Simulation& sim) {
     const MassSpringBody& body = sim.bodies()[b];
     const std::string name = body_name(b);
     const auto c = centroid(body);
-    std::array<double, 2> velocity{0.0, 0.0};  // centre-of-mass velocity (rigid motion: V)
-    if (body.kind == BodyKind::mass_spring) {
-      for (int p = 0; p < body.n_points(); ++p)
-        for (int d = 0; d < 2; ++d) velocity[d] += body.mass[p] * body.velocity[p][d];
-      for (double& v : velocity) v /= body.total_mass();
-    } else {
-      velocity = sim.rigid()[b].state.velocity;
-    }
+    const Vec2 velocity = body_velocity(sim, b);  // centre-of-mass velocity (rigid motion: V)
     row.push_back({name + "/centroid_x", "length", c[0]});
     row.push_back({name + "/centroid_y", "length", c[1]});
     row.push_back({name + "/velocity_x", "length/time", velocity[0]});
@@ -157,6 +153,11 @@ std::vector<SeriesValue> body_series(const Simulation& sim) {
     row.push_back({name + "/force_x", "force per unit depth", coupling.hydrodynamic_force[0]});
     row.push_back({name + "/force_y", "force per unit depth", coupling.hydrodynamic_force[1]});
     row.push_back({name + "/torque", "force length per unit depth", coupling.hydrodynamic_torque});
+    // The same force from the fluid alone: the control-volume balance of the step (sim/control_volume_monitor.hpp).
+    const BodyControlVolume& cv = control_volumes.body(b);
+    row.push_back({name + "/cv_force_x", "force per unit depth", cv.force[0]});
+    row.push_back({name + "/cv_force_y", "force per unit depth", cv.force[1]});
+    row.push_back({name + "/cv_clearance", "length", cv.clearance});
     const BodySpec& spec = sim.scene().bodies[b];
     if (spec.reference_speed > 0.0) {
       // C = F / (rho_f U_ref^2 L_ref / 2); drag along +x, lift along +y.
@@ -164,7 +165,13 @@ std::vector<SeriesValue> body_series(const Simulation& sim) {
       const double scale = 0.5 * sim.fluid_density() * spec.reference_speed * spec.reference_speed * length;
       row.push_back({name + "/drag_coefficient", "-", coupling.hydrodynamic_force[0] / scale});
       row.push_back({name + "/lift_coefficient", "-", coupling.hydrodynamic_force[1] / scale});
+      row.push_back({name + "/cv_drag_coefficient", "-", cv.force[0] / scale});
+      row.push_back({name + "/cv_lift_coefficient", "-", cv.force[1] / scale});
     }
+    // The no-slip error left at the end of the step, max and RMS over the markers of
+    // |J u^{n+1} - U_target| / U_ref (BodyCoupling::slip_max, slip_rms).
+    row.push_back({name + "/slip_max", "-", coupling.slip_max});
+    row.push_back({name + "/slip_rms", "-", coupling.slip_rms});
     row.push_back({name + "/diameter", "length", body.diameter});
     row.push_back({name + "/area", "length^2 per unit depth", polygon_area(body)});
     row.push_back({name + "/deformation", "-", deformation_parameter(body)});
@@ -309,6 +316,8 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& options) {
   const bool progress = scene.output.progress && !options.quiet;
   FluidState& f = sim.fluid();
   BodyTable body_table;
+  ControlVolumeMonitor control_volumes(sim);  // after the restore: it starts from the restored fields
+  if (sim.has_bodies()) control_volumes.begin_step(sim);
   VelocityScan scan = scan_velocity(sim.grid(), f);
   summary.stop_reason = "end_time";
   const double time_tolerance = 1e-12 * std::max(1.0, std::abs(run.end_time));
@@ -337,6 +346,10 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& options) {
         auto t = sim.timers().time(Stage::diagnostics);
         scan = scan_velocity(sim.grid(), f);
         check_for_blow_up(sim, dt, scan);
+        if (sim.has_bodies()) {  // the control-volume force of the step, and the start of the next one
+          control_volumes.end_step(sim, dt);
+          control_volumes.begin_step(sim);
+        }
       }
       const ProjectionStats& ps = sim.last_projection;
       const double steady_residual = ps.max_velocity > 0 ? ps.max_velocity_change / (dt * ps.max_velocity) : 0.0;
@@ -345,7 +358,7 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& options) {
       last_residual = steady_residual;
       if (f.step % scene.output.series_every == 0) {
         auto t = sim.timers().time(Stage::output);
-        write_series(out, sim, dt, last_cfl, steady_residual, body_table);
+        write_series(out, sim, control_volumes, dt, last_cfl, steady_residual, body_table);
         series_step = f.step;
       }
       if (scene.output.checkpoint_every > 0 && f.step % scene.output.checkpoint_every == 0) {
@@ -375,7 +388,7 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& options) {
   }
   {
     auto t = sim.timers().time(Stage::output);
-    if (last_dt > 0.0 && series_step != f.step) write_series(out, sim, last_dt, last_cfl, last_residual, body_table);
+    if (last_dt > 0.0 && series_step != f.step) write_series(out, sim, control_volumes, last_dt, last_cfl, last_residual, body_table);
     // The checkpoint first: write_snapshot refills the velocity ghost layers.
     write_simulation_checkpoint(out, sim, next_snapshot);
     write_snapshot(out, sim);

@@ -11,8 +11,10 @@
 // <gates>: comma-separated targets checked (pass/FAIL, exit 1 on a FAIL); every other figure is
 // reported as information. drag_finest: c_D at the finest grid within 1 % (2D-1);
 // drag_richardson: the Richardson c_D within 0.5 % (2D-1, three grids); strouhal: St at the finest
-// grid within 1 %; drag_max: max c_D at the finest grid within 2 % (2D-2). The CMake files say which
-// gate runs at which label and why.
+// grid within 1 %; drag_max: max c_D at the finest grid within 2 % (2D-2); cv_drag: on every grid,
+// the control-volume c_D (body_000/cv_drag_coefficient, metrics/control_volume_force.hpp) within 1 %
+// of the immersed-boundary c_D, final values (steady) or time means over t >= t_from (periodic).
+// The CMake files say which gate runs at which label and why.
 // steady (2D-1): the last row's c_D, c_L and Delta p (probes: ibms::dfg_pressure_difference).
 // periodic (2D-2): over t >= t_from, the figures of ibms::periodic_forces (solver/sim/force_metrics.hpp,
 //   shared with `ibms compare`); the reference of 2D-2 is the midpoint of the published bounds.
@@ -33,6 +35,7 @@
 
 #include "metrics/body_series.hpp"
 #include "metrics/case_criteria.hpp"
+#include "metrics/control_volume_force.hpp"
 #include "metrics/csv_reader.hpp"
 #include "metrics/grid_convergence.hpp"
 #include "core/errors.hpp"
@@ -61,7 +64,7 @@ const std::vector<double>& column(const SeriesTable& t, const std::string& name,
   return series_column(t, name, file);
 }
 
-struct Grid { double resolution; std::string base; };
+struct GridRun { double resolution; std::string base; };  // one grid's run
 
 bool report(const std::string& name, const std::string& label, double measured, const Reference& ref,
             double tolerance, bool is_check) {
@@ -90,7 +93,8 @@ int main(int argc, char** argv) {
       std::stringstream list(argv[4]);
       std::string g;
       while (std::getline(list, g, ',')) {
-        if (!g.empty() && g != "drag_finest" && g != "drag_richardson" && g != "strouhal" && g != "drag_max" && g != "none")
+        if (!g.empty() && g != "drag_finest" && g != "drag_richardson" && g != "strouhal" && g != "drag_max" &&
+            g != "cv_drag" && g != "none")
           throw std::runtime_error("unknown gate '" + g + "'");
         gates.insert(g);
       }
@@ -100,14 +104,14 @@ int main(int argc, char** argv) {
     double t_from = 0.0;
     if (mode == "periodic") t_from = std::atof(argv[first_grid++]);
     else if (mode != "steady") throw std::runtime_error("mode must be steady or periodic");
-    std::vector<Grid> grids;
+    std::vector<GridRun> grids;
     for (int a = first_grid; a < argc; ++a) {
       const std::string arg = argv[a];
       const auto colon = arg.find(':');
       if (colon == std::string::npos) throw std::runtime_error("expected <cells_per_diameter>:<base>, got " + arg);
       grids.push_back({std::atof(arg.substr(0, colon).c_str()), arg.substr(colon + 1)});
     }
-    std::sort(grids.begin(), grids.end(), [](const Grid& a, const Grid& b) { return a.resolution < b.resolution; });
+    std::sort(grids.begin(), grids.end(), [](const GridRun& a, const GridRun& b) { return a.resolution < b.resolution; });
     if (gated("drag_richardson") && grids.size() < 3) throw std::runtime_error("the drag_richardson gate needs three grids");
     const double d = 0.1, u_mean = mode == "steady" ? 0.2 : 1.0;
     // Per grid: the figures, in the order of `keys`.
@@ -116,9 +120,25 @@ int main(int argc, char** argv) {
         : std::vector<std::string>{"drag_coefficient_max", "lift_coefficient_max", "strouhal_number",
                                    "pressure_difference_half_period"};
     std::vector<std::vector<double>> figures;
-    for (const Grid& g : grids) {
+    std::vector<DragAgreement> cv_drag;  // per grid: the control-volume c_D beside the IB c_D
+    std::vector<double> cv_drag_max_difference;  // periodic: largest |cv - ib| / mean ib of a step in the window
+    for (const GridRun& g : grids) {
       const std::string file = g.base + "_bodies.csv";
       const SeriesTable t = read_series_csv(file);
+      {
+        const auto& ib = column(t, "body_000/drag_coefficient", file);
+        const auto& cv = column(t, "body_000/cv_drag_coefficient", file);
+        if (mode == "steady") {
+          cv_drag.push_back(final_drag_agreement(ib, cv));
+        } else {
+          const auto& time = column(t, "time", file);
+          cv_drag.push_back(mean_drag_agreement(time, ib, cv, t_from));
+          double worst = 0.0;
+          for (std::size_t r = 0; r < time.size(); ++r)
+            if (time[r] >= t_from) worst = std::max(worst, std::abs(cv[r] - ib[r]) / std::abs(cv_drag.back().immersed_boundary));
+          cv_drag_max_difference.push_back(worst);
+        }
+      }
       if (mode == "steady") {
         const double cd = column(t, "body_000/drag_coefficient", file).back();
         const double cl = column(t, "body_000/lift_coefficient", file).back();
@@ -153,6 +173,31 @@ int main(int argc, char** argv) {
         if (finest && mode == "periodic" && keys[q] == "strouhal_number" && gated("strouhal")) { check = true; tolerance = criteria::dfg_strouhal_tolerance; }
         if (finest && mode == "periodic" && keys[q] == "drag_coefficient_max" && gated("drag_max")) { check = true; tolerance = criteria::dfg_drag_max_tolerance; }
         ok = report(name, label, figures[g][q], ref.at(keys[q]), tolerance, check) && ok;
+      }
+    }
+    for (std::size_t g = 0; g < grids.size(); ++g) {
+      const DragAgreement& a = cv_drag[g];
+      const double difference = std::abs(a.relative_difference);
+      const bool check = gated("cv_drag");
+      const bool pass = difference <= criteria::dfg_cv_drag_agreement_tolerance;
+      char window[48];
+      std::snprintf(window, sizeof window, "mean c_D over t >= %g", t_from);
+      const std::string what = mode == "steady" ? "final c_D" : window;
+      const std::string label = "control-volume " + what + " vs immersed boundary at D/h = " +
+                                std::to_string(static_cast<int>(std::lround(grids[g].resolution)));
+      std::printf("  %-72s %.7g vs %.7g (%+.2e)%s\n", label.c_str(), a.control_volume, a.immersed_boundary,
+                  a.relative_difference, check ? (pass ? "  -> pass" : "  -> FAIL") : "");
+      if (check) {
+        record(name, label + ", relative difference", criteria::dfg_cv_drag_agreement_tolerance, difference, pass);
+        ok = ok && pass;
+      } else {
+        record_info(name, label + ", relative difference", a.relative_difference);
+      }
+      if (!cv_drag_max_difference.empty()) {
+        std::printf("  %-72s %.2e\n", "  largest |cv - ib| of a step (every step) over the mean c_D", cv_drag_max_difference[g]);
+        record_info(name, "largest |control-volume - immersed-boundary c_D| of a step over the mean c_D at D/h = " +
+                              std::to_string(static_cast<int>(std::lround(grids[g].resolution))),
+                    cv_drag_max_difference[g]);
       }
     }
     if (grids.size() >= 3) {

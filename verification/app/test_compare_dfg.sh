@@ -4,7 +4,9 @@
 # fails, exit 1), and `ibms compare dfg_cylinder_2d2` recovers the Strouhal number and max c_D of a
 # synthetic force history (c_L = sin(2 pi f t), St = f D / U = 0.3 exactly; max c_D = 3.23 + 0.01)
 # with the same figures the case check uses, passes it against the published values, fails it when
-# the frequency is 2 % off; malformed files exit 2 naming the file and line.
+# the frequency is 2 % off; malformed files exit 2 naming the file and line. A file with a
+# control-volume drag column gets its relative difference from the drag as an info line (last row
+# for 2D-1, time means over the window for 2D-2).
 # usage: test_compare_dfg.sh IBMS VALIDATION_DIR
 set -u
 ibms=$1; validation=$2
@@ -21,6 +23,9 @@ printf 'drag_coefficient,lift_coefficient\n5.80,0.0106\n' > off.csv
 expect_exit "2D-1 c_D 5.80 fails against the published value" 1 "John & Matthies.*FAIL" run dfg_cylinder_2d1 off.csv
 expect_exit "2D-1 ibms's own reference accepted against itself" 1 "ibms reference\) - 1\|.* 0 .*pass" \
   run dfg_cylinder_2d1 "$validation/dfg_cylinder_2d1/reference/ibms_dfg_2d1.csv"
+printf 'c_d,c_l,cv_drag_coefficient\n5.62,0.0106,5.6762\n' > cv.csv
+expect_exit "2D-1 control-volume drag reported" 0 "control-volume c_D vs c_D, last row .*\(\+1.00e-02\)   info" \
+  run dfg_cylinder_2d1 cv.csv
 printf 'c_d\nabc\n' > bad.csv
 expect_exit "2D-1 non-number exits 2" 2 "bad.csv:2:" run dfg_cylinder_2d1 bad.csv
 printf 'c_l\n0.01\n' > nodrag.csv
@@ -32,10 +37,11 @@ history() {  # out, frequency
 import sys, math
 out, f = sys.argv[1], float(sys.argv[2])
 with open(out, "w") as h:
-    h.write("time,drag_coefficient,lift_coefficient\n")
+    h.write("time,drag_coefficient,lift_coefficient,cv_drag_coefficient\n")
     for k in range(8001):
         t = 4.0 + 1e-3 * k
-        h.write("%.6f,%.9f,%.9f\n" % (t, 3.23 + 0.01 * math.cos(4 * math.pi * f * t), math.sin(2 * math.pi * f * t + 0.3)))
+        drag = 3.23 + 0.01 * math.cos(4 * math.pi * f * t)
+        h.write("%.6f,%.9f,%.9f,%.9f\n" % (t, drag, math.sin(2 * math.pi * f * t + 0.3), 0.99 * drag))
 PY
 }
 history st.csv 3.0
@@ -43,6 +49,8 @@ expect_exit "2D-2 St = 0.3 and max c_D = 3.24 pass against the published values"
   "St / 0.3 \(Schaefer & Turek 1996\) - 1\|.*pass" run dfg_cylinder_2d2 st.csv
 grep -qE "max c_D / 3.23 \(Schaefer & Turek 1996\) - 1\|.*pass" out.txt ||
   { echo "FAIL 2D-2 max c_D 3.24 should pass the 2 % gate"; failures=$((failures + 1)); }
+grep -qE "control-volume c_D vs c_D, means over the last 4 time units .*\(-1.00e-02\)   info" out.txt ||
+  { echo "FAIL 2D-2 control-volume drag (0.99 c_D) should be reported as -1.00e-02"; failures=$((failures + 1)); }
 history st_off.csv 3.06
 expect_exit "2D-2 St 2 % high fails" 1 "St / 0.3 \(Schaefer & Turek 1996\) - 1\| .* 0.02.*FAIL" run dfg_cylinder_2d2 st_off.csv
 printf 'time,drag_coefficient,lift_coefficient\n0,3,0\n1,3,1\n' > short.csv

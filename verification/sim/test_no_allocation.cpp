@@ -1,7 +1,8 @@
 // No allocation inside the step (DESIGN.md §9, issue 12 item 1): after a warm-up, during which work
 // arrays reach their size (contacts have begun, triangle overlaps settled), further fluid steps with
-// bodies, swelling, DEM contacts, rigid and prescribed bodies call operator new zero times. The
-// global operator new of this test program counts the calls while `counting` is set.
+// bodies, swelling, DEM contacts, rigid and prescribed bodies call operator new zero times, and so
+// does the run loop's control-volume force of every body around each step. The global operator new
+// of this test program counts the calls while `counting` is set.
 #define BOOST_TEST_MODULE no_allocation
 #include <boost/test/unit_test.hpp>
 
@@ -12,6 +13,7 @@
 
 #include "fluid/threads.hpp"
 #include "scene/scene_reader.hpp"
+#include "sim/control_volume_monitor.hpp"
 #include "sim/simulation.hpp"
 
 namespace {
@@ -31,16 +33,27 @@ namespace {
 
 // One thread: the OpenMP runtime's worker threads make their own thread-local scratch when they
 // first take a body group, which with dynamic scheduling may happen after any warm-up.
+// With control_volumes, every step is wrapped as in the run loop (sim/run.cpp): the control-volume
+// balance after the step and at the start of the next one.
 long allocations_in_steps(const char* scene_path, int warm_up, int counted,
-                          const std::vector<std::string>& overrides = {}) {
+                          const std::vector<std::string>& overrides = {}, bool control_volumes = false) {
   ibms::set_thread_count(1);
   const ibms::Scene scene = ibms::read_scene_file(scene_path, overrides);
   ibms::Simulation sim(scene);
+  ibms::ControlVolumeMonitor monitor(sim);
   const double dt = scene.run.time_step;
-  for (int k = 0; k < warm_up; ++k) ibms::advance_one_step(sim, dt);
+  const auto step = [&]() {
+    ibms::advance_one_step(sim, dt);
+    if (control_volumes) {
+      monitor.end_step(sim, dt);
+      monitor.begin_step(sim);
+    }
+  };
+  if (control_volumes) monitor.begin_step(sim);
+  for (int k = 0; k < warm_up; ++k) step();
   n_allocations = 0;
   counting = true;
-  for (int k = 0; k < counted; ++k) ibms::advance_one_step(sim, dt);
+  for (int k = 0; k < counted; ++k) step();
   counting = false;
   BOOST_TEST_MESSAGE(scene_path << ": " << n_allocations << " allocations in steps " << warm_up << " to "
                                 << warm_up + counted << ", contact pairs last step "
@@ -66,4 +79,9 @@ BOOST_AUTO_TEST_CASE(implicit_springs_and_global_substeps_step_without_allocatin
 
 BOOST_AUTO_TEST_CASE(rigid_and_prescribed_bodies_with_contacts_step_without_allocating) {
   BOOST_TEST(allocations_in_steps(IBMS_SCENE_RIGID, /*warm_up=*/60, /*counted=*/140) == 0);
+}
+
+BOOST_AUTO_TEST_CASE(control_volume_forces_around_the_steps_allocate_nothing) {
+  BOOST_TEST(allocations_in_steps(IBMS_SCENE_MASS_SPRING, 100, 150, {}, /*control_volumes=*/true) == 0);
+  BOOST_TEST(allocations_in_steps(IBMS_SCENE_RIGID, 60, 140, {}, /*control_volumes=*/true) == 0);
 }
