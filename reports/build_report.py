@@ -36,7 +36,7 @@ PREAMBLE = r"""\documentclass[10pt,a4paper]{article}
 \usepackage[T1]{fontenc}
 \usepackage[utf8]{inputenc}
 \usepackage{lmodern}
-\usepackage[margin=1.8cm]{geometry}
+\usepackage[margin=1.6cm,top=1.4cm,bottom=1.6cm]{geometry}
 \usepackage{graphicx,booktabs,longtable,array,float}
 \usepackage[table]{xcolor}
 \usepackage[hidelinks]{hyperref}
@@ -193,7 +193,7 @@ def _headline(c):
 
 
 def summary_page(out, order, metas, judged, params):
-    out.append(r"\section*{Summary: one row per validation case}")
+    out.append(r"\vspace{-1ex}\section*{Summary: one row per validation case}")
     out.append(r"\addcontentsline{toc}{section}{Summary}")
     counts = {}
     rows = []
@@ -206,12 +206,12 @@ def summary_page(out, order, metas, judged, params):
         rows.append([r"\hyperref[case:%s]{\texttt{%s}}" % (case, esc(case).replace(r"\_", r"\_\allowbreak{}")),
                      m["validates"], against, grids_text(params.get(case, []), c["rows"]),
                      cases_mod.verdict_cell(c["verdict"]), _headline(c)])
-    out.append(r"{\scriptsize\setlength{\tabcolsep}{3pt}\renewcommand{\arraystretch}{1.1}" + "\n" +
+    out.append(r"{\fontsize{7}{8}\selectfont\setlength{\tabcolsep}{3pt}" + "\n" +
                longtable(r">{\raggedright\arraybackslash}p{2.1cm}>{\raggedright\arraybackslash}p{3.6cm}"
                          r">{\raggedright\arraybackslash}p{3.5cm}>{\raggedright\arraybackslash}p{1.5cm}c"
                          r">{\raggedright\arraybackslash}p{4.6cm}",
                          ["case", "validates", "against (P published, E exact, O ibms's own)", "grid(s)",
-                          "verdict", "headline: worst figure against its target"], rows) + "}")
+                          "verdict", "headline: worst figure against its target"], rows, size=None) + "}")
     out.append(r"{\small Cases: %s. \emph{pass}: every judged figure meets its target; \emph{miss}: a figure "
                r"misses a target the case sets (tolerance in \texttt{case\_criteria.hpp} or the README) or its "
                r"published bounds, without a gated check failing; \emph{FAIL}: a gated check failed. Figures "
@@ -226,7 +226,7 @@ def summary_page(out, order, metas, judged, params):
                                                           esc(r["row_case"]), esc(r["metric"]),
                                                           cases_mod.measured_text(r), r["target_text"])
                  for case, r in misses]
-        out.append(r"{\scriptsize\begin{itemize}\setlength{\itemsep}{0pt}\setlength{\parskip}{0pt}" + "\n" +
+        out.append(r"{\fontsize{7}{8}\selectfont\begin{itemize}\setlength{\itemsep}{0pt}\setlength{\parskip}{0pt}" + "\n" +
                    "\n".join(r"\item " + i for i in items) + r"\end{itemize}}")
     else:
         out.append(r"\paragraph{No miss and no failure} among the judged figures.")
@@ -254,9 +254,9 @@ def checks_by_case_section(out, order, metas, judged):
             rows.append([cases_mod.mark_cell(mark), metric, r["target_text"], cases_mod.measured_text(r),
                          cases_mod.verdict_cell(r["verdict"]), r["gate"]])
     if rows:
-        out.append(r"{\footnotesize" + longtable(r"cp{8.2cm}p{3.0cm}rcl",
+        out.append(longtable(r"cp{8.0cm}p{3.0cm}rcl",
                                                    ["src", "claim / metric", "target", "measured", "verdict", "gate"],
-                                                   [r if len(r) > 1 else [r[0]] for r in rows]) + "}")
+                                                   [r if len(r) > 1 else [r[0]] for r in rows], size="footnotesize"))
     else:
         out.append(r"\emph{No validation results: \texttt{validation/results.csv} not found (not run).}" + "\n")
 
@@ -274,8 +274,8 @@ def verification_section(out, conv, tests, fig_dir):
         out.append("Unit and convergence tests from ctest's logs: %d tests, %d failed. Each program passes "
                    "only if all its claims (Boost test cases) hold.\n" % (len(ver), n_fail))
         rows = [[r"\texttt{%s}" % esc(t["name"]), status_cell(t["status"]), num(t["seconds"])] for t in ver]
-        out.append(r"{\footnotesize" + longtable(r"p{10cm}cr", ["test", "verdict", "time [s]"], rows,
-                                                  caption="Unit and convergence tests (ctest).") + "}")
+        out.append(longtable(r"p{10cm}cr", ["test", "verdict", "time [s]"], rows,
+                                                  caption="Unit and convergence tests (ctest).", size="footnotesize"))
     else:
         out.append(r"\emph{Unit tests: no ctest log (\texttt{Testing/Temporary/LastTest*.log}) in the build "
                    r"directory: not run.}" + "\n")
@@ -310,10 +310,10 @@ def verification_section(out, conv, tests, fig_dir):
                      "--" if not math.isfinite(formal) else num(formal, 3),
                      "--" if not math.isfinite(fit) else num(fit, 3) + ("" if not math.isfinite(se) else r" $\pm$ " + num(se, 2)),
                      band, verdict])
-    out.append(r"{\footnotesize" + longtable(r"rp{6.0cm}cp{1.6cm}rrrcc",
+    out.append(longtable(r"rp{5.4cm}cp{1.5cm}rrrcc",
                                               ["", "table", "refines", "N", "finest error", "formal",
                                                "observed (3 finest)", "asserted", "verdict"], rows,
-                                              caption="Observed orders beside formal orders.") + "}")
+                                              caption="Observed orders beside formal orders.", size="footnotesize"))
     for (program, refined), items in studies.items():
         path = figs.convergence_study(program, refined, items, os.path.join(
             fig_dir, "convergence_%s_%s.pdf" % (re.sub(r"\W", "_", program), refined)))
@@ -394,12 +394,12 @@ def parameter_table(out, params):
     rows = [[r"\texttt{%s}" % esc(p["run"]), "%s$\\times$%s" % (p["nx"], p["ny"]), num(p["h"], 3), p["dt"],
              str(p["bodies"]), p["markers"], esc(p["kernel"]), p["passes"], esc(p["coupling"]),
              num(p["seconds"], 3)] for p in params]
-    out.append(r"{\footnotesize" + longtable(r"p{3.0cm}lrp{3.4cm}rp{1.2cm}llll",
+    out.append(longtable(r"p{2.8cm}lrp{3.2cm}rp{1.1cm}llll",
                                               ["run", "grid", "$h$", "time step", "bodies", "markers", "kernel",
                                                "passes", "coupling", "run [s]"], rows,
                                               caption="Run parameters from each output's resolved scene "
                                                       "(\\texttt{ibm.coupling}: \\emph{uhlmann} where the scene "
-                                                      "has no such key) and its \\texttt{/timing/run}.") + "}")
+                                                      "has no such key) and its \\texttt{/timing/run}.", size="footnotesize"))
 
 
 def case_section(out, case, meta, build, source, judged, params, fig_dir):
@@ -489,13 +489,13 @@ def known_limitations(out, order, judged):
         return
     out.append("Every figure of this build that misses its target (\\emph{miss}) or fails its check "
                "(\\emph{FAIL}), with its cause as the case README states it.\n")
-    out.append(r"{\footnotesize" + longtable(r"p{2.6cm}p{4.6cm}p{2.2cm}p{7.0cm}",
+    out.append(longtable(r"p{2.5cm}p{4.6cm}p{2.4cm}p{6.9cm}",
                                               ["case", "figure", "measured (target)", "cause"],
                                               [[r"\texttt{%s}" % esc(r["row_case"]).replace(r"\_", r"\_\allowbreak{}"),
                                                 esc(r["metric"]),
                                                 "%s (%s) %s" % (cases_mod.measured_text(r), r["target_text"],
                                                                 cases_mod.verdict_cell(r["verdict"])),
-                                                cases_mod.cause_of(case, r["metric"])] for case, r in rows]) + "}")
+                                                cases_mod.cause_of(case, r["metric"])] for case, r in rows], size="footnotesize"))
 
 
 def environment_section(out, env, tests):
@@ -507,9 +507,9 @@ def environment_section(out, env, tests):
     total = sum(t["seconds"] for t in tests if not math.isnan(t["seconds"]))
     rows = [[r"\texttt{%s}" % esc(t["name"]), status_cell(t["status"]), num(t["seconds"]),
              esc(t["log"])] for t in tests]
-    out.append(r"{\footnotesize" + longtable(r"p{8.5cm}crp{3.5cm}", ["ctest test", "result", "time [s]", "log"], rows,
+    out.append(longtable(r"p{8.5cm}crp{3.5cm}", ["ctest test", "result", "time [s]", "log"], rows,
                                               caption="Per-test wall times from ctest's logs (sum %.1f s; tests ran "
-                                                      "in parallel, so wall time is lower)." % total) + "}")
+                                                      "in parallel, so wall time is lower)." % total, size="footnotesize"))
 
 
 def write_sources(tex, fig_files, directory):

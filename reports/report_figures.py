@@ -403,10 +403,14 @@ def generic_csv(path, out):
 
 
 def study_of(title, table):
-    """(program, 'h' or 'dt') of a convergence table: tables of one test program that refine the
+    """(study, 'h' or 'dt') of a convergence table: tables of one test program and one set-up (the
+    title without its last two comma-separated parts, the variable and the norm) that refine the
     same variable form one study (one figure)."""
-    program = title.split(": ", 1)[0] if ": " in title else "convergence"
-    return program, table.get("refined") or "h"
+    program, rest = title.split(": ", 1) if ": " in title else ("convergence", title)
+    parts = re.sub(r" \(table \d+\)$", "", rest).split(",")
+    # "<set-up>, <variable>, <norm>": the set-up names the study within its program
+    study = program + (": " + ",".join(parts[:-2]).strip() if len(parts) > 2 else "")
+    return study, table.get("refined") or "h"
 
 
 def convergence_study(name, refined, items, out):

@@ -65,8 +65,10 @@ def status_cell(status):
     return esc(s) if s else "--"
 
 
-def longtable(spec, header, rows, caption=None):
-    lines = [r"\begin{small}", r"\begin{longtable}{%s}" % spec]
+def longtable(spec, header, rows, caption=None, size="small"):
+    """A longtable in the given font size environment (None: the surrounding size)."""
+    lines = ([r"\begin{%s}" % size, r"\setlength{\tabcolsep}{4pt}"] if size else []) + \
+        [r"\begin{longtable}{%s}" % spec]
     if caption:
         lines.append(r"\caption{%s}\\" % caption)
     head = " & ".join(r"\textbf{%s}" % h for h in header) + r" \\ \midrule"
@@ -74,7 +76,7 @@ def longtable(spec, header, rows, caption=None):
               r"\bottomrule", r"\endlastfoot"]
     for r in rows:
         lines.append(" & ".join(r) + r" \\")
-    lines += [r"\end{longtable}", r"\end{small}", ""]
+    lines += [r"\end{longtable}"] + ([r"\end{%s}" % size] if size else []) + [""]
     return "\n".join(lines)
 
 

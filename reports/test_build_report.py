@@ -74,10 +74,13 @@ for comp, coord in (("u", "y"), ("v", "x")):
         for k in range(9):
             f.write("%g,%g\n" % (k / 8, (k / 8) * (1 - k / 8)))
 with open(os.path.join(work, "verification_results", "convergence.csv"), "w") as f:
-    f.write("title,N,h,error,order,fit_order,fit_standard_error\n")
+    f.write("title,N,h,error,order,fit_order,fit_standard_error,formal_order,asserted_min,asserted_max,refined\n")
     for n in (8, 16, 32, 64):
         f.write('"synthetic: u, L2 norm",%d,%g,%g,%s,%s\n' % (n, 1 / n, (1 / n) ** 2, "" if n == 8 else "2",
-                                                         "1.987,0.0123" if n == 64 else ","))
+                                                         "1.987,0.0123,2,1.9,inf,h" if n == 64 else ",,,,,"))
+    for n in (8, 16, 32):  # a time study whose fitted order is below its asserted band
+        f.write('"synthetic: p in time (N = steps)",%d,%g,%g,%s,%s\n' % (
+            n, 1 / n, 1 / n, "" if n == 8 else "1", "0.777,0.01,2,1.8,inf,dt" if n == 32 else ",,,,,"))
 with open(os.path.join(work, "Testing", "Temporary", "LastTest.log"), "w") as f:
     f.write("1/1 Testing: test_x\n1/1 Test: test_x\nCommand: x\nTest time =   0.50 sec\n"
             "----------------------------------------------------------\nTest Passed.\n")
@@ -212,6 +215,12 @@ if stage == "tex":
         fail("the synthetic DFG 2D-2 miss (+12.3 %%) is not a miss in its page-1 row: %r" % row[:300])
     if not re.search(r"\{miss\}\} \\texttt\{dfg\\_cylinder\\_2d2\}: drag\\_coefficient\\_max at D/h = 20", summary):
         fail("the synthetic miss is not in the page-1 list of misses")
+    orders = tex[tex.index("Observed orders beside formal orders"):]
+    if not re.search(r"p in time \(N = steps\) & \$\\Delta t\$ & 8, 16, 32 & [^&]+ & 2 & 0\.777[^&]*& "
+                     r"\[1\.8, \$\\infty\$\] & \\textcolor\{red\}", orders):
+        fail("the time study's order 0.777 is not shown against formal order 2 and band [1.8, inf] as FAIL")
+    if "time step $\\Delta t$" not in tex:
+        fail("the time study's figure caption does not name the time step")
     if "Known limitations" not in tex or "boundary layer" not in tex:
         fail("the Known limitations section does not list the miss with its cause")
     # A case without a source mark (no README with a Compared-with line) stops the build.
