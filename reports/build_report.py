@@ -30,7 +30,7 @@ import report_bench as bench  # noqa: E402
 import report_solid as solid  # noqa: E402
 import report_sweeps as sweeps  # noqa: E402
 import report_cases as cases_mod  # noqa: E402
-from report_latex import esc, num, status_cell, figure, longtable  # noqa: E402
+from report_latex import esc, num, status_cell, figure, longtable, tt  # noqa: E402
 
 PREAMBLE = r"""\documentclass[10pt,a4paper]{article}
 \usepackage[T1]{fontenc}
@@ -129,9 +129,9 @@ def run_parameters(build, case):
         elif run:
             dt = "CFL %s" % num(run.get("cfl"), 3)
             if math.isfinite(run.get("max_time_step", math.inf)):
-                dt += r", $\le$ %s" % num(run["max_time_step"], 3)
+                dt += r"; $\Delta t \le$ %s" % num(run["max_time_step"], 3)
             if run.get("max_viscous_number", 0) > 0:
-                dt += r", $\nu\Delta t/h^2 \le$ %s" % num(run["max_viscous_number"], 3)
+                dt += r"; $\nu\Delta t/h^2 \le$ %s" % num(run["max_viscous_number"], 3)
         else:
             dt = "--"
         bodies = scene.get("bodies", [])
@@ -147,7 +147,7 @@ def run_parameters(build, case):
             passes=str(ibm.get("forcing_passes", "--")) if bodies else "--",
             coupling=ibm.get("coupling", "uhlmann") if bodies else "--",
             seconds=seconds, startup=startup, scene=scene))
-    return rows
+    return sorted(rows, key=lambda r: ((r["nx"] or 0) * (r["ny"] or 0), r["run"]))
 
 
 def grids_text(params, rows):
@@ -178,7 +178,8 @@ def title_block(out, env, build):
                                                           esc(get.get("git commit (from outputs)", "--")))],
             ["source tree at report time", "\\texttt{%s}" % esc(get.get("source tree at report time", "--"))],
             ["date", esc(get.get("report date", "--"))],
-            ["machine", esc(get.get("newest output started", "--")) + "; " + esc(get.get("CPU", "--"))],
+            ["machine", esc(get.get("CPU", "--"))],
+            ["newest output", esc(get.get("newest output started", "--"))],
             ["threads / build type", "%s / %s" % (threads, esc(get.get("build type", "--")))]]
     out.append(r"\begin{center}{\LARGE ibms verification and validation report}\\[0.5ex]")
     out.append(r"{\footnotesize\begin{tabular}{@{}ll@{}}" +
@@ -203,7 +204,7 @@ def summary_page(out, order, metas, judged, params):
         m = metas[case]
         against = "%s %s%s" % (cases_mod.mark_cell(m["mark"]), esc(m["detail"]) + ": " if m["detail"] else "",
                                m["compared"])
-        rows.append([r"\hyperref[case:%s]{\texttt{%s}}" % (case, esc(case).replace(r"\_", r"\_\allowbreak{}")),
+        rows.append([r"\hyperref[case:%s]{%s}" % (case, tt(case)),
                      m["validates"], against, grids_text(params.get(case, []), c["rows"]),
                      cases_mod.verdict_cell(c["verdict"]), _headline(c)])
     out.append(r"{\fontsize{7}{8}\selectfont\setlength{\tabcolsep}{3pt}" + "\n" +
@@ -251,7 +252,8 @@ def checks_by_case_section(out, order, metas, judged):
             mark = "own" if r["own"] else m["mark"]
             metric = esc(r["metric"]) + ("" if r["row_case"] == case else
                                          r" {\scriptsize(\texttt{%s})}" % esc(r["row_case"][len(case):].lstrip("_")))
-            rows.append([cases_mod.mark_cell(mark), metric, r["target_text"], cases_mod.measured_text(r),
+            target = r["target_text"] + (r"\newline{\tiny %s}" % r["target_source"] if r["target_source"] else "")
+            rows.append([cases_mod.mark_cell(mark), metric, target, cases_mod.measured_text(r),
                          cases_mod.verdict_cell(r["verdict"]), r["gate"]])
     if rows:
         out.append(longtable(r"cp{8.0cm}p{3.0cm}rcl",
@@ -359,7 +361,10 @@ def literature_for(case, source, params):
         for q, key in (("centre_y", "centroid_y"), ("velocity_y", "velocity_y")):
             if q in curves:
                 lit["points"][key] = [(curves[q][0], curves[q][1], "Wan & Turek (2006), digitised (third-hand)")]
-        notes.append("Dashed: the maximum settling speed of Glowinski et al. %s; grey band: the maximum read off "
+        speeds = [ref[q]["value"] for q in ("max_settling_speed", "max_settling_speed_glowinski") if q in ref]
+        if speeds:
+            lit["zoom"] = {"velocity_y": (-max(speeds) * 1.025, -min(speeds) * 0.975, "near the maximum speed")}
+        notes.append("Right: the velocity near its maximum. Dashed: the maximum settling speed of Glowinski et al. %s; grey band: the maximum read off "
                      "the curves of Wan \\& Turek %s with its reading uncertainty; squares: Wan \\& Turek's "
                      "symbols digitised third-hand (\\texttt{reference/wan\\_turek\\_settling\\_digitized.csv}, "
                      "provenance %s)." % (cases_mod.cite("glowinski2001"), cases_mod.cite("wan2006"),
@@ -371,7 +376,7 @@ def literature_for(case, source, params):
         pts = []
         for q, lab in (("centre_y_trailing", "trailing"), ("centre_y_leading", "leading")):
             if q in curves:
-                pts.append((curves[q][0], curves[q][1], "Wan & Turek (2006), digitised (third-hand)"))
+                pts.append((curves[q][0], curves[q][1], "Wan & Turek (2006), %s, digitised (third-hand)" % lab))
         if pts:
             lit["points"]["centroid_y"] = pts
         vpts = [(ref[t]["value"], -ref[v]["value"]) for v, t in (
@@ -391,10 +396,10 @@ def parameter_table(out, params):
     if not params:
         out.append(r"{\small\emph{Run parameters: no HDF5 output of this case in the build directory (not run).}}" + "\n")
         return
-    rows = [[r"\texttt{%s}" % esc(p["run"]), "%s$\\times$%s" % (p["nx"], p["ny"]), num(p["h"], 3), p["dt"],
+    rows = [[tt(p["run"]), "%s$\\times$%s" % (p["nx"], p["ny"]), num(p["h"], 3), p["dt"],
              str(p["bodies"]), p["markers"], esc(p["kernel"]), p["passes"], esc(p["coupling"]),
              num(p["seconds"], 3)] for p in params]
-    out.append(longtable(r"p{2.8cm}lrp{3.2cm}rp{1.1cm}llll",
+    out.append(longtable(r">{\raggedright\arraybackslash}p{2.8cm}lr>{\raggedright\arraybackslash}p{3.2cm}rp{1.1cm}llll",
                                               ["run", "grid", "$h$", "time step", "bodies", "markers", "kernel",
                                                "passes", "coupling", "run [s]"], rows,
                                               caption="Run parameters from each output's resolved scene "
@@ -491,7 +496,7 @@ def known_limitations(out, order, judged):
                "(\\emph{FAIL}), with its cause as the case README states it.\n")
     out.append(longtable(r"p{2.5cm}p{4.6cm}p{2.4cm}p{6.9cm}",
                                               ["case", "figure", "measured (target)", "cause"],
-                                              [[r"\texttt{%s}" % esc(r["row_case"]).replace(r"\_", r"\_\allowbreak{}"),
+                                              [[tt(r["row_case"]),
                                                 esc(r["metric"]),
                                                 "%s (%s) %s" % (cases_mod.measured_text(r), r["target_text"],
                                                                 cases_mod.verdict_cell(r["verdict"])),

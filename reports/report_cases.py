@@ -193,8 +193,8 @@ class Target:
     """A target of one figure: |x| <= tol ('abs') or lo <= x <= hi ('band'), with where it comes
     from; `percent` formats relative figures."""
 
-    def __init__(self, kind, tol=None, lo=None, hi=None, source="", percent=False, unit=""):
-        self.kind, self.tol, self.lo, self.hi = kind, tol, lo, hi
+    def __init__(self, kind, tol=None, lo=None, hi=None, source="", percent=False, unit="", explicit=True):
+        self.kind, self.tol, self.lo, self.hi, self.explicit = kind, tol, lo, hi, explicit
         self.source, self.percent, self.unit = source, percent, unit
 
     def met(self, x):
@@ -232,11 +232,11 @@ def fmt_value(x, percent=False, signed=False):
 def _dfg_tolerance(case, quantity, crit):
     """The case's own tolerance of a DFG quantity (case_criteria.hpp), or None."""
     if case == "dfg_cylinder_2d1" and quantity == "drag_coefficient":
-        return crit.get("dfg_steady_drag_tolerance"), "c_D within this at the finest grid (case_criteria.hpp)"
+        return crit.get("dfg_steady_drag_tolerance"), "$c_D$ at the finest grid (case\\_criteria.hpp)"
     if case == "dfg_cylinder_2d2" and quantity == "drag_coefficient_max":
-        return crit.get("dfg_drag_max_tolerance"), "max c_D within this (case_criteria.hpp)"
+        return crit.get("dfg_drag_max_tolerance"), "max $c_D$ (case\\_criteria.hpp)"
     if case == "dfg_cylinder_2d2" and quantity == "strouhal_number":
-        return crit.get("dfg_strouhal_tolerance"), "St within this (case_criteria.hpp)"
+        return crit.get("dfg_strouhal_tolerance"), "St (case\\_criteria.hpp)"
     return None, None
 
 
@@ -250,15 +250,14 @@ def _dfg_relative(ctx, m, finest_only=True):
     ref = ctx["refs"].get(case, {}).get(quantity)
     if ref and isinstance(ref.get("lower"), float):
         v = ref["value"]
-        return Target("band", lo=ref["lower"] / v - 1, hi=ref["upper"] / v - 1, percent=True,
+        return Target("band", lo=ref["lower"] / v - 1, hi=ref["upper"] / v - 1, percent=True, explicit=False,
                       source="inside the published bounds %s" % cite("schafer1996")), None
     return None, None
 
 
 def _order_band(ctx, m):
     return Target("band", lo=0.5, hi=2.0,
-                  source="formal order 1 of a direct-forcing boundary; band [0.5, 2] as asserted by the "
-                         "settling-disk gate (outside it the grids are not in the asymptotic range)"), None
+                  source="formal order 1 of direct forcing; the settling-disk gate's band"), None
 
 
 def _dkt_quantity(ref_key, tol_kind):
@@ -270,15 +269,15 @@ def _dkt_quantity(ref_key, tol_kind):
         if tol_kind == "speed":
             tol = ctx["crit"].get("dkt_speed_tolerance")
             return Target("band", lo=v * (1 - tol), hi=v * (1 + tol), unit=" cm/s",
-                          source="within %.3g %% of %s cm/s, the trailing disk's tolerance (case_criteria.hpp) %s"
+                          source="%.3g\\,\\%% of %s cm/s, the trailing disk's tolerance (case\\_criteria.hpp) %s"
                                  % (100 * tol, num(v), cite("wan2006"))), None
         if isinstance(tol_kind, float):  # a README target in seconds
             return Target("band", lo=v - tol_kind, hi=v + tol_kind, unit=" s",
-                          source="within %s s of %s s: the case README's first-design target %s"
+                          source="%s s of %s s: the README's first-design target %s"
                                  % (num(tol_kind), num(v), cite("wan2006"))), None
         u = ref.get("reading_uncertainty", 0.0)
-        return Target("band", lo=v - u, hi=v + u, unit=" s",
-                      source="%s $\\pm$ %s s, the reference file's reading uncertainty %s"
+        return Target("band", lo=v - u, hi=v + u, unit=" s", explicit=False,
+                      source="%s $\\pm$ %s s: reading uncertainty %s"
                              % (num(v), num(u), cite("wan2006"))), None
     return rule
 
@@ -293,7 +292,7 @@ def _settling_speed(ctx, m):
         return None, None
     v = ref["value"]
     return Target("band", lo=v * (1 - tol), hi=v * (1 + tol), unit=" cm/s",
-                  source="within %.3g %% of %s cm/s %s (case_criteria.hpp)" % (100 * tol, num(v), cite("wan2006"))), None
+                  source="%.3g\\,\\%% of %s cm/s %s (case\\_criteria.hpp)" % (100 * tol, num(v), cite("wan2006"))), None
 
 
 # (case folder, regex on the metric, rule(ctx, match) -> (Target or None, note)). Only `info`
@@ -325,7 +324,7 @@ CAUSES = [
      "sharper interface (finer grid near the body or a sharp-interface method), not a tuning of this one "
      "(README)."),
     ("dfg_cylinder_2d1", r"^drag_coefficient at",
-     "First-order convergence of the diffuse interface: c_D reaches 1\\,\\% of the reference only on finer grids "
+     "First-order convergence of the diffuse interface: $c_D$ reaches 1\\,\\% of the reference only on finer grids "
      "(the `slow' label's finest); keeping $\\nu\\Delta t/h^2$ fixed makes the cost grow like $(D/h)^4$ (README)."),
     ("dfg_cylinder_2d", r"lift_coefficient",
      "$c_L$ is a small asymmetry of the flow that the smeared interface does not resolve at these grids "
@@ -389,17 +388,21 @@ def _float(text):
 def _judge_row(r, row_case, folder, crit, refs, finest):
     status = r["status"].strip()
     measured = _float(r["measured"])
-    out = dict(r, row_case=row_case, target=None, note="", severity=0.0,
+    out = dict(r, row_case=row_case, target=None, note="", severity=0.0, target_source="",
                own=bool(re.search(OWN_METRICS, r["metric"])),
-               percent=bool(re.search(r"relative|- 1\||/ \|v_|/ max\|", r["metric"])))
+               percent=bool(re.search(r"relative|- 1\||/ \|v_|/ max\||GCI", r["metric"])))
     tol = _float(r["tolerance"])
     if status == "pass" or status.lower().startswith("fail"):
         out["verdict"] = "pass" if status == "pass" else "fail"
         out["gate"] = "check"
         if math.isfinite(tol):
             out["target_text"] = "check: %s" % fmt_value(tol, out["percent"])
-            out["severity"] = abs(measured) / tol if tol > 0 and math.isfinite(measured) else (
-                0.0 if out["verdict"] == "pass" else math.inf)
+            # Whether the check's bound is an upper or a lower one is not in the line: a passing
+            # figure below its tolerance is read as an upper bound, above it as a lower one; both
+            # give a closeness to the bound in [0, 1].
+            m, t = abs(measured), abs(tol)
+            out["severity"] = (0.0 if not math.isfinite(m) or t == 0 else m / t if m <= t else t / m) \
+                if out["verdict"] == "pass" else math.inf
         else:
             out["target_text"] = "check"
             out["severity"] = 0.0 if out["verdict"] == "pass" else math.inf
@@ -419,6 +422,7 @@ def _judge_row(r, row_case, folder, crit, refs, finest):
             out["target"] = target
             out["percent"] = target.percent
             out["target_text"] = target.text()
+            out["target_source"] = target.source
             out["verdict"] = "pass" if target.met(measured) else "miss"
             out["severity"] = target.severity(measured)
             return out
@@ -436,7 +440,12 @@ def _case_verdict(c):
     c["verdict"] = ("fail" if "fail" in verdicts else "miss" if "miss" in verdicts else
                     "pass" if "pass" in verdicts else "info" if verdicts else "not run")
     judged = [r for r in rows if r["verdict"] != "info"]
-    c["headline"] = max(judged, key=lambda r: r["severity"]) if judged else None
+    # The headline: a failed check first, then a miss of a target the case sets (check tolerance,
+    # case_criteria.hpp, README), then one of published bounds, then the passing figure closest
+    # to its target.
+    rank = {"fail": 3, "miss": 2, "pass": 1}
+    c["headline"] = max(judged, key=lambda r: (rank[r["verdict"]], r["target"] is None or r["target"].explicit,
+                                               r["severity"])) if judged else None
 
 
 def cause_of(folder, metric):

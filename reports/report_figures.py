@@ -231,7 +231,7 @@ def snapshots(case_dir, case, out, max_panels=3, path=None, vlim=None, system=No
         lim = vlim or vorticity_limit([path]) or 1.0
         nrow = 1 if len(steps) <= 3 else 2  # four panels: 2 x 2, readable on a page
         ncol = -(-len(steps) // nrow)
-        panel_w = min(3.2, 6.4 / ncol)
+        panel_w = 6.0 if ncol == 1 and lx > 1.5 * ly else min(3.2, 6.4 / ncol)
         panel_h = min(panel_w * ly / lx, 8.0)
         fig, axes = plt.subplots(nrow, ncol, figsize=(panel_w * ncol + 1.0, (panel_h + 0.7) * nrow),
                                  squeeze=False)
@@ -298,17 +298,23 @@ def body_histories(case_dir, out, literature=None):
         present.append((key, label))
     if not present:
         return None, files
+    for key, (lo, hi, title) in lit.get("zoom", {}).items():
+        if any(k == key for k, _ in present):
+            present.append((key + "@zoom", dict(present)[key]))
     system = unit_system(tables[0][1][3])
     fig, axes = plt.subplots(1, len(present), figsize=(3.3 * len(present) + 0.4, 3.0), squeeze=False)
     colours = plt.rcParams["axes.prop_cycle"].by_key()["color"]
     startup = lit.get("startup")
-    for ax, (key, label) in zip(axes[0], present):
+    t_max = 0.0
+    for ax, (panel, label) in zip(axes[0], present):
+        key, zoom = panel.split("@")[0], lit.get("zoom", {}).get(panel.split("@")[0]) if "@" in panel else None
         lows, highs = [], []
         for r, (stem, (names, units, arr, comments)) in enumerate(tables):
             if not names or arr.shape[0] == 0 or names[0] != "time":
                 continue
             cols = [i for i, n in enumerate(names) if n.endswith("/" + key)]
             t = arr[:, 0]
+            t_max = max(t_max, float(np.nanmax(t)))
             keep = np.ones(len(t), bool)
             keep[-1] = len(t) < 2  # the last (shortened) step stays out of the range
             if startup is not None:
@@ -338,13 +344,18 @@ def body_histories(case_dir, out, literature=None):
             ax.axhline(value, color="k", ls="--", lw=0.8, label=lab)
             lows.append(value)
             highs.append(value)
-        for t_ref, v_ref, lab in lit.get("points", {}).get(key, []):
-            ax.plot(t_ref, v_ref, "ks", ms=3.5, mfc="none", label=lab)
+        for j, (t_ref, v_ref, lab) in enumerate(lit.get("points", {}).get(key, [])):
+            ax.plot(t_ref, v_ref, "k" + "s^o"[j % 3], ms=3.5, mfc="none", ls="none", label=lab)
+        if zoom:
+            lows, highs = [zoom[0]], [zoom[1]]
+            ax.set_title(zoom[2], fontsize=8)
         if lows and highs:
             lo, hi = min(lows), max(highs)
             pad = 0.06 * (hi - lo) if hi > lo else 0.05 * max(abs(hi), 1e-12)
             ax.set_ylim(lo - pad, hi + pad)
         ax.yaxis.get_major_formatter().set_useOffset(False)
+        if t_max > 0:  # reference points beyond the runs' end stay off the axis
+            ax.set_xlim(min(0.0, ax.get_xlim()[0]), t_max * 1.02)
         ax.grid(alpha=0.3)
     handles, labels = [], []
     for ax in axes[0]:
@@ -438,6 +449,7 @@ def convergence_study(name, refined, items, out):
             ax.loglog([x0, x1, x0, x0], [y0, y1, y1, y0], "k-", lw=0.8)
             ax.annotate("%g" % p, (x0, math.sqrt(y0 * y1)), xytext=(3, 0), textcoords="offset points",
                         fontsize=7, va="center")
+    ax.xaxis.set_minor_formatter(matplotlib.ticker.NullFormatter())
     ax.set_xlabel("time step $\\Delta t$" if refined == "dt" else "grid spacing $h$")
     ax.set_ylabel("error")
     ax.set_title(name.replace("_", " "), fontsize=9)

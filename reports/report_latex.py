@@ -32,6 +32,12 @@ def esc(text):
     return "".join(out)
 
 
+def tt(text):
+    """Typewriter text that may break after an underscore or slash (file and case names in narrow
+    table columns)."""
+    return r"\texttt{%s}" % esc(text).replace(r"\_", r"\_\allowbreak{}").replace("/", r"/\allowbreak{}")
+
+
 def num(value, digits=4):
     """Numbers as read (strings) or floats, printed compactly; empty -> '--'."""
     if value is None:
