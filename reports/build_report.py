@@ -256,7 +256,7 @@ def checks_by_case_section(out, order, metas, judged):
             rows.append([cases_mod.mark_cell(mark), metric, target, cases_mod.measured_text(r),
                          cases_mod.verdict_cell(r["verdict"]), r["gate"]])
     if rows:
-        out.append(longtable(r"cp{8.0cm}p{3.0cm}rcl",
+        out.append(longtable(r"c>{\raggedright\arraybackslash}p{8.0cm}>{\raggedright\arraybackslash}p{3.0cm}rcl",
                                                    ["src", "claim / metric", "target", "measured", "verdict", "gate"],
                                                    [r if len(r) > 1 else [r[0]] for r in rows], size="footnotesize"))
     else:

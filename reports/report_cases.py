@@ -256,7 +256,7 @@ def _dfg_relative(ctx, m, finest_only=True):
 
 
 def _order_band(ctx, m):
-    return Target("band", lo=0.5, hi=2.0,
+    return Target("band", lo=0.5, hi=2.0, explicit=False,
                   source="formal order 1 of direct forcing; the settling-disk gate's band"), None
 
 

@@ -309,6 +309,13 @@ def body_histories(case_dir, out, literature=None):
     for ax, (panel, label) in zip(axes[0], present):
         key, zoom = panel.split("@")[0], lit.get("zoom", {}).get(panel.split("@")[0]) if "@" in panel else None
         lows, highs = [], []
+        # A series that changes by round-off only (a disk at rest) is drawn as its change from the
+        # first value, not against an axis offset such as 1e-12 + 1.
+        values = np.concatenate([t[2][:, i] for _, t in tables for i, n in enumerate(t[0]) if n.endswith("/" + key)])
+        values = values[np.isfinite(values)]
+        shift = 0.0
+        if values.size and np.ptp(values) <= 1e-9 * np.max(np.abs(values)):
+            shift = float(values[0])
         for r, (stem, (names, units, arr, comments)) in enumerate(tables):
             if not names or arr.shape[0] == 0 or names[0] != "time":
                 continue
@@ -323,18 +330,19 @@ def body_histories(case_dir, out, literature=None):
             many = len(cols) > 3
             for j, i in enumerate(cols):
                 body = int(re.sub(r"\D", "", names[i].split("/")[0]) or 0)
+                y = arr[:, i] - shift
                 if many:
                     lab = "%s: %d bodies" % (stem, len(cols)) if j == 0 else None
-                    ax.plot(t, arr[:, i], lw=0.5, color=colour, alpha=0.7, label=lab)
+                    ax.plot(t, y, lw=0.5, color=colour, alpha=0.7, label=lab)
                 else:
                     lab = stem if len(cols) == 1 else "%s, %s" % (stem, _body_label(lit.get("body_names"), body))
-                    ax.plot(t, arr[:, i], lw=0.9, label=lab,
+                    ax.plot(t, y, lw=0.9, label=lab,
                             color=colour if len(cols) == 1 else None, ls=("-", "--", ":")[j % 3])
                 if keep.any():
-                    lows.append(np.nanmin(arr[keep, i]))
-                    highs.append(np.nanmax(arr[keep, i]))
+                    lows.append(np.nanmin(y[keep]))
+                    highs.append(np.nanmax(y[keep]))
             if cols:
-                ax.set_ylabel(_axis_label(label, units[cols[0]], system))
+                ax.set_ylabel(_axis_label(label + (" $-$ %.10g" % shift if shift else ""), units[cols[0]], system))
                 ax.set_xlabel(_axis_label("time", units[0], system))
         for lo, hi, lab in lit.get("bands", {}).get(key, []):
             ax.axhspan(lo, hi, color="k", alpha=0.15, lw=0, label=lab)
@@ -405,6 +413,7 @@ def generic_csv(path, out):
         lab = names[i] + (" [%s]" % units[i] if units[i] else "")
         ax.plot(arr[:, 0], arr[:, i], lw=1, label=lab)
     ax.set_xlabel(names[0] + (" [%s]" % units[0] if units[0] else ""))
+    ax.yaxis.get_major_formatter().set_useOffset(False)
     ax.grid(alpha=0.3)
     ax.legend(loc="best")
     fig.tight_layout()
