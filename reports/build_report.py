@@ -279,8 +279,8 @@ def verification_section(out, conv, tests, fig_dir):
         out.append(longtable(r"p{10cm}cr", ["test", "verdict", "time [s]"], rows,
                                                   caption="Unit and convergence tests (ctest).", size="footnotesize"))
     else:
-        out.append(r"\emph{Unit tests: no ctest log (\texttt{Testing/Temporary/LastTest*.log}) in the build "
-                   r"directory: not run.}" + "\n")
+        out.append(r"\emph{Unit and convergence tests: none in ctest's logs (\texttt{Testing/Temporary/LastTest*.log}) "
+                   r"of the build directory: not run, or their log was overwritten by a later ctest run.}" + "\n")
     if not conv:
         out.append(r"\emph{Not run: \texttt{verification\_results/convergence.csv} not found. Run "
                    r"\texttt{ctest -L convergence} in the build directory (ctest sets "
