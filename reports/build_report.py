@@ -87,6 +87,9 @@ def readme_summary(source, case):
             started = True
             lines.append(s)
     text = " ".join(lines).replace("**", "").replace("`", "")
+    # Pointers to the project's issue tracker mean nothing to a reader of the report.
+    text = re.sub(r"\s*\((?:see )?issue \d+(?:\s*(?:§|item)\s*\d+)?\)", "", text)
+    text = re.sub(r"[:;,]?\s*issue \d+(?:\s*(?:§|item)\s*\d+)?", "", text)
     return text[:900] or None
 
 
@@ -246,8 +249,8 @@ def checks_by_case_section(out, order, metas, judged):
         if not c:
             continue
         m = metas[case]
-        rows.append([r"\multicolumn{6}{p{16.5cm}}{\textbf{\texttt{%s}} (%s: %s)}" %
-                     (esc(case), esc(m["qualifier"]), m["compared"])])
+        rows.append([r"\multicolumn{6}{p{16.5cm}}{\textbf{\texttt{%s}}: %s (%s: %s)}" %
+                     (esc(case), cases_mod.verdict_cell(c["verdict"]), esc(m["qualifier"]), m["compared"])])
         for r in c["rows"]:
             mark = "own" if r["own"] else m["mark"]
             metric = esc(r["metric"]) + ("" if r["row_case"] == case else
