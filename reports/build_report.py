@@ -315,7 +315,7 @@ def verification_section(out, conv, tests, fig_dir):
                      "--" if not math.isfinite(formal) else num(formal, 3),
                      "--" if not math.isfinite(fit) else num(fit, 3) + ("" if not math.isfinite(se) else r" $\pm$ " + num(se, 2)),
                      band, verdict])
-    out.append(longtable(r"rp{5.4cm}cp{1.5cm}rrrcc",
+    out.append(longtable(r"r>{\raggedright\arraybackslash}p{5.4cm}c>{\raggedright\arraybackslash}p{1.5cm}rrrcc",
                                               ["", "table", "refines", "N", "finest error", "formal",
                                                "observed (3 finest)", "asserted", "verdict"], rows,
                                               caption="Observed orders beside formal orders.", size="footnotesize"))
