@@ -388,7 +388,8 @@ def literature_for(case, source, params):
         if vpts:
             lit["points"]["velocity_y"] = [([p[0] for p in vpts], [p[1] for p in vpts],
                                             "Wan & Turek (2006): max speeds, digitised")]
-        notes.append("Squares: Wan \\& Turek's symbols %s digitised third-hand %s (centre heights of both disks, "
+        notes.append("Squares (trailing disk) and triangles (leading disk): Wan \\& Turek's symbols %s digitised "
+                     "third-hand %s (centre heights, "
                      "\\texttt{reference/wan\\_turek\\_dkt\\_positions\\_digitized.csv}; the maximum speeds and their "
                      "times, \\texttt{reference/wan\\_turek\\_dkt\\_digitized.csv})." %
                      (cases_mod.cite("wan2006"), cases_mod.cite("rezaee2nnf")))
