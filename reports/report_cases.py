@@ -11,7 +11,6 @@ by the report when a target applies to it (TARGET_RULES below): the tolerance th
 bounds or reading uncertainty of the case's reference file. Measured outside -> `miss`. Lines
 with no target stay `info`. Nothing here hard-codes a measured figure."""
 import csv
-import glob
 import io
 import math
 import os

@@ -56,7 +56,7 @@ with open(os.path.join(dfg, "dfg_2d2_20_bodies.csv"), "w") as f:
         t = 0.03 * k
         f.write("%g,%g,%g\n" % (t, 40.0 / k + 3.5 + 0.1 * math.sin(6 * t), math.sin(3 * t)))
     f.write("12.0001,9.0,0.0\n")
-import h5py  # noqa: E402
+import h5py  # noqa: E402,F811 - imported above only to test its presence
 with h5py.File(os.path.join(dfg, "dfg_2d2_20.h5"), "w") as h5:
     h5.attrs["ibms_version"] = "0.0-synthetic"
     h5.attrs["git_commit"] = "0123456789ab"
