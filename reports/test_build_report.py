@@ -7,7 +7,10 @@ energy, restitution and contact-history tables).
 Stage `tex` (always runs; the README's test command installs its Python modules): the data, the
 figures and the LaTeX source (build_report.py --tex-dir) -- every figure the source includes exists
 and is a PDF, environments and braces balance, the computed figures are in the text and a stale
-rerun row is not. Stage `pdf` (skipped without LaTeX): the whole report compiles to a PDF whose
+rerun row is not; a DFG 2D-2 max c_D of +12.34 % filed as info by its check is a miss in its
+page-1 row, in the page-1 list of misses and in Known limitations; a time study's order below its
+asserted band is FAIL against its formal order; and a results.csv case without a README source
+mark stops the build with an error naming it. Stage `pdf` (skipped without LaTeX): the whole report compiles to a PDF whose
 text holds the same figures.
 usage: test_build_report.py tex|pdf WORK_DIR     exit 0 pass, 1 fail, 77 skipped (pdf stage, no LaTeX)"""
 import math
