@@ -399,8 +399,9 @@ def _judge_row(r, row_case, folder, crit, refs, finest):
             # Whether the check's bound is an upper or a lower one is not in the line: a passing
             # figure below its tolerance is read as an upper bound, above it as a lower one; both
             # give a closeness to the bound in [0, 1].
+            # A figure equal to its bound (a run reached its end time) says nothing about a margin.
             m, t = abs(measured), abs(tol)
-            out["severity"] = (0.0 if not math.isfinite(m) or t == 0 else m / t if m <= t else t / m) \
+            out["severity"] = (0.0 if not math.isfinite(m) or t == 0 or abs(m - t) <= 1e-6 * t else m / t if m < t else t / m) \
                 if out["verdict"] == "pass" else math.inf
         else:
             out["target_text"] = "check"
