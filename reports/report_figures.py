@@ -438,13 +438,18 @@ def convergence_study(name, refined, items, out):
     the order table, with a reference-slope triangle of the formal order at the finest point."""
     fig, ax = plt.subplots(figsize=(6.2, 3.4))
     formal_done = set()
+    # triangles below every table's finest point, so that they cross no data
+    finest_errors = [min(e for e in t["error"] if e > 0) for _, _, t in items if any(e > 0 for e in t["error"])]
+    y_floor = min(finest_errors) if finest_errors else 1.0
     for k, title, t in items:
         h, e = np.array(t["h"]), np.array(t["error"])
         ok = (h > 0) & (e > 0)
         if ok.sum() < 2:
             continue
         slope = t.get("fit_order", math.nan)
-        lab = "(%d) %s" % (k, _short(title.split(": ", 1)[-1], 52))
+        # the set-up is the figure's title: the legend names what differs (variable and norm)
+        rest = title[len(name):].lstrip(", ") if title.startswith(name + ",") else title.split(": ", 1)[-1]
+        lab = "(%d) %s" % (k, _short(rest, 52))
         if np.isfinite(slope):
             lab += ": %.2f" % slope
         line, = ax.loglog(h[ok], e[ok], "o-", ms=3.5, lw=1, label=lab)
@@ -453,8 +458,9 @@ def convergence_study(name, refined, items, out):
             formal_done.add(p)
             x1 = h[ok].min()
             x0 = x1 * 2.0
-            y1 = e[ok][np.argmin(h[ok])] * 0.5
-            y0 = y1 * 2.0 ** p
+            y0 = y_floor * 0.5  # the top of this triangle, below the data and the previous triangle
+            y1 = y0 / 2.0 ** p
+            y_floor = y1 / 1.3 / 0.5
             ax.loglog([x0, x1, x0, x0], [y0, y1, y1, y0], "k-", lw=0.8)
             ax.annotate("%g" % p, (x0, math.sqrt(y0 * y1)), xytext=(3, 0), textcoords="offset points",
                         fontsize=7, va="center")
