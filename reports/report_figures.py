@@ -286,7 +286,8 @@ def body_histories(case_dir, out, literature=None):
     tables = [(os.path.basename(p)[:-len("_bodies.csv")], data.read_table_csv(p)) for p in files]
     wanted = [("centroid_y", "centroid y"), ("velocity_y", "velocity y"), ("diameter", "diameter")]
     if any(any(n.endswith("/drag_coefficient") for n in t[1][0]) for t in tables):
-        wanted = [("drag_coefficient", "drag coefficient $c_D$"), ("lift_coefficient", "lift coefficient $c_L$")]
+        wanted = [("drag_coefficient", "drag coefficient $c_D$"), ("lift_coefficient", "lift coefficient $c_L$"),
+                  ("slip_max", "largest rim slip")]  # the slip where the solver writes it
     present = []
     for key, label in wanted:
         cols = [(stem, t, i) for stem, t in tables for i, n in enumerate(t[0]) if n.endswith("/" + key)]
