@@ -90,11 +90,13 @@ def read_reference_profile(path):
 
 
 def read_convergence(path):
-    """convergence.csv (title,N,h,error,order,fit_order,fit_standard_error) appended by the
-    convergence tests; the fit (least-squares order over the finest three levels and its standard
-    error, computed by the tests through metrics::observed_order) is on a table's finest row. A row
-    with an empty order starts a new table; the last table per title wins. Returns OrderedDict
-    title -> dict(N, h, error, order arrays, fit_order, fit_stderr: NaN where not written)."""
+    """convergence.csv (title,N,h,error,order,fit_order,fit_standard_error,formal_order,
+    asserted_min,asserted_max,refined) appended by the convergence tests; the fit (least-squares
+    order over the finest three levels and its standard error, computed by the tests through
+    metrics::observed_order) and the test's claim (formal order, asserted band, h or dt refined)
+    are on a table's finest row. A row with an empty order starts a new table; the last table per
+    title wins. Returns OrderedDict title -> dict(N, h, error, order arrays, fit_order, fit_stderr,
+    formal, asserted_min, asserted_max: NaN where not written, refined)."""
     tables = OrderedDict()
     if not os.path.isfile(path):
         return tables
@@ -110,7 +112,8 @@ def read_convergence(path):
                 continue
             if cells[4].strip() == "" or title not in current:
                 current[title] = dict(N=[], h=[], error=[], order=[], fit_order=math.nan,
-                                      fit_stderr=math.nan)
+                                      fit_stderr=math.nan, formal=math.nan, asserted_min=math.nan,
+                                      asserted_max=math.nan, refined="h")
                 tables.pop(title, None)
                 tables[title] = current[title]
             t = current[title]
@@ -121,6 +124,10 @@ def read_convergence(path):
             if len(cells) >= 7 and cells[5].strip():
                 t["fit_order"] = float(cells[5])
                 t["fit_stderr"] = float(cells[6]) if cells[6].strip() else math.nan
+            if len(cells) >= 11 and cells[10].strip():  # the test's claim, on the finest row
+                for key, cell in zip(("formal", "asserted_min", "asserted_max"), cells[7:10]):
+                    t[key] = float(cell) if cell.strip() else math.nan
+                t["refined"] = cells[10].strip()
     return tables
 
 
@@ -205,6 +212,8 @@ def environment(build, source, h5_paths):
     env.append(("git commit (from outputs)", attrs.get("git_commit", "no HDF5 output found")))
     if attrs.get("start_time"):
         env.append(("newest output started", attrs["start_time"] + " on " + attrs.get("host", "?")))
+    else:
+        env.append(("newest output started", "no HDF5 output; report made on " + platform.node()))
     env.append(("source tree at report time", _run(["git", "-C", source, "describe", "--always",
                                                     "--dirty", "--abbrev=12"])))
     cache = os.path.join(build, "CMakeCache.txt")
@@ -219,6 +228,7 @@ def environment(build, source, h5_paths):
     env.append(("compiler (c++ --version)", _run(["c++", "--version"])))
     if compiler:
         env.append(("compiler used by the build", compiler + " (" + (build_type or "?") + ")"))
+    env.append(("build type", build_type or "not found (no CMakeCache.txt)"))
     cpu = "unknown"
     try:
         with open("/proc/cpuinfo") as f:

@@ -18,6 +18,36 @@ plt.rcParams.update({"font.size": 9, "axes.titlesize": 9, "legend.fontsize": 7,
                      "pdf.fonttype": 42, "figure.dpi": 100, "savefig.bbox": "tight"})
 
 
+_CGS = {"length": "cm", "time": "s", "mass": "g"}
+
+
+def unit_system(csv_comments):
+    """The scene's unit system from a run CSV's '# ... source scene: PATH' comment: the scene's
+    leading comment names cgs units ("cgs units: cm, g, s") or the scene is dimensionless. Returns
+    a dict word -> unit, or {} for a dimensionless scene (and when the scene cannot be read)."""
+    path = None
+    for c in csv_comments:
+        if "source scene:" in c:
+            path = c.split("source scene:", 1)[1].strip()
+    if not path or not os.path.isfile(path):
+        return {}
+    with open(path, encoding="utf-8", errors="replace") as f:
+        head = "".join(line for _, line in zip(range(6), f) if line.startswith("#"))
+    return dict(_CGS) if re.search(r"cgs units", head) else {}
+
+
+def real_units(units, system):
+    """'length/time' -> 'cm/s' in a cgs scene; '' for a dimensionless scene or '-'."""
+    if not units or units == "-" or not system:
+        return ""
+    return re.sub(r"\b(length|time|mass)\b", lambda m: system[m.group(1)], units)
+
+
+def _axis_label(name, units, system):
+    u = real_units(units, system)
+    return "%s [%s]" % (name, u) if u else name
+
+
 def _grid_of(path, case):
     m = re.search(re.escape(case) + r"_(\d+)", os.path.basename(path))
     return int(m.group(1)) if m else None
@@ -32,10 +62,29 @@ def profile_runs(case_dir, case, component):
     return sorted(runs)
 
 
-def cavity_profiles(case_dir, case, ref_dir, out):
-    """Centre-line u(y) and v(x) of every grid, with reference points where the repo has them
-    (flagged reference points drawn hollow), and for a case without reference the point-mirrored
-    finest profile (the symmetry the two-sided cavity check measures)."""
+def _read_extrema(ref_dir):
+    """Botella & Peyret extrema (quantity -> (value, position)) from botella_peyret_extrema.csv."""
+    path = os.path.join(ref_dir, "botella_peyret_extrema.csv")
+    out = {}
+    if not os.path.isfile(path):
+        return out
+    with open(path, encoding="utf-8") as f:
+        rows = [line.strip().split(",") for line in f if line.strip() and not line.startswith("#")][1:]
+    for r in rows:
+        try:
+            out[r[0]] = (float(r[1]), float(r[2]))
+        except (ValueError, IndexError):
+            continue
+    return out
+
+
+def cavity_profiles(case_dir, case, ref_dir, out, labels=None):
+    """Centre-line u(y) and v(x) of every grid with the reference points (Ghia et al.: flagged
+    points hollow; Botella & Peyret's extrema as stars) and, below, each grid's difference from them
+    (the profile linearly interpolated at the reference coordinates; the checks use a cubic spline).
+    Without a reference: the point-mirrored finest profile and the difference from it (the symmetry
+    the two-sided cavity check measures). `labels`: citation text for the legends."""
+    labels = labels or {}
     runs_u, runs_v = profile_runs(case_dir, case, "u"), profile_runs(case_dir, case, "v")
     if not runs_u and not runs_v:
         return None
@@ -44,41 +93,62 @@ def cavity_profiles(case_dir, case, ref_dir, out):
         found = sorted(glob.glob(os.path.join(ref_dir, "ghia_%s_*.csv" % comp)))
         if found:
             refs[comp] = data.read_reference_profile(found[0])
-    fig, axes = plt.subplots(1, 2, figsize=(7.0, 3.2))
-    for ax, comp, runs in ((axes[0], "u", runs_u), (axes[1], "v", runs_v)):
+    extrema = _read_extrema(ref_dir)
+    ghia_label = labels.get("ghia", "Ghia et al. (1982)")
+    bp_label = labels.get("botella", "Botella & Peyret (1998) extrema")
+    fig, axes = plt.subplots(2, 2, figsize=(7.0, 5.6), gridspec_kw={"height_ratios": [3, 2]})
+    for col, (comp, runs) in enumerate((("u", runs_u), ("v", runs_v))):
+        ax, dax = axes[0][col], axes[1][col]
         for n, path in runs:
             names, units, arr, _ = data.read_table_csv(path)
             if arr.shape[0] == 0:
                 continue
             x, y = arr[:, 0], arr[:, 1]
             label = "%d$^2$" % n if n else os.path.basename(path)
-            if comp == "u":
-                ax.plot(y, x, lw=1, label=label)
+            line, = (ax.plot(y, x, lw=1, label=label) if comp == "u" else ax.plot(x, y, lw=1, label=label))
+            if comp in refs:
+                c, val, flag, _ = refs[comp]
+                diff = np.interp(c, x, y) - val
+                dax.plot(c[~flag], diff[~flag], "o-", ms=2.5, lw=0.7, color=line.get_color(), label=label)
             else:
-                ax.plot(x, y, lw=1, label=label)
+                mx, my = 1.0 - x[::-1], -y[::-1]
+                dax.plot(x, y - np.interp(x, mx, my), lw=0.8, color=line.get_color(), label=label)
+            for q, (value, pos) in extrema.items():
+                if q.startswith(comp + "_"):
+                    found = y.min() if q.endswith("min") else y.max()
+                    dax.plot(pos, found - value, "*", ms=7, color=line.get_color())
         if comp in refs:
             c, val, flag, _ = refs[comp]
             pts = (val, c) if comp == "u" else (c, val)
-            ax.plot(pts[0][~flag], pts[1][~flag], "ko", ms=3.5, mfc="k", label="Ghia et al. 1982")
+            ax.plot(pts[0][~flag], pts[1][~flag], "ko", ms=3.5, mfc="k", label=ghia_label)
             if flag.any():
-                ax.plot(pts[0][flag], pts[1][flag], "ko", ms=3.5, mfc="none", label="Ghia (flagged)")
+                ax.plot(pts[0][flag], pts[1][flag], "ko", ms=3.5, mfc="none", label=ghia_label + ", flagged")
         elif runs:
             names, units, arr, _ = data.read_table_csv(runs[-1][1])
             if arr.shape[0]:
                 x, y = arr[:, 0], arr[:, 1]
                 mx, my = 1.0 - x[::-1], -y[::-1]
-                if comp == "u":
-                    ax.plot(my, mx, "k:", lw=1, label="finest, point-mirrored")
-                else:
-                    ax.plot(mx, my, "k:", lw=1, label="finest, point-mirrored")
+                (ax.plot(my, mx, "k:", lw=1, label="finest, point-mirrored") if comp == "u" else
+                 ax.plot(mx, my, "k:", lw=1, label="finest, point-mirrored"))
+        for q, (value, pos) in extrema.items():
+            if q.startswith(comp + "_"):
+                lab = bp_label if q in ("u_min", "v_max") else None
+                (ax.plot(value, pos, "k*", ms=8, mfc="none", label=lab) if comp == "u" else
+                 ax.plot(pos, value, "k*", ms=8, mfc="none", label=lab))
         if comp == "u":
-            ax.set_xlabel("u on x = mid-width")
+            ax.set_xlabel("u on x = 0.5 (lid speed 1)")
             ax.set_ylabel("y")
+            dax.set_xlabel("y")
         else:
             ax.set_xlabel("x")
-            ax.set_ylabel("v on y = mid-height")
+            ax.set_ylabel("v on y = 0.5 (lid speed 1)")
+            dax.set_xlabel("x")
+        dax.axhline(0, color="k", lw=0.5)
+        dax.set_ylabel(("%s $-$ Ghia" % comp) + (" (stars: extremum $-$ B&P)" if extrema else "")
+                       if comp in refs else "%s $-$ point-mirrored" % comp, fontsize=7)
         ax.grid(alpha=0.3)
-        ax.legend(loc="best")
+        dax.grid(alpha=0.3)
+        ax.legend(loc="best", fontsize=6)
     fig.tight_layout()
     fig.savefig(out)
     plt.close(fig)
@@ -112,9 +182,31 @@ def _body_outlines(group):
     return outlines
 
 
-def snapshots(case_dir, case, out, max_panels=3, path=None):
-    """Vorticity (filled contours) with velocity vectors and any body outlines, from the finest
-    run's HDF5 (or `path`): the last snapshot, or up to max_panels evenly spread snapshots."""
+def vorticity_limit(paths, percentile=98):
+    """One colour range for all snapshots of a case: the percentile of |vorticity| over every
+    snapshot of the given HDF5 files (None without snapshots)."""
+    import h5py
+    samples = []
+    for path in paths:
+        try:
+            with h5py.File(path, "r") as f:
+                for step in f.get("snapshots", {}):
+                    g = f["snapshots"][step]
+                    if "vorticity" in g:
+                        w = np.abs(np.asarray(g["vorticity"])).ravel()
+                        samples.append(w[:: max(1, w.size // 20000)])
+        except OSError:
+            continue
+    if not samples:
+        return None
+    lim = float(np.nanpercentile(np.concatenate(samples), percentile))
+    return lim if lim > 0 else 1.0
+
+
+def snapshots(case_dir, case, out, max_panels=3, path=None, vlim=None, system=None):
+    """Vorticity (filled contours, one colour scale `vlim` for the figure and, when given, for the
+    whole case) with velocity vectors and any body outlines, from the finest run's HDF5 (or
+    `path`): up to max_panels evenly spread snapshots, one colour bar."""
     path = path or _finest_h5(case_dir, case)
     if path is None:
         return None, None
@@ -123,10 +215,11 @@ def snapshots(case_dir, case, out, max_panels=3, path=None):
         f = h5py.File(path, "r")
     except OSError:  # a run still writing it (locked) or a truncated file: no figure from it
         return None, None
+    system = system or {}
     with f:
         if "snapshots" not in f or "grid" not in f:
             return None, None
-        steps = sorted(f["snapshots"].keys())
+        steps = sorted(k for k in f["snapshots"].keys() if "vorticity" in f["snapshots"][k])
         if not steps:
             return None, None
         if len(steps) > max_panels:
@@ -135,20 +228,19 @@ def snapshots(case_dir, case, out, max_panels=3, path=None):
         xc, yc = np.asarray(f["grid/x_centres"]), np.asarray(f["grid/y_centres"])
         lx = float(np.ptp(xc)) or 1.0
         ly = float(np.ptp(yc)) or 1.0
+        lim = vlim or vorticity_limit([path]) or 1.0
         nrow = 1 if len(steps) <= 3 else 2  # four panels: 2 x 2, readable on a page
         ncol = -(-len(steps) // nrow)
-        panel_w = min(3.4, 7.0 / ncol)
+        panel_w = 6.0 if ncol == 1 and lx > 1.5 * ly else min(3.2, 6.4 / ncol)
         panel_h = min(panel_w * ly / lx, 8.0)
-        fig, axes = plt.subplots(nrow, ncol, figsize=(panel_w * ncol + 0.6, (panel_h + 0.6) * nrow),
+        fig, axes = plt.subplots(nrow, ncol, figsize=(panel_w * ncol + 1.0, (panel_h + 0.7) * nrow),
                                  squeeze=False)
         for ax in axes.flat[len(steps):]:
             ax.set_visible(False)
+        cs = None
         for ax, step in zip(axes.flat, steps):
             g = f["snapshots"][step]
-            if "vorticity" not in g:
-                continue
             w = np.asarray(g["vorticity"])
-            lim = np.nanpercentile(np.abs(w), 98) or 1.0
             cs = ax.contourf(xc, yc, np.clip(w, -lim, lim), levels=np.linspace(-lim, lim, 25),
                              cmap="RdBu_r", extend="both")
             if "u" in g and "v" in g:
@@ -160,49 +252,128 @@ def snapshots(case_dir, case, out, max_panels=3, path=None):
             for bx, by in _body_outlines(g):
                 ax.fill(bx, by, facecolor="none", edgecolor="k", lw=1)
             t = g.attrs.get("time", None)
-            ax.set_title("t = %.4g (step %s)" % (float(t), step) if t is not None else "step " + step)
+            tu = real_units("time", system)
+            ax.set_title("t = %.4g%s" % (float(t), " " + tu if tu else "") if t is not None else "step " + step)
             ax.set_aspect("equal")
-            ax.set_xlabel("x")
-            ax.set_ylabel("y")
-            fig.colorbar(cs, ax=ax, shrink=0.8, label="vorticity", format="%.2g")
-        fig.tight_layout()
+            ax.set_xlabel(_axis_label("x", "length", system))
+            ax.set_ylabel(_axis_label("y", "length", system))
+        if cs is not None:
+            fig.colorbar(cs, ax=[a for a in axes.flat if a.get_visible()], shrink=0.85,
+                         label=_axis_label("vorticity", "1/time", system), format="%.3g",
+                         ticks=np.linspace(-lim, lim, 5))
         fig.savefig(out)
         plt.close(fig)
     return out, path
 
 
-def body_histories(case_dir, out):
-    """Centroid height, vertical velocity and diameter of every body against time (or drag and
-    lift coefficients when the bodies have them), from each run's <stem>_bodies.csv (the CSV the
-    solver writes beside its HDF5)."""
+def _body_label(names, k):
+    return names.get(k, "body %d" % k) if names else "body %d" % k
+
+
+def body_histories(case_dir, out, literature=None):
+    """Body series against time from each run's <stem>_bodies.csv (the CSV the solver writes beside
+    its HDF5): drag and lift coefficients for bodies with a reference speed (fixed cylinders), else
+    centroid height, vertical velocity and (when it changes) diameter. Runs with more than three
+    bodies draw all of them thin in one colour with one legend entry; literature values (`literature`:
+    'bands' key -> [(lo, hi, label)], 'lines' key -> [(value, label)], 'points' key -> [(t, v,
+    label)], 'body_names' {index: name}, 'startup' time) are drawn on the matching panel. The
+    y range leaves out t < startup and each run's last sample (the shortened final step), which
+    are still drawn."""
+    lit = literature or {}
     files = sorted(glob.glob(os.path.join(case_dir, "*_bodies.csv")))
     if not files:
         return None, []
-    wanted = [("centroid_y", "centroid y"), ("velocity_y", "velocity y"), ("diameter", "diameter")]
     tables = [(os.path.basename(p)[:-len("_bodies.csv")], data.read_table_csv(p)) for p in files]
-    # Force histories for bodies with a reference speed (fixed cylinders of the DFG cases): drag
-    # and lift coefficients instead of the (constant) position and size.
+    wanted = [("centroid_y", "centroid y"), ("velocity_y", "velocity y"), ("diameter", "diameter")]
     if any(any(n.endswith("/drag_coefficient") for n in t[1][0]) for t in tables):
-        wanted = [("drag_coefficient", "drag coefficient"), ("lift_coefficient", "lift coefficient")]
-    present = [(k, lab) for k, lab in wanted
-               if any(any(n.endswith("/" + k) for n in t[1][0]) for t in tables)]
+        wanted = [("drag_coefficient", "drag coefficient $c_D$"), ("lift_coefficient", "lift coefficient $c_L$"),
+                  ("slip_max", "largest rim slip")]  # the slip where the solver writes it
+    present = []
+    for key, label in wanted:
+        cols = [(stem, t, i) for stem, t in tables for i, n in enumerate(t[0]) if n.endswith("/" + key)]
+        if not cols:
+            continue
+        if key == "diameter" and all(np.nanmax(t[2][:, i]) - np.nanmin(t[2][:, i]) <= 1e-12 * max(1.0, abs(np.nanmax(t[2][:, i])))
+                                     for _, t, i in cols if t[2].shape[0]):
+            continue  # a constant diameter: no panel
+        present.append((key, label))
     if not present:
         return None, files
-    fig, axes = plt.subplots(1, len(present), figsize=(2.4 * len(present) + 0.6, 2.8), squeeze=False)
-    for ax, (key, label) in zip(axes[0], present):
-        for stem, (names, units, arr, _) in tables:
+    for key, (lo, hi, title) in lit.get("zoom", {}).items():
+        if any(k == key for k, _ in present):
+            present.append((key + "@zoom", dict(present)[key]))
+    system = unit_system(tables[0][1][3])
+    fig, axes = plt.subplots(1, len(present), figsize=(3.3 * len(present) + 0.4, 3.0), squeeze=False)
+    colours = plt.rcParams["axes.prop_cycle"].by_key()["color"]
+    startup = lit.get("startup")
+    t_max = 0.0
+    for ax, (panel, label) in zip(axes[0], present):
+        key, zoom = panel.split("@")[0], lit.get("zoom", {}).get(panel.split("@")[0]) if "@" in panel else None
+        lows, highs = [], []
+        # A series that changes by round-off only (a disk at rest) is drawn as its change from the
+        # first value, not against an axis offset such as 1e-12 + 1.
+        values = np.concatenate([t[2][:, i] for _, t in tables for i, n in enumerate(t[0]) if n.endswith("/" + key)])
+        values = values[np.isfinite(values)]
+        shift = 0.0
+        if values.size and np.ptp(values) <= 1e-9 * np.max(np.abs(values)):
+            shift = float(values[0])
+        for r, (stem, (names, units, arr, comments)) in enumerate(tables):
             if not names or arr.shape[0] == 0 or names[0] != "time":
                 continue
             cols = [i for i, n in enumerate(names) if n.endswith("/" + key)]
-            for i in cols[:16]:
-                body = names[i].split("/")[0]
-                lab = stem if len(cols) == 1 else (stem + " " + body if i == cols[0] else None)
-                ax.plot(arr[:, 0], arr[:, i], lw=0.9, label=lab)
+            t = arr[:, 0]
+            t_max = max(t_max, float(np.nanmax(t)))
+            keep = np.ones(len(t), bool)
+            keep[-1] = len(t) < 2  # the last (shortened) step stays out of the range
+            if startup is not None:
+                keep &= t >= startup
+            colour = colours[r % len(colours)]
+            many = len(cols) > 3
+            for j, i in enumerate(cols):
+                body = int(re.sub(r"\D", "", names[i].split("/")[0]) or 0)
+                y = arr[:, i] - shift
+                if many:
+                    lab = "%s: %d bodies" % (stem, len(cols)) if j == 0 else None
+                    ax.plot(t, y, lw=0.5, color=colour, alpha=0.7, label=lab)
+                else:
+                    lab = stem if len(cols) == 1 else "%s, %s" % (stem, _body_label(lit.get("body_names"), body))
+                    ax.plot(t, y, lw=0.9, label=lab,
+                            color=colour if len(cols) == 1 else None, ls=("-", "--", ":")[j % 3])
+                if keep.any():
+                    lows.append(np.nanmin(y[keep]))
+                    highs.append(np.nanmax(y[keep]))
             if cols:
-                ax.set_ylabel("%s [%s]" % (label, units[cols[0]]) if units[cols[0]] else label)
-                ax.set_xlabel("time [%s]" % units[0] if units[0] else "time")
+                ax.set_ylabel(_axis_label(label + (" $-$ %.10g" % shift if shift else ""), units[cols[0]], system))
+                ax.set_xlabel(_axis_label("time", units[0], system))
+        for lo, hi, lab in lit.get("bands", {}).get(key, []):
+            ax.axhspan(lo, hi, color="k", alpha=0.15, lw=0, label=lab)
+            lows.append(lo)
+            highs.append(hi)
+        for value, lab in lit.get("lines", {}).get(key, []):
+            ax.axhline(value, color="k", ls="--", lw=0.8, label=lab)
+            lows.append(value)
+            highs.append(value)
+        for j, (t_ref, v_ref, lab) in enumerate(lit.get("points", {}).get(key, [])):
+            ax.plot(t_ref, v_ref, "k" + "s^o"[j % 3], ms=3.5, mfc="none", ls="none", label=lab)
+        if zoom:
+            lows, highs = [zoom[0]], [zoom[1]]
+            ax.set_title(zoom[2], fontsize=8)
+        if lows and highs:
+            lo, hi = min(lows), max(highs)
+            pad = 0.06 * (hi - lo) if hi > lo else 0.05 * max(abs(hi), 1e-12)
+            ax.set_ylim(lo - pad, hi + pad)
+        ax.yaxis.get_major_formatter().set_useOffset(False)
+        if t_max > 0:  # reference points beyond the runs' end stay off the axis
+            ax.set_xlim(min(0.0, ax.get_xlim()[0]), t_max * 1.02)
         ax.grid(alpha=0.3)
-    axes[0][0].legend(loc="best")
+    handles, labels = [], []
+    for ax in axes[0]:
+        for h, l in zip(*ax.get_legend_handles_labels()):
+            if l not in labels:
+                handles.append(h)
+                labels.append(l)
+    fig.legend(handles, labels, loc="lower center", ncol=min(3, len(labels)), fontsize=6.5,
+               bbox_to_anchor=(0.5, 1.0), frameon=False)
     fig.tight_layout()
     fig.savefig(out)
     plt.close(fig)
@@ -243,6 +414,7 @@ def generic_csv(path, out):
         lab = names[i] + (" [%s]" % units[i] if units[i] else "")
         ax.plot(arr[:, 0], arr[:, i], lw=1, label=lab)
     ax.set_xlabel(names[0] + (" [%s]" % units[0] if units[0] else ""))
+    ax.yaxis.get_major_formatter().set_useOffset(False)
     ax.grid(alpha=0.3)
     ax.legend(loc="best")
     fig.tight_layout()
@@ -251,33 +423,54 @@ def generic_csv(path, out):
     return out
 
 
-def convergence(tables, out):
-    """Error against h (log-log) per table, with the least-squares line through the finest three
-    levels and its slope in the legend."""
-    if not tables:
-        return None
-    titles = list(tables)
-    ncol = 3 if len(titles) > 4 else 2
-    nrow = int(math.ceil(len(titles) / ncol))
-    fig, axes = plt.subplots(nrow, ncol, figsize=(2.4 * ncol, 1.9 * nrow), squeeze=False)
-    for k, title in enumerate(titles):
-        ax = axes[k // ncol][k % ncol]
-        t = tables[title]
+def study_of(title, table):
+    """(study, 'h' or 'dt') of a convergence table: tables of one test program and one set-up (the
+    title without its last two comma-separated parts, the variable and the norm) that refine the
+    same variable form one study (one figure)."""
+    program, rest = title.split(": ", 1) if ": " in title else ("convergence", title)
+    parts = re.sub(r" \(table \d+\)$", "", rest).split(",")
+    # "<set-up>, <variable>, <norm>": the set-up names the study within its program
+    study = program + (": " + ",".join(parts[:-2]).strip() if len(parts) > 2 else "")
+    return study, table.get("refined") or "h"
+
+
+def convergence_study(name, refined, items, out):
+    """One figure per study: error against h (or dt) of each of its tables, log-log, numbered as in
+    the order table, with a reference-slope triangle of the formal order at the finest point."""
+    fig, ax = plt.subplots(figsize=(6.2, 3.4))
+    formal_done = set()
+    # triangles below every table's finest point, so that they cross no data
+    finest_errors = [min(e for e in t["error"] if e > 0) for _, _, t in items if any(e > 0 for e in t["error"])]
+    y_floor = min(finest_errors) if finest_errors else 1.0
+    for k, title, t in items:
         h, e = np.array(t["h"]), np.array(t["error"])
-        ax.loglog(h, e, "o-", ms=3.5, lw=1, label="measured")
+        ok = (h > 0) & (e > 0)
+        if ok.sum() < 2:
+            continue
         slope = t.get("fit_order", math.nan)
-        icpt = data.fit_line(h, e, slope)
-        if np.isfinite(slope) and np.isfinite(icpt):
-            hh = h[-3:]
-            ax.loglog(hh, np.exp(icpt) * hh ** slope, "k--", lw=1, label="fit: slope %.2f" % slope)
-        ax.set_title("(%d) %s" % (k + 1, _short(title.split(": ", 1)[-1], 40)), fontsize=7)
-        ax.xaxis.set_minor_formatter(matplotlib.ticker.NullFormatter())
-        ax.set_xlabel("h")
-        ax.set_ylabel("error")
-        ax.grid(alpha=0.3, which="both")
-        ax.legend(loc="best", fontsize=6)
-    for k in range(len(titles), nrow * ncol):
-        axes[k // ncol][k % ncol].axis("off")
+        # the set-up is the figure's title: the legend names what differs (variable and norm)
+        rest = title[len(name):].lstrip(", ") if title.startswith(name + ",") else title.split(": ", 1)[-1]
+        lab = "(%d) %s" % (k, _short(rest, 52))
+        if np.isfinite(slope):
+            lab += ": %.2f" % slope
+        line, = ax.loglog(h[ok], e[ok], "o-", ms=3.5, lw=1, label=lab)
+        p = t.get("formal", math.nan)
+        if np.isfinite(p) and p not in formal_done:
+            formal_done.add(p)
+            x1 = h[ok].min()
+            x0 = x1 * 2.0
+            y0 = y_floor * 0.5  # the top of this triangle, below the data and the previous triangle
+            y1 = y0 / 2.0 ** p
+            y_floor = y1 / 1.3 / 0.5
+            ax.loglog([x0, x1, x0, x0], [y0, y1, y1, y0], "k-", lw=0.8)
+            ax.annotate("%g" % p, (x0, math.sqrt(y0 * y1)), xytext=(3, 0), textcoords="offset points",
+                        fontsize=7, va="center")
+    ax.xaxis.set_minor_formatter(matplotlib.ticker.NullFormatter())
+    ax.set_xlabel("time step $\\Delta t$" if refined == "dt" else "grid spacing $h$")
+    ax.set_ylabel("error")
+    ax.set_title(name.replace("_", " "), fontsize=9)
+    ax.grid(alpha=0.3, which="both")
+    ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize=6.5, frameon=False)
     fig.tight_layout()
     fig.savefig(out)
     plt.close(fig)

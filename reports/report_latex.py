@@ -32,6 +32,12 @@ def esc(text):
     return "".join(out)
 
 
+def tt(text):
+    """Typewriter text that may break after an underscore or slash (file and case names in narrow
+    table columns)."""
+    return r"\texttt{%s}" % esc(text).replace(r"\_", r"\_\allowbreak{}").replace("/", r"/\allowbreak{}")
+
+
 def num(value, digits=4):
     """Numbers as read (strings) or floats, printed compactly; empty -> '--'."""
     if value is None:
@@ -65,8 +71,10 @@ def status_cell(status):
     return esc(s) if s else "--"
 
 
-def longtable(spec, header, rows, caption=None):
-    lines = [r"\begin{small}", r"\begin{longtable}{%s}" % spec]
+def longtable(spec, header, rows, caption=None, size="small"):
+    """A longtable in the given font size environment (None: the surrounding size)."""
+    lines = ([r"\begin{%s}" % size, r"\setlength{\tabcolsep}{4pt}"] if size else []) + \
+        [r"\begin{longtable}{%s}" % spec]
     if caption:
         lines.append(r"\caption{%s}\\" % caption)
     head = " & ".join(r"\textbf{%s}" % h for h in header) + r" \\ \midrule"
@@ -74,7 +82,7 @@ def longtable(spec, header, rows, caption=None):
               r"\bottomrule", r"\endlastfoot"]
     for r in rows:
         lines.append(" & ".join(r) + r" \\")
-    lines += [r"\end{longtable}", r"\end{small}", ""]
+    lines += [r"\end{longtable}"] + ([r"\end{%s}" % size] if size else []) + [""]
     return "\n".join(lines)
 
 

@@ -47,6 +47,17 @@ def _cell(text):
     return esc(text or "")
 
 
+def _status_cell(row):
+    """pass only for a run that exited 0; a run that ended with another exit code the sweep accepts
+    (e.g. 3: a body left the box, the expected end without a contact model) says so."""
+    status, code = (row.get("status") or "").strip(), (row.get("exit_code") or "").strip()
+    if status == "pass" and code not in ("0", ""):
+        return r"\textcolor{missorange}{accepted exit %s}" % esc(code)
+    if status == "pass":
+        return r"\textcolor{passgreen}{pass}"
+    return r"\textcolor{red}{\textbf{%s}}" % esc(status or "--")
+
+
 def plot_sweep(plot, rows, path):
     """y columns against x, one line per y column and per value of the series column."""
     x_key, ys, series = plot.get("x"), plot.get("y", []), plot.get("series")
@@ -91,14 +102,17 @@ def sweeps_section(out, build, fig_dir):
         return
     out.append("Each sweep file (\\texttt{sweeps/*.toml}) names a scene and a parameter grid; the "
                "workflow runs every point and collects its metrics (\\texttt{ibms compare} on the "
-               "run's outputs, and the wall time) into \\texttt{BUILD/sweeps/<name>.csv}.\n")
+               "run's outputs, and the wall time) into \\texttt{BUILD/sweeps/<name>.csv}. Status: "
+               "\\emph{pass} for a run that exited 0; \\emph{accepted exit N} for a run that ended with "
+               "another exit code its sweep file accepts (\\texttt{accept\\_exit\\_codes}, e.g. 3 when a "
+               "body leaves the box, the end of a scene without a contact model).\n")
     for k, path in enumerate(files):
         title, plot, header, rows = read_sweep(path)
         out.append(r"\subsection{%s}" % esc(title))
         if not rows:
             out.append(r"\emph{The sweep has no rows.}")
             continue
-        table = [[_cell(r.get(h, "")) for h in header] for r in rows]
+        table = [[_status_cell(r) if h == "status" else _cell(r.get(h, "")) for h in header] for r in rows]
         spec = "".join("r" for _ in header)
         out.append(longtable(spec, [r"\texttt{%s}" % esc(h) for h in header], table,
                              caption="Sweep \\texttt{%s}: one row per grid point." %

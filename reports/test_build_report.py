@@ -7,9 +7,13 @@ energy, restitution and contact-history tables).
 Stage `tex` (always runs; the README's test command installs its Python modules): the data, the
 figures and the LaTeX source (build_report.py --tex-dir) -- every figure the source includes exists
 and is a PDF, environments and braces balance, the computed figures are in the text and a stale
-rerun row is not. Stage `pdf` (skipped without LaTeX): the whole report compiles to a PDF whose
+rerun row is not; a DFG 2D-2 max c_D of +12.34 % filed as info by its check is a miss in its
+page-1 row, in the page-1 list of misses and in Known limitations; a time study's order below its
+asserted band is FAIL against its formal order; and a results.csv case without a README source
+mark stops the build with an error naming it. Stage `pdf` (skipped without LaTeX): the whole report compiles to a PDF whose
 text holds the same figures.
 usage: test_build_report.py tex|pdf WORK_DIR     exit 0 pass, 1 fail, 77 skipped (pdf stage, no LaTeX)"""
+import math
 import os
 import re
 import shutil
@@ -41,17 +45,45 @@ with open(os.path.join(work, "validation", "results.csv"), "w") as f:
     f.write('lid_driven_cavity_re100,"max |u - Ghia| (lid speed 1)",0.01,0.5,FAIL\n')
     f.write('lid_driven_cavity_re100,"max |u - Ghia| (lid speed 1)",0.01,0.009,pass\n')  # rerun wins
     f.write('lid_driven_cavity_re100,"GCI_fine of min u_x & 50% #{odd} ~^\\ (order nan)",,nan,info\n')
-    f.write('synthetic_case_without_outputs,"metric with_underscore",1e-10,3.3e-16,pass\n')
+    f.write('swelling_disk_quiescent,"metric with_underscore",1e-10,3.3e-16,pass\n')
+    # A measured miss filed as information by its check: max c_D of DFG 2D-2 against the case's 2 %.
+    f.write('dfg_cylinder_2d2,"drag_coefficient_max at D/h = 20 relative deviation from the reference",,0.1234,info\n')
+    f.write('dfg_cylinder_2d2,"strouhal_number at D/h = 20 relative to the reference",0.01,0.0048,pass\n')
+# One DFG 2D-2 run: its force history (start-up spike, shedding, a spiking shortened last step) and
+# an HDF5 output holding the resolved scene and the run time (the case's parameter table).
+dfg = os.path.join(work, "validation", "dfg_cylinder_2d2")
+os.makedirs(dfg)
+with open(os.path.join(dfg, "dfg_2d2_20_bodies.csv"), "w") as f:
+    f.write("# synthetic force history\ntime [time],body_000/drag_coefficient [-],body_000/lift_coefficient [-]\n")
+    for k in range(1, 401):
+        t = 0.03 * k
+        f.write("%g,%g,%g\n" % (t, 40.0 / k + 3.5 + 0.1 * math.sin(6 * t), math.sin(3 * t)))
+    f.write("12.0001,9.0,0.0\n")
+import h5py  # noqa: E402,F811 - imported above only to test its presence
+with h5py.File(os.path.join(dfg, "dfg_2d2_20.h5"), "w") as h5:
+    h5.attrs["ibms_version"] = "0.0-synthetic"
+    h5.attrs["git_commit"] = "0123456789ab"
+    h5.attrs["start_time"] = "2026-01-01T00:00:00Z"
+    h5.attrs["host"] = "synthetic-host"
+    h5.attrs["scene"] = ('[run]\ntime_step = 0\ncfl = 0.5\nmax_time_step = inf\nmax_viscous_number = 0\n'
+                         '[domain]\nlength_x = 2.2\nlength_y = 0.41\ncells_x = 440\ncells_y = 82\n'
+                         '[walls.left]\nkind = "inflow"\ntime_factor = "ramp"\nramp_time = 1.0\n'
+                         '[ibm]\nkernel = "roma3"\nforcing_passes = 3\n'
+                         '[[bodies]]\nkind = "prescribed"\nn_surface_points = 63\n')
+    h5["timing/run"] = 117.0
 for comp, coord in (("u", "y"), ("v", "x")):
     with open(os.path.join(case, "lid_driven_cavity_re100_8_centreline_%s.csv" % comp), "w") as f:
         f.write("# synthetic profile\n%s [length],%s [length/time]\n" % (coord, comp))
         for k in range(9):
             f.write("%g,%g\n" % (k / 8, (k / 8) * (1 - k / 8)))
 with open(os.path.join(work, "verification_results", "convergence.csv"), "w") as f:
-    f.write("title,N,h,error,order,fit_order,fit_standard_error\n")
+    f.write("title,N,h,error,order,fit_order,fit_standard_error,formal_order,asserted_min,asserted_max,refined\n")
     for n in (8, 16, 32, 64):
         f.write('"synthetic: u, L2 norm",%d,%g,%g,%s,%s\n' % (n, 1 / n, (1 / n) ** 2, "" if n == 8 else "2",
-                                                         "1.987,0.0123" if n == 64 else ","))
+                                                         "1.987,0.0123,2,1.9,inf,h" if n == 64 else ",,,,,"))
+    for n in (8, 16, 32):  # a time study whose fitted order is below its asserted band
+        f.write('"synthetic: p in time (N = steps)",%d,%g,%g,%s,%s\n' % (
+            n, 1 / n, 1 / n, "" if n == 8 else "1", "0.777,0.01,2,1.8,inf,dt" if n == 32 else ",,,,,"))
 with open(os.path.join(work, "Testing", "Temporary", "LastTest.log"), "w") as f:
     f.write("1/1 Testing: test_x\n1/1 Test: test_x\nCommand: x\nTest time =   0.50 sec\n"
             "----------------------------------------------------------\nTest Passed.\n")
@@ -179,6 +211,33 @@ if stage == "tex":
             if f.read(5) != b"%PDF-":
                 fail("figure %s is not a PDF" % name)
     check_text(tex.replace("$", "").replace("{,}", ","), "LaTeX source")
+    # Page 1: the synthetic miss is a miss in its case's row and in the list of misses, not info.
+    summary = tex[tex.index("Summary: one row per validation case"):tex.index("\\tableofcontents")]
+    row = next((line for line in summary.splitlines() if "texttt{dfg\\_\\allowbreak{}cylinder" in line), "")
+    if "{miss}" not in row or "+12.3" not in row:
+        fail("the synthetic DFG 2D-2 miss (+12.3 %%) is not a miss in its page-1 row: %r" % row[:300])
+    if not re.search(r"\{miss\}\} \\texttt\{dfg\\_cylinder\\_2d2\}: drag\\_coefficient\\_max at D/h = 20", summary):
+        fail("the synthetic miss is not in the page-1 list of misses")
+    orders = tex[tex.index("Observed orders beside formal orders"):]
+    if not re.search(r"p in time \(N = steps\) & \$\\Delta t\$ & 8, 16, 32 & [^&]+ & 2 & 0\.777[^&]*& "
+                     r"\[1\.8, \$\\infty\$\] & \\textcolor\{red\}", orders):
+        fail("the time study's order 0.777 is not shown against formal order 2 and band [1.8, inf] as FAIL")
+    if "time step $\\Delta t$" not in tex:
+        fail("the time study's figure caption does not name the time step")
+    if "Known limitations" not in tex or "boundary layer" not in tex:
+        fail("the Known limitations section does not list the miss with its cause")
+    # A case without a source mark (no README with a Compared-with line) stops the build.
+    bad = os.path.join(work, "unmarked")
+    shutil.rmtree(bad, ignore_errors=True)
+    os.makedirs(os.path.join(bad, "validation"))
+    with open(os.path.join(bad, "validation", "results.csv"), "w") as f:
+        f.write('synthetic_case_without_source_mark,"some metric",0.1,0.01,pass\n')
+    proc = subprocess.run([sys.executable, os.path.join(here, "build_report.py"), "--build", bad, "--tex-dir",
+                           os.path.join(bad, "tex")], capture_output=True, text=True, timeout=240)
+    if proc.returncode == 0 or "synthetic_case_without_source_mark" not in proc.stderr \
+            or "no source mark" not in proc.stderr:
+        fail("a case without a source mark did not stop the report build with a clear error "
+             "(exit %d, stderr %r)" % (proc.returncode, proc.stderr[-300:]))
     leftovers = [d for d in os.listdir(work) if d.startswith("report-")]
     if leftovers:
         fail("temporary directories left behind: %s" % leftovers)

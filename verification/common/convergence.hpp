@@ -2,8 +2,9 @@
 // least-squares log-log slope over the finest three levels with its standard error (DESIGN.md §6;
 // metrics::observed_order, GSL's linear fit), and a printed table. When the environment variable
 // IBMS_RESULTS_DIR is set (ctest sets it for every test), each table is also appended to
-// $IBMS_RESULTS_DIR/convergence.csv (title,N,h,error,order,fit_order,fit_standard_error; the fit
-// on the finest row) for the report (reports/README.md), which shows these figures and fits nothing.
+// $IBMS_RESULTS_DIR/convergence.csv (title,N,h,error,order,fit_order,fit_standard_error,
+// formal_order,asserted_min,asserted_max,refined; the fit and the test's OrderClaim on the finest
+// row) for the report (reports/README.md), which shows these figures and fits nothing.
 #pragma once
 #include <algorithm>
 #include <cerrno>
@@ -51,8 +52,17 @@ inline constexpr double max_order_standard_error = 0.1;
 // (e.g. the steady and the unsteady study of the manufactured solution), so tables stay distinct. The block goes out in
 // one append-mode write, so tests running in parallel do not interleave rows; the header line is
 // written by whoever creates the file. Failures to write are reported on stderr, never thrown.
+// What a convergence test claims about its table, written beside the figures for the report: the
+// formal order of the scheme, the band the test asserts the fitted order in (NaN: no order
+// asserted) and whether the table refines the grid ("h") or the time step ("dt").
+struct OrderClaim {
+  double formal = NAN, asserted_min = NAN, asserted_max = NAN;
+  const char* refined = "h";
+};
+
 inline void append_convergence_csv(const std::string& title, const std::vector<int>& n,
-                                   const std::vector<double>& h, const std::vector<double>& e) {
+                                   const std::vector<double>& h, const std::vector<double>& e,
+                                   const OrderClaim& claim = {}) {
   const char* dir = std::getenv("IBMS_RESULTS_DIR");
   if (dir == nullptr || *dir == '\0') return;
   const std::string path = std::string(dir) + "/convergence.csv";
@@ -73,20 +83,24 @@ inline void append_convergence_csv(const std::string& title, const std::vector<i
     else std::snprintf(line, sizeof line, ",%d,%.17g,%.17g,%.6g", n[k], h[k], e[k], orders[k - 1]);
     rows.push_back(quoted + line);
     if (k + 1 == n_rows) {
-      std::snprintf(line, sizeof line, ",%.6g,%.3g", fit.order, fit.standard_error);
+      std::snprintf(line, sizeof line, ",%.6g,%.3g,%s,%s,%s,%s", fit.order, fit.standard_error,
+                    csv_number(claim.formal, true).c_str(), csv_number(claim.asserted_min, true).c_str(),
+                    csv_number(claim.asserted_max, true).c_str(), claim.refined);
       rows.back() += line;
     } else {
-      rows.back() += ",,";
+      rows.back() += ",,,,,,";
     }
   }
-  const std::string failure = append_csv_rows(path, "title,N,h,error,order,fit_order,fit_standard_error", rows);
+  const std::string failure = append_csv_rows(
+      path, "title,N,h,error,order,fit_order,fit_standard_error,formal_order,asserted_min,asserted_max,refined", rows);
   if (!failure.empty()) std::fprintf(stderr, "convergence_table: %s\n", failure.c_str());
 }
 
 // Table "N  error  order" for the log (ctest -V shows it); also appended as CSV when
 // IBMS_RESULTS_DIR is set (append_convergence_csv).
 inline std::string convergence_table(const std::string& title, const std::vector<int>& n,
-                                     const std::vector<double>& h, const std::vector<double>& e) {
+                                     const std::vector<double>& h, const std::vector<double>& e,
+                                     const OrderClaim& claim = {}) {
   std::ostringstream out;
   const std::vector<double> orders = pairwise_orders(h, e);
   out << title << "\n    N        error       order\n";
@@ -101,7 +115,7 @@ inline std::string convergence_table(const std::string& title, const std::vector
   std::snprintf(fit, sizeof fit, "  least-squares order over the finest %d levels: %.3f +- %.3f (standard error)",
                 o.points, o.order, o.standard_error);
   out << fit;
-  append_convergence_csv(title, n, h, e);
+  append_convergence_csv(title, n, h, e, claim);
   return out.str();
 }
 

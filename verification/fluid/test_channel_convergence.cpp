@@ -38,7 +38,7 @@ void accumulate(Errors& e, double eu, double ev, double ep, double& su, double& 
 
 void check_order(const std::string& name, const std::vector<int>& n, const std::vector<double>& h,
                  const std::vector<double>& e, double required) {
-  BOOST_TEST_MESSAGE(verification::convergence_table(name, n, h, e));
+  BOOST_TEST_MESSAGE(verification::convergence_table(name, n, h, e, {2.0, required, INFINITY, "h"}));
   const ObservedOrder fit = verification::finest_three_fit(h, e);
   BOOST_TEST(fit.order >= required);
   BOOST_TEST(fit.standard_error <= verification::max_order_standard_error);

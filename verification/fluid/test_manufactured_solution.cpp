@@ -83,7 +83,7 @@ void check_order(const std::string& name, const std::vector<int>& n, const std::
                  double required) {
   std::vector<double> h;
   for (int k : n) h.push_back(1.0 / k);
-  BOOST_TEST_MESSAGE(verification::convergence_table(name, n, h, e));
+  BOOST_TEST_MESSAGE(verification::convergence_table(name, n, h, e, {2.0, required, INFINITY, "h"}));
   BOOST_TEST(verification::finest_three_fit(h, e).standard_error <= verification::max_order_standard_error);
   BOOST_TEST(verification::finest_three_slope(h, e) >= required);
 }
@@ -165,7 +165,7 @@ BOOST_AUTO_TEST_CASE(velocity_is_second_order_in_time) {
     return err;
   }, n, h, e);
   BOOST_TEST_MESSAGE(verification::convergence_table(
-      "velocity, max |u_dt - u_dt/2| at t = 1 on 64^2 (N = steps)", n, h, e));
+      "velocity, max |u_dt - u_dt/2| at t = 1 on 64^2 (N = steps)", n, h, e, {2.0, 1.8, INFINITY, "dt"}));
   BOOST_TEST(verification::finest_three_fit(h, e).standard_error <= verification::max_order_standard_error);
   BOOST_TEST(verification::finest_three_slope(h, e) >= 1.8);  // issue 2 target
 }
@@ -193,7 +193,7 @@ BOOST_AUTO_TEST_CASE(pressure_is_first_order_in_time) {
     return err;
   }, n, h, e);
   BOOST_TEST_MESSAGE(verification::convergence_table(
-      "pressure, max |p_dt - p_dt/2| at t = 1 on 64^2 (N = steps)", n, h, e));
+      "pressure, max |p_dt - p_dt/2| at t = 1 on 64^2 (N = steps)", n, h, e, {1.0, 0.9, INFINITY, "dt"}));
   BOOST_TEST(verification::finest_three_fit(h, e).standard_error <= verification::max_order_standard_error);
   BOOST_TEST(verification::finest_three_slope(h, e) >= 0.9);
 }
@@ -224,6 +224,7 @@ BOOST_AUTO_TEST_CASE(quick_convection_and_quadratic_wall_closure_keep_second_ord
     e.push_back(err);
   }
   BOOST_TEST_MESSAGE(verification::convergence_table(
-      "QUICK + quadratic wall: velocity, max |u_dt - u_dt/2| at t = 1 on 64^2 (N = steps)", n, h, e));
+      "QUICK + quadratic wall: velocity, max |u_dt - u_dt/2| at t = 1 on 64^2 (N = steps)", n, h, e,
+      {2.0, 1.8, INFINITY, "dt"}));
   BOOST_TEST(verification::finest_three_slope(h, e) >= 1.8);
 }
