@@ -9,7 +9,8 @@
 // Usage: bench_forcing_passes [quick|default|full]   (full adds D/h = 37.5 and 50 for the disk)
 //        bench_forcing_passes radius   the effective radius of the forced cylinders on the Couette
 //        flow (CouetteResult: fitted A r + B / r) for 1 and 3 passes and marker retractions 0, 0.3,
-//        0.5 h, with the errors: how much larger the immersed body looks than its rim, in cells.
+//        0.5 h, with the errors: how much larger the immersed body looks than its rim, in cells;
+//        then the same for ibm.coupling = "no_slip" (radius_no_slip: that part only).
 // Writes <build>/bench/forcing_passes.csv.
 #include <chrono>
 #include <cstdio>
@@ -68,14 +69,17 @@ Row settling(int n_x, int passes) {
 
 }  // namespace
 
-int radius_study() {
+int radius_study(bool no_slip_only) {
   std::printf("circular Couette: effective radius growth (R1e - R1)/h, (R2 - R2e)/h from the fitted profile\n");
-  std::printf("  passes retraction  D1/h  inner growth  outer growth   L2 error   max error\n");
-  for (int p : {1, 3})
+  std::printf("  coupling passes retraction  D1/h  inner growth  outer growth   L2 error   max error\n");
+  struct Setting { const char* coupling; int passes; };
+  std::vector<Setting> settings{{"no_slip", 1}};
+  if (!no_slip_only) settings.insert(settings.begin(), {{"uhlmann", 1}, {"uhlmann", 3}});
+  for (const Setting& s : settings)
     for (double retraction : {0.0, 0.3, 0.5})
       for (int n : {32, 64, 128}) {
-        const test::CouetteResult r = test::run_circular_couette(n, p, retraction);
-        std::printf("  %6d %10.2f %5.1f  %12.3f  %12.3f  %9.3e  %9.3e\n", p, retraction,
+        const test::CouetteResult r = test::run_circular_couette(n, s.passes, retraction, s.coupling);
+        std::printf("  %8s %6d %10.2f %5.1f  %12.3f  %12.3f  %9.3e  %9.3e\n", s.coupling, s.passes, retraction,
                     2 * test::CircularCouette::inner_radius * n, r.inner_growth_cells, r.outer_growth_cells, r.l2,
                     r.max);
         std::fflush(stdout);
@@ -85,7 +89,8 @@ int radius_study() {
 
 int main(int argc, char** argv) {
   const std::string level = argc > 1 ? argv[1] : "default";
-  if (level == "radius") return radius_study();
+  if (level == "radius") return radius_study(false);
+  if (level == "radius_no_slip") return radius_study(true);
   const std::vector<int> passes{1, 2, 3, 5};
   const std::vector<int> couette_grids = level == "quick" ? std::vector<int>{32, 64} : std::vector<int>{32, 64, 128};
   std::vector<int> disk_grids = level == "quick" ? std::vector<int>{100} : std::vector<int>{100, 150, 200};

@@ -133,10 +133,10 @@ void require_increasing(const CsvTable& t, int c) {
                        "' must increase strictly (" + std::to_string(x[k]) + " after " + std::to_string(x[k - 1]) + ")");
 }
 
-double reference_value(const std::string& path, const std::string& quantity) {
+double reference_value(const std::string& path, const std::string& quantity, const std::string& column) {
   const CsvTable t = read_csv(path, {{"quantity", "units", "basis", "source", "exact_value"}});
-  const int q = t.find({"quantity"}), v = t.find({"value"});
-  if (q < 0 || v < 0) throw InputError(t.where() + "a reference file needs the columns quantity and value");
+  const int q = t.find({"quantity"}), v = t.find({column});
+  if (q < 0 || v < 0) throw InputError(t.where() + "a reference file needs the columns quantity and " + column);
   for (std::size_t k = 0; k < t.rows(); ++k)
     if (t.text[static_cast<std::size_t>(q)][k] == quantity) return t.columns[static_cast<std::size_t>(v)][k];
   throw InputError(path + ": no quantity '" + quantity + "'");

@@ -44,7 +44,8 @@ void require_increasing(const CsvTable& table, int c);
 
 // The `value` of the row whose `quantity` is `quantity` in a reference file
 // (quantity,value[,...]; other columns numeric unless named units, basis, source or position
-// text); throws InputError when the quantity is missing.
-double reference_value(const std::string& path, const std::string& quantity);
+// text); throws InputError when the quantity is missing. `column` reads another numeric column of
+// that row instead (lower, upper: the published bounds).
+double reference_value(const std::string& path, const std::string& quantity, const std::string& column = "value");
 
 }  // namespace ibms

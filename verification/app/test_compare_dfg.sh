@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # Claims (docs/compare.md, DFG cylinders): `ibms compare dfg_cylinder_2d1` gates c_D against the
-# published 5.57954 and against ibms's reference within 1 % (a value between passes, one 2 % off
-# fails, exit 1), and `ibms compare dfg_cylinder_2d2` recovers the Strouhal number and max c_D of a
+# published 5.57954 within 1 % (one 2 % off fails, exit 1) and against ibms's own reference only
+# where that lies inside the published interval (ibms's 5.658 does not: shown, not gated), and
+# `ibms compare dfg_cylinder_2d2` recovers the Strouhal number and max c_D of a
 # synthetic force history (c_L = sin(2 pi f t), St = f D / U = 0.3 exactly; max c_D = 3.23 + 0.01)
-# with the same figures the case check uses, passes it against the published values, fails it when
+# with the same figures the case check uses, passes it against the published values (ibms's own
+# max c_D 3.6 lies outside the published [3.22, 3.24] and is not gated), fails it when
 # the frequency is 2 % off; malformed files exit 2 naming the file and line. A file with a
 # control-volume drag column gets its relative difference from the drag as an info line (last row
 # for 2D-1, time means over the window for 2D-2).
@@ -21,7 +23,8 @@ printf '# synthetic\nc_d,c_l,delta_p\n5.62,0.0106,0.1175\n' > within.csv
 expect_exit "2D-1 c_D 5.62 passes" 0 "dfg_cylinder_2d1: pass" run dfg_cylinder_2d1 within.csv
 printf 'drag_coefficient,lift_coefficient\n5.80,0.0106\n' > off.csv
 expect_exit "2D-1 c_D 5.80 fails against the published value" 1 "John & Matthies.*FAIL" run dfg_cylinder_2d1 off.csv
-expect_exit "2D-1 ibms's own reference accepted against itself" 1 "ibms reference\) - 1\|.* 0 .*pass" \
+expect_exit "2D-1 ibms's own reference outside the published interval is not gated" 1 \
+  "not gated: ibms's own c_D 5.6[0-9]* lies outside the published \[5.57, 5.59\]" \
   run dfg_cylinder_2d1 "$validation/dfg_cylinder_2d1/reference/ibms_dfg_2d1.csv"
 printf 'c_d,c_l,cv_drag_coefficient\n5.62,0.0106,5.6762\n' > cv.csv
 expect_exit "2D-1 control-volume drag reported" 0 "control-volume c_D vs c_D, last row .*\(\+1.00e-02\)   info" \
@@ -45,8 +48,10 @@ with open(out, "w") as h:
 PY
 }
 history st.csv 3.0
-expect_exit "2D-2 St = 0.3 and max c_D = 3.24 pass against the published values" 1 \
+expect_exit "2D-2 St = 0.3 and max c_D = 3.24 pass against the published values" 0 \
   "St / 0.3 \(Schaefer & Turek 1996\) - 1\|.*pass" run dfg_cylinder_2d2 st.csv
+grep -qE "not gated: ibms's own max c_D 3.6[0-9]* lies outside the published \[3.22, 3.24\]" out.txt ||
+  { echo "FAIL 2D-2 ibms's own max c_D outside the published interval should not be gated"; failures=$((failures + 1)); }
 grep -qE "max c_D / 3.23 \(Schaefer & Turek 1996\) - 1\|.*pass" out.txt ||
   { echo "FAIL 2D-2 max c_D 3.24 should pass the 2 % gate"; failures=$((failures + 1)); }
 grep -qE "control-volume c_D vs c_D, means over the last 4 time units .*\(-1.00e-02\)   info" out.txt ||

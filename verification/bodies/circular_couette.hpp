@@ -4,6 +4,7 @@
 // Steady solution in the annulus u_theta = A r + B / r, A = -Omega R1^2 / (R2^2 - R1^2),
 // B = Omega R1^2 R2^2 / (R2^2 - R1^2), u_r = 0 (exact at any Reynolds number).
 #pragma once
+#include <string>
 #include <chrono>
 #include <cmath>
 
@@ -46,7 +47,8 @@ struct CouetteResult {
 // n x n cells, markers spaced ~ h, dt = min(0.5 h / (Omega R1), viscous_number h^2 / nu), started from
 // the exact solution, run to end_time: the distance to the discrete steady state decays like
 // exp(-nu pi^2 t / (R2 - R1)^2), so t = 0.4 leaves e^-9.9 of it.
-inline CouetteResult run_circular_couette(int n, int forcing_passes, double marker_retraction = 0.0) {
+inline CouetteResult run_circular_couette(int n, int forcing_passes, double marker_retraction = 0.0,
+                                          const std::string& coupling = "uhlmann") {
   using C = CircularCouette;
   Scene scene;
   scene.source_file = "(circular Couette)";
@@ -54,6 +56,8 @@ inline CouetteResult run_circular_couette(int n, int forcing_passes, double mark
   scene.fluid.kinematic_viscosity = C::kinematic_viscosity;
   scene.ibm.forcing_passes = forcing_passes;
   scene.ibm.marker_retraction = marker_retraction;
+  scene.ibm.coupling = coupling;
+  scene.ibm.slip_tolerance = 1e-4;
   // Prescribed bodies move as given: the inner-fluid term would only enter their reported force,
   // and its fan-triangle overlaps of the large outer cylinder would cost 4x the whole run.
   scene.ibm.inner_fluid_inertia = "none";
