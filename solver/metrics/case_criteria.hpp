@@ -9,7 +9,7 @@
 namespace ibms::criteria {
 
 // Lid-driven cavities: max |centre-line velocity - Ghia et al. 1982| over the unflagged points, at
-// the finest validation grid (issue 2 / DESIGN.md §7: 0.01 at Re 100 and 400 on 128^2, 0.02 at
+// the finest validation grid (issue 2 / docs/design.md §7: 0.01 at Re 100 and 400 on 128^2, 0.02 at
 // Re 1000 on 256^2, the level Ghia's own 129^2/257^2 solution allows). `ibms compare` uses the same
 // number against ibms's own 256^2 reference; the two-sided cavity has no published profile and
 // uses the Re 100 value there.

@@ -1,4 +1,4 @@
-// A validated, typed scene: everything a run needs, with defaults filled in (DESIGN.md §4).
+// A validated, typed scene: everything a run needs, with defaults filled in (docs/design.md §4).
 // scene/scene_reader.cpp builds it from TOML and checks every value once; the rest of the code
 // trusts it. Units: the solver is unit-agnostic, each scene states its system in a comment.
 #pragma once
@@ -41,7 +41,7 @@ struct DomainSpec {
 struct FluidSpec {
   double density = 1.0;              // rho_f [mass/length^3]
   double kinematic_viscosity = 0.01; // nu [length^2/time]
-  std::array<double, 2> gravity{0.0, 0.0};  // g [length/time^2]; acts on bodies only (METHOD.md §2.6)
+  std::array<double, 2> gravity{0.0, 0.0};  // g [length/time^2]; acts on bodies only (docs/method.md §2.6)
   // Spatial options (fluid/fluid_solver.hpp, FluidSchemes; docs/fluid-accuracy.md): convected face
   // values central | quick, and the viscous wall closure linear | quadratic.
   std::string convection = "central";
@@ -101,7 +101,7 @@ struct SwellingSpec {
   double max_diameter = 0.0;         // swelling stops at this diameter [length]
 };
 
-// A body of one of three kinds (DESIGN.md §11), chosen by `kind`:
+// A body of one of three kinds (docs/design.md §11), chosen by `kind`:
 //  mass_spring  the papers' deformable wheel (springs, swelling, sub-steps);
 //  rigid        Newton-Euler translation and rotation of a rigid ring of Lagrangian points;
 //  prescribed   centre X(t) = X0 + V t + A sin(2 pi t / T + phase), angle

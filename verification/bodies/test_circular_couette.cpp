@@ -10,7 +10,7 @@
 // converge); at a fixed viscous number it is O(h).
 // Expected orders: the regularised kernel spreads the no-slip condition over ~ 3 h, so the discrete
 // boundary sits O(h) away from the true one: first order in both L2 and max norms (Uhlmann 2005;
-// Breugem 2012 reaches ~2 only with retracted markers). Asserted (DESIGN.md §6): slope over the
+// Breugem 2012 reaches ~2 only with retracted markers). Asserted (docs/design.md §6): slope over the
 // finest three >= 1 - 0.1, every pairwise order positive.
 #define BOOST_TEST_MODULE circular_couette
 #include <boost/test/unit_test.hpp>

@@ -1,5 +1,5 @@
 // Convergence bookkeeping shared by verification programs: pairwise observed orders, the
-// least-squares log-log slope over the finest three levels with its standard error (DESIGN.md §6;
+// least-squares log-log slope over the finest three levels with its standard error (docs/design.md §6;
 // metrics::observed_order, GSL's linear fit), and a printed table. When the environment variable
 // IBMS_RESULTS_DIR is set (ctest sets it for every test), each table is also appended to
 // $IBMS_RESULTS_DIR/convergence.csv (title,N,h,error,order,fit_order,fit_standard_error,

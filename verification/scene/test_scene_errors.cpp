@@ -1,4 +1,4 @@
-// Bad scenes are rejected with ONE line naming the file, the key and the reason (STYLE.md §8).
+// Bad scenes are rejected with ONE line naming the file, the key and the reason (docs/design.md §4).
 // A data-driven table: each row is a valid scene (scene_fixture.hpp) spoiled in one way.
 #define BOOST_TEST_MODULE scene_errors
 #include <boost/test/unit_test.hpp>

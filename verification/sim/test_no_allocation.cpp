@@ -1,4 +1,4 @@
-// No allocation inside the step (DESIGN.md §9, issue 12 item 1): after a warm-up, during which work
+// No allocation inside the step (docs/design.md §9, issue 12 item 1): after a warm-up, during which work
 // arrays reach their size (contacts have begun, triangle overlaps settled), further fluid steps with
 // bodies, swelling, DEM contacts, rigid and prescribed bodies call operator new zero times, and so
 // does the run loop's control-volume force of every body around each step. The global operator new

@@ -1,4 +1,4 @@
-// A scene pays only for what it uses (DESIGN.md §3, issue 5 item 3), structurally: the pipeline of
+// A scene pays only for what it uses (docs/design.md §3, issue 5 item 3), structurally: the pipeline of
 // a fluid-only scene holds no body stage and its timers record no body work; a one-body scene with
 // contacts evaluates wall contacts but lists no pair search and examines no CDS pair; two bodies do.
 // (The per-step cost figures are measured by bench/bench_overhead.cpp, not asserted here.)
