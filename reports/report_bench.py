@@ -1,4 +1,4 @@
-"""Report sections fed by bench/ and by verification tables other than convergence (issue 5):
+"""Report sections fed by bench/ and by verification tables other than convergence:
 kernel-moment table (BUILD/verification_results/kernel_moments.csv, written by test_delta_kernel),
 work-precision plots with fitted slopes (BUILD/bench/work_precision_<case>.csv), stability maps
 (BUILD/bench/stability_<case>.csv), the cost of what a scene uses (BUILD/bench/overhead.csv) and

@@ -1,4 +1,4 @@
-"""Report section on the solid and contact verification tables (issue 5 item 1): the undamped
+"""Report section on the solid and contact verification tables: the undamped
 wheel's energy error against time per sub-step with its order table
 (BUILD/verification_results/wheel_energy.csv and wheel_energy_history.csv, written by
 test_wheel_energy), restitution measured against target (restitution.csv, written by

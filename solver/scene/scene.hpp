@@ -24,7 +24,7 @@ struct RunSpec {
   double max_viscous_number = 0.0;
   // Solid sub-steps (sim/body_update.hpp): "per_group" (each group of bodies that may touch within
   // the step takes its own sub-step; contact sub-steps only for a group that may touch something)
-  // or "global" (every body takes the smallest sub-step of all, the first version's scheme).
+  // or "global" (every body takes the smallest sub-step of all).
   std::string solid_substeps = "per_group";
   // A body whose kinetic energy exceeds what the scene can give it (Simulation::body_energy_scale:
   // an unstable spring or contact) stops the run with the blow-up message ("stop") or is reported
@@ -73,7 +73,7 @@ struct IbmSpec {
   int forcing_passes = 1;            // multi-direct forcing passes [-]
   // Which velocity the markers force: "explicit_estimate" (Uhlmann 2005: the explicit estimate
   // u^n + dt(-N + nu L u^n - G p^n), the force then enters the Crank-Nicolson solve) or
-  // "implicit_prediction" (the Crank-Nicolson prediction, force added after it; ibms 0.1).
+  // "implicit_prediction" (the Crank-Nicolson prediction, force added after it).
   std::string forcing_stage = "explicit_estimate";
   std::string inner_fluid_inertia = "kempe";  // kempe (variant K) | none (variant A, papers' literal form)
   bool sub_markers = false;          // extra IB markers when marker spacing exceeds the cell size

@@ -1,4 +1,4 @@
-// Circular Couette flow between two concentric prescribed cylinders (issue 10 item 4): the inner
+// Circular Couette flow between two concentric prescribed cylinders: the inner
 // one (radius R1) turns at Omega, the outer one (R2) is fixed, both immersed in a walled box. The
 // steady Navier-Stokes solution in the annulus is u_theta = A r + B / r with
 //   A = -Omega R1^2 / (R2^2 - R1^2),  B = Omega R1^2 R2^2 / (R2^2 - R1^2),  u_r = 0
