@@ -127,6 +127,20 @@ void check_bodies(const Scene& scene, const SceneDiagnostics& diagnostics) {
   }
 }
 
+// ibm.coupling = "no_slip" holds the constraint with the full force of the projected flow, pressure
+// included, while the bodies move explicitly with that force. A mass-spring rim point, light and
+// free to move alone, then receives the reaction of more fluid than its own mass (the added-mass
+// instability of explicit coupling): measured on verification/sim/restart_scene.toml, the wheels
+// blow up at step 4. Rigid and prescribed bodies move as a whole and are coupled stably.
+void check_coupling(const Scene& scene, const SceneDiagnostics& diagnostics) {
+  if (scene.ibm.coupling != "no_slip") return;
+  for (std::size_t b = 0; b < scene.bodies.size(); ++b)
+    if (scene.bodies[b].kind == "mass_spring")
+      diagnostics.fail("ibm.coupling",
+                       fmt::format("\"no_slip\" couples rigid and prescribed bodies only; body {} is mass_spring (its "
+                                   "light rim points are unstable under the full constraint force): use \"uhlmann\"", b));
+}
+
 void check_contact(const ContactSpec& contact, const SceneDiagnostics& diagnostics) {
   if (contact.stiffness > 0.0 && contact.cds_radius <= 0.0 && contact.cds_radius_fraction <= 0.0) {
     diagnostics.fail("contact.stiffness",
@@ -163,6 +177,7 @@ void check_scene_consistency(const Scene& scene, const SceneDiagnostics& diagnos
   check_run(scene.run, diagnostics);
   check_open_sides(scene, diagnostics);
   check_bodies(scene, diagnostics);
+  check_coupling(scene, diagnostics);
   check_contact(scene.contact, diagnostics);
   check_output(scene.output, diagnostics);
 }

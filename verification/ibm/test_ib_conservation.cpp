@@ -5,6 +5,7 @@
 #define BOOST_TEST_MODULE ib_conservation
 #include <boost/test/unit_test.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <random>
@@ -74,6 +75,38 @@ BOOST_AUTO_TEST_CASE(spreading_conserves_total_force_and_torque) {
     BOOST_TEST_MESSAGE(kernel_name(kernel) << "    " << force_error << "    " << torque_error);
     BOOST_TEST(force_error <= round_off);
     if (kernel != KernelKind::cosine4) BOOST_TEST(torque_error <= round_off);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(spreading_to_faces_conserves_total_force_and_is_the_cell_spreading_shifted_half_a_cell) {
+  // spread_to_faces puts F_x on the x-faces and F_y on the y-faces with the kernel centred there:
+  // the same totals as the cell spreading, and, for markers moved by (h/2, 0), the x-faces take
+  // exactly what the cells take (the face of index i sits half a cell left of centre i).
+  const Grid grid(40, 32, 1.0, 0.8);
+  const Markers m = ring_with_random_forces(grid);
+  for (KernelKind kernel : all_kernel_kinds) {
+    FaceField face_x = FaceField::x_faces(grid), face_y = FaceField::y_faces(grid);
+    spread_to_faces(grid, kernel, m.position, m.force, m.volume, face_x, face_y);
+    double sum_x = 0.0, sum_y = 0.0, lag_x = 0.0, lag_y = 0.0, scale = 0.0;
+    for (double f : face_x.values()) sum_x += f * grid.dx() * grid.dy();
+    for (double f : face_y.values()) sum_y += f * grid.dx() * grid.dy();
+    for (std::size_t l = 0; l < m.position.size(); ++l) {
+      lag_x += m.force[l][0] * m.volume[l];
+      lag_y += m.force[l][1] * m.volume[l];
+      scale += (std::abs(m.force[l][0]) + std::abs(m.force[l][1])) * m.volume[l];
+    }
+    BOOST_TEST((std::abs(sum_x - lag_x) + std::abs(sum_y - lag_y)) / scale <= round_off);
+    Points shifted = m.position;
+    for (auto& p : shifted) p[0] += 0.5 * grid.dx();
+    CellField cell_x(grid), cell_y(grid);
+    spread(grid, kernel, shifted, m.force, m.volume, cell_x, cell_y);
+    double largest = 0.0, difference = 0.0;
+    for (int j = 0; j < grid.ny; ++j)
+      for (int i = 0; i < grid.nx; ++i) {
+        largest = std::max(largest, std::abs(cell_x(i, j)));
+        difference = std::max(difference, std::abs(cell_x(i, j) - face_x(i, j)));
+      }
+    BOOST_TEST(difference <= round_off * largest);
   }
 }
 

@@ -85,3 +85,10 @@ BOOST_AUTO_TEST_CASE(control_volume_forces_around_the_steps_allocate_nothing) {
   BOOST_TEST(allocations_in_steps(IBMS_SCENE_MASS_SPRING, 100, 150, {}, /*control_volumes=*/true) == 0);
   BOOST_TEST(allocations_in_steps(IBMS_SCENE_RIGID, 60, 140, {}, /*control_volumes=*/true) == 0);
 }
+
+BOOST_AUTO_TEST_CASE(no_slip_coupling_steps_without_allocating) {
+  // ibm.coupling = "no_slip" (rigid and prescribed bodies): GMRES storage is reserved for the largest marker count, the force
+  // fields on cells and faces are made once, the previous forces keep their capacity.
+  const std::vector<std::string> no_slip{"ibm.coupling=\"no_slip\"", "ibm.slip_tolerance=1e-4"};
+  BOOST_TEST(allocations_in_steps(IBMS_SCENE_RIGID, 60, 140, no_slip) == 0);
+}

@@ -133,6 +133,26 @@ BOOST_AUTO_TEST_CASE(restarted_run_ends_bit_identical_with_bodies_swelling_and_c
   BOOST_TEST(n_different_values(dir.file("whole.h5"), dir.file("rest.h5")) == 0u);
 }
 
+BOOST_AUTO_TEST_CASE(restarted_run_with_the_no_slip_coupling_ends_bit_identical) {
+  // The previous step's marker forces (the predictor of the no_slip coupling) are in the checkpoint.
+  const TempDir dir;
+  const std::vector<std::string> no_slip{"ibm.coupling=\"no_slip\"", "ibm.slip_tolerance=1e-4"};
+  auto with = [&](std::vector<std::string> more) {
+    more.insert(more.end(), no_slip.begin(), no_slip.end());
+    return more;
+  };
+  const auto scene = [&](const std::string& name, std::vector<std::string> overrides) {
+    overrides.push_back("output.file=\"" + dir.file(name) + "\"");
+    return ibms::read_scene_file(IBMS_RESTART_SCENE_RIGID, with(overrides));
+  };
+  const ibms::RunSummary whole = run(scene("whole.h5", {}));
+  run(scene("first.h5", {"run.max_steps=91"}));
+  const ibms::RunSummary rest = run(scene("rest.h5", {}), dir.file("first.h5"));
+  BOOST_TEST(rest.steps == whole.steps);
+  BOOST_TEST(series_max(dir.file("rest.h5"), "coupling_iterations") > 0.0);  // corrections after the restart
+  BOOST_TEST(n_different_values(dir.file("whole.h5"), dir.file("rest.h5")) == 0u);
+}
+
 // At a fixed thread count of 2 (threaded loops and FFTs, body groups on two
 // threads) the restart is bit-identical as well.
 BOOST_AUTO_TEST_CASE(restarted_run_at_two_threads_ends_bit_identical) {
