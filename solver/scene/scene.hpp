@@ -81,7 +81,7 @@ struct IbmSpec {
   // regularised kernel makes the forced body look larger than its rim by a fraction of a cell
   // (validation/dfg_cylinder_2d1/README.md measures it); 0 = markers on the rim [-].
   double marker_retraction = 0.0;
-  // How the forces hold the no-slip condition (docs/method.md, "Coupling"):
+  // How the forces hold the no-slip condition (docs/method.md §3.5, §3.7):
   //  "uhlmann"  Uhlmann (2005): the forcing passes on the explicit estimate, the force then enters
   //             the implicit solve; the implicit solve and the projection leave a slip at the end
   //             of the step that scales with nu dt / h^2 (the papers' scheme);
