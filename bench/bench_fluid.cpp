@@ -1,4 +1,4 @@
-// Fluid benchmarks (issue 2 item 9), run on demand, printing figures:
+// Fluid benchmarks, run on demand, printing figures:
 //  1. one fluid step's cost in ns per cell, lid-driven cavity, 128^2 .. 1024^2;
 //  2. the Poisson solve against one forward + inverse FFTW transform pair of the same size (the
 //     floor it cannot beat), for the closed box and for the open channel's mixed transform (DCT-IV
@@ -55,7 +55,7 @@ void step_cost() {
 }
 
 // The Poisson solve against the bare transform pair it uses, for the closed box (DCT-II/III in both
-// directions) and the open channel (issue 11: inflow Neumann / outflow Dirichlet in x, DCT-IV both
+// directions) and the open channel (inflow Neumann / outflow Dirichlet in x, DCT-IV both
 // ways; walls in y).
 void poisson_against_transform_pair(const char* title, SpectralBoundary left, SpectralBoundary right,
                                     fftw_r2r_kind x_forward, fftw_r2r_kind x_inverse) {

@@ -1,4 +1,4 @@
-// Fluid stability maps (issue 13 item 5): CFL number against cell Reynolds number Re_h = U h / nu
+// Fluid stability maps: CFL number against cell Reynolds number Re_h = U h / nu
 // (viscous number D = nu dt / h^2), no bodies, two flows:
 //   cavity       lid-driven cavity, unit square, lid speed U = 1, N^2 cells, from rest to t = T L/U;
 //   shear_layer  doubly periodic double shear layer (Bell, Colella & Glaz 1989; Minion & Brown 1997):

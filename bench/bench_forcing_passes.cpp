@@ -1,4 +1,4 @@
-// Multi-direct forcing study (issue 10 item 3), run on demand: 1, 2, 3 and 5 forcing passes
+// Multi-direct forcing study, run on demand: 1, 2, 3 and 5 forcing passes
 // (Luo et al. 2007) against the grid, on
 //   - circular Couette flow between prescribed cylinders (verification/bodies/test_circular_couette:
 //     start from the exact solution, t = 0.4, nu dt/h^2 = 0.5): L2 and max velocity error and rim

@@ -1,4 +1,4 @@
-// "A scene pays only for what it uses" (DESIGN.md §3, issue 5 item 3), measured:
+// "A scene pays only for what it uses" (docs/design.md §3), measured:
 //  1. a fluid-only scene (lid-driven cavity, 128^2) stepped through Simulation costs the same per
 //     step as the bare FluidSolver (predictor + projection) at the same dt: the ratio is printed;
 //  2. a one-body scene with contacts (settling disk, walls only) spends nothing in the pair search
@@ -64,7 +64,7 @@ int main(int argc, char** argv) {
   const int steps = argc > 2 ? std::atoi(argv[2]) : 500;
   std::filesystem::create_directories(out_dir);
   std::ofstream csv(out_dir + "/overhead.csv");
-  csv << "# bench_overhead: per-step cost of what a scene uses (issue 5 item 3)\n";
+  csv << "# bench_overhead: per-step cost of what a scene uses\n";
   csv << "scene,stage,seconds_per_step,calls\n";
   const std::string src = IBMS_SOURCE_DIR;
 

@@ -1,5 +1,5 @@
-// Stability maps (issue 5 item 4): time step against spring stiffness and against DEM stiffness,
-// with the solid sub-stepped automatically (METHOD.md §5.3: n_sub = ceil(dt / dt_s)) or with a
+// Stability maps: time step against spring stiffness and against DEM stiffness,
+// with the solid sub-stepped automatically (docs/method.md §5.3: n_sub = ceil(dt / dt_s)) or with a
 // fixed single solid step per fluid step (Simulation::fixed_solid_substeps = 1).
 //   settling_spring   one disk settling in a closed 2 x 6 cm channel (the settling-disk scene on a
 //                     40 x 120 grid, 16 rim points) to t = 0.1 s; dt x spring stiffness k_s;

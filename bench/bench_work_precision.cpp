@@ -1,8 +1,8 @@
-// Work-precision (issue 5 item 3): error against wall time over at least four resolutions for
+// Work-precision: error against wall time over at least four resolutions for
 //   mms            unsteady manufactured solution (verification/fluid/manufactured_solution.hpp) to
 //                  t = 1, dt = 0.25 h; error: L2 norm of u - u_exact over the cells;
 //   cavity_re100   lid-driven cavity Re 100 run to its steady-state criterion (the case's scene);
-//   cavity_re1000  the same at Re 1000; error of both (issue 13): the largest difference of the
+//   cavity_re1000  the same at Re 1000; error of both: the largest difference of the
 //                  centre-line extrema u_min (x = 1/2), v_max and v_min (y = 1/2) from the spectral
 //                  values of Botella & Peyret (1998) (validation/<case>/reference/
 //                  botella_peyret_extrema.csv), each extremum from the parabola through the discrete

@@ -1,4 +1,4 @@
-# Installed CMake package (issue 5 item 5): `cmake --install BUILD --prefix P` installs the module
+# Installed CMake package: `cmake --install BUILD --prefix P` installs the module
 # libraries, the public headers (P/include/ibms/<module>/*.hpp), the `ibms` command and
 # P/lib/cmake/ibms/{ibmsConfig,ibmsConfigVersion,ibmsTargets}.cmake, so that another project does
 #   find_package(ibms REQUIRED)

@@ -1,4 +1,4 @@
-"""Report sections fed by bench/ and by verification tables other than convergence (issue 5):
+"""Report sections fed by bench/ and by verification tables other than convergence:
 kernel-moment table (BUILD/verification_results/kernel_moments.csv, written by test_delta_kernel),
 work-precision plots with fitted slopes (BUILD/bench/work_precision_<case>.csv), stability maps
 (BUILD/bench/stability_<case>.csv), the cost of what a scene uses (BUILD/bench/overhead.csv) and
@@ -67,7 +67,7 @@ def kernel_moment_section(out, build):
     for r in rows:  # a rerun appends again: the last row per kernel and moment wins
         last[(r["kernel"], r["moment"])] = r
     out.append("Discrete moment sums of the four regularised delta kernels over 1201 marker offsets "
-               "in $[0,1]$ (\\texttt{verification/ibm/test\\_delta\\_kernel.cpp}, METHOD.md \\S4 and "
+               "in $[0,1]$ (\\texttt{verification/ibm/test\\_delta\\_kernel.cpp}, docs/method.md \\S4 and "
                "A9): the largest deviation from the expected value and the range of the sum.\n")
     table = [[r"\texttt{%s}" % esc(k), esc(m), esc(r["expected"]), num(r["max_error"], 3),
               "[%s, %s]" % (_plain(r["min_sum"]), _plain(r["max_sum"])), num(r["tolerance"], 2)]
@@ -145,7 +145,7 @@ def stability_section(out, build, fig_dir):
         fluid_stability_maps(out, fluid_files, fig_dir)
         return
     out.append("From \\texttt{bench/bench\\_stability}: fluid time step against spring or DEM "
-               "stiffness, with the solid sub-stepped automatically (METHOD.md \\S5.3) or advanced "
+               "stiffness, with the solid sub-stepped automatically (docs/method.md \\S5.3) or advanced "
                "once per fluid step (fixed). Circles: stable; triangles: unstable (rim area changed "
                "by more than 50\\,\\%, or a body point faster than twice the initial approach speed, "
                "and the run reached its end: the solver did not stop it); "

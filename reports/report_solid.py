@@ -1,4 +1,4 @@
-"""Report section on the solid and contact verification tables (issue 5 item 1): the undamped
+"""Report section on the solid and contact verification tables: the undamped
 wheel's energy error against time per sub-step with its order table
 (BUILD/verification_results/wheel_energy.csv and wheel_energy_history.csv, written by
 test_wheel_energy), restitution measured against target (restitution.csv, written by
@@ -161,7 +161,7 @@ def restitution_subsection(out, results, fig_dir):
             last[(r["case"], r["e_target"])] = r
         cases = sorted({c for c, _ in last})
         out.append("Head-on collisions through the linear spring-dashpot contact built for a "
-                   "restitution coefficient $e$ (METHOD.md \\S1.5, \\S1.9, A8): two mass points "
+                   "restitution coefficient $e$ (docs/method.md \\S1.5, \\S1.9, A8): two mass points "
                    "(\\texttt{verification/solid/test\\_restitution.cpp}) and stiff wheels, "
                    "wheel-wheel and wheel-wall, with no fluid "
                    "(\\texttt{verification/contact/test\\_wheel\\_restitution.cpp}); $e$ measured "
@@ -268,7 +268,7 @@ def contact_history_subsection(out, results, fig_dir):
                             "duration (dashed: its end); the wheel runs continue for as long again "
                             "to show that no second contact follows. Near the end of a contact the "
                             "dashpot term outweighs the spring and the linear force, not clipped to "
-                            "stay repulsive (as the tests' headers note, METHOD.md A8), pulls, so the velocity overshoots $e$ before it settles." % extra,
+                            "stay repulsive (as the tests' headers note, docs/method.md A8), pulls, so the velocity overshoots $e$ before it settles." % extra,
                       height=0.5))
 
 

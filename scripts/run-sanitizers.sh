@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The checkers of issue 6 (run by .ci/run since issue 16): an AddressSanitizer +
+# The memory and undefined-behaviour checkers (run by .ci/run after the tests): an AddressSanitizer +
 # UndefinedBehaviorSanitizer build that runs the `unit` and `convergence` tests (any report fails
 # the test: -fno-sanitize-recover=all, leaks included; the script also fails if any report shows
 # up in the test log), then a valgrind memcheck of a short `ibms run` of a scene with two bodies,

@@ -35,7 +35,11 @@ def check(cond, what):
 
 
 def main():
-    work = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else "workflow-test")
+    if len(sys.argv) < 2:
+        # The scratch directory is always named: ctest gives one in the build tree
+        # (workflow/CMakeLists.txt), so nothing is written into the source tree.
+        sys.exit("usage: test_workflow.py WORK_DIR [BUILD_DIR]")
+    work = os.path.abspath(sys.argv[1])
     shutil.rmtree(work, ignore_errors=True)
     os.makedirs(work)
     build = os.path.join(work, "build")

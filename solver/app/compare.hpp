@@ -1,4 +1,4 @@
-// `ibms compare CASE FILE...` (issue 5 item 5, docs/compare.md): reads another code's CSV of a
+// `ibms compare CASE FILE...` (docs/compare.md): reads another code's CSV of a
 // validation case's standard quantities, prints the metrics of the case's check against the
 // published reference and against ibms's own high-resolution results shipped in
 // validation/<case>/reference/, with tolerance and pass/fail. Returns 0 if every gated metric

@@ -1,4 +1,4 @@
-// Text of `ibms info` (issue 2 item 5; time-step limits of METHOD.md §5 once bodies exist).
+// Text of `ibms info` (time-step limits of docs/method.md §5 once bodies exist).
 #include "app/info.hpp"
 #include "app/time_step_limits.hpp"
 

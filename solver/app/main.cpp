@@ -1,6 +1,7 @@
 // ibms command line (CLI11): `ibms run SCENE [--set key=value]... [-o FILE] [--restart FILE] [--quiet]`,
 // `ibms info SCENE [--set key=value]...`, `ibms compare CASE FILE... [--validation-dir DIR]`
-// (exit 0 pass, 1 fail, 2 bad input; docs/compare.md). Exit codes: 0 success, 2 bad input,
+// (exit 0 pass, 1 fail, 2 bad input; docs/compare.md), `ibms --version` (one line: version and
+// git commit, the same two values every output file records). Exit codes: 0 success, 2 bad input,
 // 3 blow-up, 4 interrupted by SIGINT/SIGTERM (checkpoint written; continue with --restart), 1 other.
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -19,6 +20,13 @@
 #include "sim/run.hpp"
 #include "sim/simulation_checkpoint.hpp"
 #include "sim/simulation.hpp"
+
+#ifndef IBMS_VERSION
+#define IBMS_VERSION "unknown"
+#endif
+#ifndef IBMS_GIT_COMMIT
+#define IBMS_GIT_COMMIT "unknown"
+#endif
 
 namespace {
 
@@ -73,6 +81,7 @@ int run_command(const std::string& scene_path, const std::vector<std::string>& o
 
 int main(int argc, char** argv) {
   CLI::App app{"ibms: 2D incompressible flow with immersed deformable, swelling bodies"};
+  app.set_version_flag("--version", std::string("ibms ") + IBMS_VERSION + " (commit " + IBMS_GIT_COMMIT + ")");
   app.require_subcommand(1);
   std::string scene_path, output, restart;
   std::vector<std::string> overrides;

@@ -45,7 +45,7 @@ std::vector<TimeStepLimit> time_step_limits(const Scene& scene, const Simulation
   std::vector<TimeStepLimit> limits;
   const double h = grid_spacing(scene), speed = initial_speed_scale(scene);
   // Advective: dt max(|u|/dx + |v|/dy) <= 1 is the run's blow-up guard (run.max_cfl); the adaptive
-  // step targets run.cfl of it, METHOD.md §2.3.
+  // step targets run.cfl of it, docs/method.md §2.3.
   limits.push_back({"CFL (advective, |u| dt / h <= 1)", speed > 0 ? h / speed : HUGE_VAL, scene.run.cfl, false,
                     speed > 0 ? fmt::format("h / U with U = {:.4g} (walls, inflows, initial bodies)", speed)
                               : "no velocity scale before the run (fluid at rest): checked every step"});
@@ -68,7 +68,7 @@ std::vector<TimeStepLimit> time_step_limits(const Scene& scene, const Simulation
     if (body.kind != BodyKind::mass_spring) continue;  // rigid and prescribed bodies have no springs
     const SpectralBounds bounds = spectral_bounds(body);
     const double omega = std::sqrt(bounds.omega_squared_max), gamma = bounds.damping_rate_max;
-    // Symplectic Euler, METHOD.md §5.1: undamped dt <= 2 / omega_max (period 2 pi / omega_max),
+    // Symplectic Euler, docs/method.md §5.1: undamped dt <= 2 / omega_max (period 2 pi / omega_max),
     // pure dashpot dt <= 2 / gamma_max; together 4 / (gamma + sqrt(gamma^2 + 4 omega^2)), safety 0.5.
     limits.push_back({fmt::format("body {} spring period (2 / omega_max)", b), omega > 0 ? 2 / omega : HUGE_VAL, 0.5,
                       true, fmt::format("omega_max <= {:.4g} [1/time], period 2 pi / omega_max = {:.4g}", omega,

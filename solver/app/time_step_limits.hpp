@@ -1,4 +1,4 @@
-// Every time-step limit of a scene for `ibms info` (issue 5 item 4; METHOD.md §5 and §7): the
+// Every time-step limit of a scene for `ibms info` (docs/method.md §5 and §7): the
 // advective CFL limit, the explicit viscous bound (not binding: Crank-Nicolson), marker travel,
 // per body the spring period and the damping limit of symplectic Euler, the DEM contact duration;
 // the sub-steps the solid will take, and a WARNING line wherever a fixed time step exceeds the

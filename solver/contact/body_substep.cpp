@@ -1,4 +1,4 @@
-// Solid sub-step with contacts re-evaluated every sub-step, METHOD.md §5.3.
+// Solid sub-step with contacts re-evaluated every sub-step, docs/method.md §5.3.
 #include "contact/body_substep.hpp"
 
 #include <stdexcept>

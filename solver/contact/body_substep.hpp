@@ -1,4 +1,4 @@
-// One solid sub-step of all bodies with contacts, METHOD.md §5.3: at x^k, U^k evaluate the DEM
+// One solid sub-step of all bodies with contacts, docs/method.md §5.3: at x^k, U^k evaluate the DEM
 // contact forces of every body (before any body moves, so pair forces stay equal and opposite),
 // add the frozen external forces (fluid reaction, internal-fluid term, gravity [force/length]),
 // then advance each body by symplectic Euler with its springs and dashpots re-evaluated (§5.1).

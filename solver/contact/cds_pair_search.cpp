@@ -1,4 +1,4 @@
-// CDS pair search, METHOD.md §1.9: body-box broad phase (walled boxes) and cell list with bins
+// CDS pair search, docs/method.md §1.9: body-box broad phase (walled boxes) and cell list with bins
 // >= 2 r_max (periodic boxes). The brute-force reference is a test oracle
 // (verification/oracles/brute_force_pair_search.hpp).
 #include "contact/cds_pair_search.hpp"

@@ -1,4 +1,4 @@
-// Pair search between contact-detection spheres (CDS) of different bodies, METHOD.md §1.9: a cell
+// Pair search between contact-detection spheres (CDS) of different bodies, docs/method.md §1.9: a cell
 // list with bins of at least 2 r_max (so touching spheres sit in the same or adjacent bins), and a
 // body-box broad phase; the brute-force O(n^2) reference the tests compare them with is in
 // verification/oracles/. Spheres touch when |x_j - x_i| < r_i + r_j; periodic directions

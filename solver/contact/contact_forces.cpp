@@ -1,4 +1,4 @@
-// DEM contact forces between CDS and with walls, METHOD.md §1.9, A8.
+// DEM contact forces between CDS and with walls, docs/method.md §1.9, A8.
 #include "contact/contact_forces.hpp"
 
 #include <algorithm>
@@ -56,7 +56,7 @@ void collect_pair_contacts(const ContactModel& model, const std::vector<MassSpri
     contact.body_b = spheres.body[t];
     contact.point_b = spheres.point[t];
     contact.group = std::minmax(contact.body_a, contact.body_b);
-    // delta = r_i + r_j - |x_j - x_i|, n = (x_j - x_i)/|x_j - x_i| (METHOD.md §1.9).
+    // delta = r_i + r_j - |x_j - x_i|, n = (x_j - x_i)/|x_j - x_i| (docs/method.md §1.9).
     contact.overlap = spheres.radius[s] + spheres.radius[t] - distance;
     contact.normal = {d[0] / distance, d[1] / distance};
     contacts.push_back(contact);
@@ -79,7 +79,7 @@ void collect_wall_contacts(const ContactModel& model, const std::vector<MassSpri
         const double wall_distance[2] = {x - box.origin[c], box.origin[c] + box.length[c] - x};
         for (int side = 0; side < 2; ++side) {
           if (!box.is_wall(c, side)) continue;
-          // delta = r_c - d_wall (METHOD.md §1.9); n points out of the box, towards the wall.
+          // delta = r_c - d_wall (docs/method.md §1.9); n points out of the box, towards the wall.
           const double overlap = radius - wall_distance[side];
           if (!(overlap > 0.0)) continue;
           ActiveContact contact;

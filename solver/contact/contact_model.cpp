@@ -1,4 +1,4 @@
-// Contact parameters, CDS radius and contact sub-step bound, METHOD.md §1.9, §5.1 and A8.
+// Contact parameters, CDS radius and contact sub-step bound, docs/method.md §1.9, §5.1 and A8.
 #include "contact/contact_model.hpp"
 
 #include <algorithm>
@@ -46,7 +46,7 @@ double lightest_cds_point_mass(const std::vector<MassSpringBody>& bodies, const 
 }
 
 double contact_substep(const ContactModel& model, const std::vector<MassSpringBody>& bodies, const BodyMask& members) {
-  constexpr double dashpot_safety = 0.5;      // METHOD.md §5.3 safety factor on a stability limit
+  constexpr double dashpot_safety = 0.5;      // docs/method.md §5.3 safety factor on a stability limit
   if (!model.enabled() || bodies.empty()) return std::numeric_limits<double>::infinity();
   const double lightest_point = lightest_cds_point_mass(bodies, members);
   double heaviest_body = 0.0;

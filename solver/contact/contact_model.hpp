@@ -1,4 +1,4 @@
-// Parameters of the DEM contacts between contact-detection spheres (CDS), METHOD.md §1.9 and A8:
+// Parameters of the DEM contacts between contact-detection spheres (CDS), docs/method.md §1.9 and A8:
 // one CDS (circle) per surface mass point, radius absolute or a fraction of the current body
 // diameter; linear normal spring k_Dn with a dashpot from the restitution coefficient e_D;
 // no tangential force. Also the walls the CDS touch and the sub-step bound t_c / 20 (A8).
@@ -15,7 +15,7 @@ namespace ibms {
 // Which mass enters m_eff of the restitution-damping relation (A8).
 //  body:  whole-body masses M_A M_B / (M_A + M_B), wall M_A (A8: "m = rho_s pi r^2", the particle);
 //         a stiff body then rebounds with e_D measured on its centre-of-mass velocity.
-//  point: the two CDS point masses m_i m_j / (m_i + m_j), wall m_i (METHOD.md §1.9 literal, m_e = M/2
+//  point: the two CDS point masses m_i m_j / (m_i + m_j), wall m_i (docs/method.md §1.9 literal, m_e = M/2
 //         with M the point mass); a stiff body then rebounds with far less damping than e_D says.
 enum class ContactEffectiveMass { body, point };
 
@@ -26,13 +26,13 @@ struct ContactModel {
   double cds_radius_fraction = 0.0;      // CDS radius / current body diameter [-]
   bool walls = true;                     // CDS-wall contacts on the non-periodic walls
   ContactEffectiveMass effective_mass = ContactEffectiveMass::body;
-  // Departure from METHOD.md §1.9 (on by default): the CDS pairs active between the same two bodies
+  // Departure from docs/method.md §1.9 (on by default): the CDS pairs active between the same two bodies
   // (or a body and a wall) act in parallel, S = sum_p (n_p . N)^2 of them along their mean normal N
   // (S = n_c for parallel pairs); each gets the dashpot built for stiffness k_Dn / S, so the group
   // keeps the damping ratio that gives e_D. Off: every pair gets the single-pair dashpot and the
   // realised damping ratio grows like sqrt(S).
   bool share_damping_among_active_pairs = true;
-  // Simultaneously active pairs assumed by the sub-step bound (METHOD.md §1.9: "safety factor ~4").
+  // Simultaneously active pairs assumed by the sub-step bound (docs/method.md §1.9: "safety factor ~4").
   double active_pairs_safety = 4.0;      // [-]
   // Sub-steps per contact duration (A8: >= 20, "preferably 50 for accurate e"). Measured for two free
   // CDS points at this bound with safety 4 (about 40 steps per real contact): e = 0.1 -> 0.092,
@@ -64,7 +64,7 @@ struct WallBox {
 };
 
 // Largest sub-step that resolves a contact with steps_per_contact sub-steps (A8: dt <= t_c / 20)
-// and keeps the dashpot of the lightest CDS point stable (METHOD.md §5.1, pure dashpot dt <= 2 m / c, with
+// and keeps the dashpot of the lightest CDS point stable (docs/method.md §5.1, pure dashpot dt <= 2 m / c, with
 // safety 0.5). t_c uses the lightest CDS point mass (m_p / 2 if there are two bodies, m_p with
 // walls only) and active_pairs_safety * k_Dn: conservative, because a stiff body's contact lasts
 // longer than that of its lightest point. Infinity when contacts are off [time].

@@ -1,4 +1,4 @@
-// Linear normal spring-dashpot contact force, METHOD.md §1.9; no tangential force.
+// Linear normal spring-dashpot contact force, docs/method.md §1.9; no tangential force.
 #include "contact/normal_contact_law.hpp"
 
 namespace ibms {

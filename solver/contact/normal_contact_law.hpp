@@ -1,4 +1,4 @@
-// The contact force law of METHOD.md §1.9: linear normal spring-dashpot, no tangential force,
+// The contact force law of docs/method.md §1.9: linear normal spring-dashpot, no tangential force,
 //   F_i = -(k delta - c v_n) n,  v_n = (U_j - U_i).n,  F_j = -F_i,
 // with n the unit normal from CDS i to its partner j (a wall point for wall contacts); the spring
 // repels and the dashpot resists approach (v_n < 0). Not clipped to stay repulsive: clipping

@@ -1,5 +1,5 @@
 // Uniform Cartesian grid of a rectangular 2D box: cell counts, spacings, cell-centre and face
-// coordinates, and which directions are periodic (METHOD.md §2.2). No physics here.
+// coordinates, and which directions are periodic (docs/method.md §2.2). No physics here.
 // Cells are indexed (i, j), x fastest; cell (i, j) spans [x0 + i dx, x0 + (i+1) dx] x [...].
 #pragma once
 #include <cstddef>

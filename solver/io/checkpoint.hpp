@@ -1,5 +1,5 @@
 // Reading the restart state that OutputFile::write_checkpoint stored in /checkpoint
-// (DESIGN.md §5): named 1-D double arrays, double scalars, the format version, and the
+// (docs/design.md §5): named 1-D double arrays, double scalars, the format version, and the
 // resolved scene text from the root attribute `scene`.
 #pragma once
 #include <map>

@@ -1,4 +1,4 @@
-// Small derived tables (centre-line profiles, trajectories) as CSV (DESIGN.md §5): comment lines
+// Small derived tables (centre-line profiles, trajectories) as CSV (docs/design.md §5): comment lines
 // beginning with '#' first, then a header naming columns with units ("y [length],u [length/time]"),
 // then one row per index, numbers as %.17g so they read back exactly.
 #pragma once

@@ -1,5 +1,5 @@
 // Small typed HDF5 operations the output uses: scalar attributes (UTF-8 variable-length strings,
-// doubles, integers) and fixed-size double datasets with a `units` attribute (DESIGN.md §5:
+// doubles, integers) and fixed-size double datasets with a `units` attribute (docs/design.md §5:
 // every dataset carries its units). All failures throw InputError naming `file`.
 #pragma once
 #include <hdf5.h>

@@ -1,4 +1,4 @@
-// HDF5 output of one run (output_file.hpp, DESIGN.md §5). Series datasets are chunked and
+// HDF5 output of one run (output_file.hpp, docs/design.md §5). Series datasets are chunked and
 // extendable with fill value NaN, so extending every series by one row and writing only the
 // values given leaves NaN where a row had no value.
 #include "io/output_file.hpp"

@@ -1,4 +1,4 @@
-// The HDF5 output of one run (DESIGN.md §5, the contract other implementations compare against):
+// The HDF5 output of one run (docs/design.md §5, the contract other implementations compare against):
 //   /            attributes ibms_version, git_commit, scene (resolved TOML), start_time (ISO 8601 UTC), host
 //   /grid        attributes nx, ny, length_x, length_y, origin_x, origin_y, periodic_x, periodic_y;
 //                datasets dx, dy, x_centres (nx), y_centres (ny), x_faces (nx+1), y_faces (ny+1)
@@ -59,7 +59,7 @@ class OutputFile {
                         const std::map<std::string, double>& scalars, int format_version);
 
   // Replaces /timing: one 1-element dataset per entry, /timing/<name> = seconds (units "s"), with
-  // an integer attribute `calls` (DESIGN.md §11: every output carries the wall seconds per stage).
+  // an integer attribute `calls` (docs/design.md §11: every output carries the wall seconds per stage).
   struct TimingEntry {
     std::string name;
     double seconds = 0.0;

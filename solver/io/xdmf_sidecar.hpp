@@ -1,4 +1,4 @@
-// XDMF 3 sidecar so ParaView opens the HDF5 snapshots directly (DESIGN.md §5), written by hand
+// XDMF 3 sidecar so ParaView opens the HDF5 snapshots directly (docs/design.md §5), written by hand
 // (libxdmf drags in the MPI build of HDF5). One temporal collection; per snapshot a spatial
 // collection holding a 2DRectMesh on the cell corners (VXVY from /grid/x_faces, /grid/y_faces)
 // with cell-centred attributes, and each body's points as a closed polyline (X_Y geometry).

@@ -1,6 +1,5 @@
 // Body histories: the series CSV `ibms run` writes beside its HDF5 output (<stem>_bodies.csv) and
-// the figures the validation checks and `ibms compare` take from them, one definition each
-// (issue 15 item 3).
+// the figures the validation checks and `ibms compare` take from them, one definition each.
 #pragma once
 #include <map>
 #include <string>

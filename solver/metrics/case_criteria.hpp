@@ -1,7 +1,7 @@
 // The pass criteria of the validation cases, defined once for the case checks
 // (validation/<case>/check*.cpp, validation/common/cavity_check.cpp) and for `ibms compare`
-// (solver/app/compare*.cpp), which gates another code's results by the same numbers (issue 15
-// item 3). Each value's basis is in the case's README.md; docs/compare.md lists them.
+// (solver/app/compare*.cpp), which gates another code's results by the same numbers.
+// Each value's basis is in the case's README.md; docs/compare.md lists them.
 #pragma once
 #include <array>
 #include <string_view>
@@ -9,7 +9,7 @@
 namespace ibms::criteria {
 
 // Lid-driven cavities: max |centre-line velocity - Ghia et al. 1982| over the unflagged points, at
-// the finest validation grid (issue 2 / DESIGN.md §7: 0.01 at Re 100 and 400 on 128^2, 0.02 at
+// the finest validation grid (docs/design.md §7: 0.01 at Re 100 and 400 on 128^2, 0.02 at
 // Re 1000 on 256^2, the level Ghia's own 129^2/257^2 solution allows). `ibms compare` uses the same
 // number against ibms's own 256^2 reference; the two-sided cavity has no published profile and
 // uses the Re 100 value there.
@@ -28,7 +28,7 @@ inline constexpr std::array<CavityCase, 4> cavity_cases{{
 // symmetric scheme (round-off growth measured ~1e-15).
 inline constexpr double cavity_symmetry_tolerance = 1e-10;
 
-// Settling disk (validation/settling_disk/README.md, issue 3 §5): max settling speed within 3 % of
+// Settling disk (validation/settling_disk/README.md): max settling speed within 3 % of
 // the published 5.5 cm/s; the touchdown time is that of the centre reaching y = 0.14 cm.
 inline constexpr double settling_speed_tolerance = 0.03;  // relative
 inline constexpr double settling_touchdown_height = 0.14;  // cm
@@ -49,7 +49,7 @@ inline constexpr double deformable_t_end = 20.0;
 inline constexpr double deformation_ratio_min = 2.0;
 inline constexpr double area_ratio_min = 0.5, area_ratio_max = 1.5;
 
-// DFG cylinder benchmarks (validation/dfg_cylinder_*/README.md, issue 11): 2D-1 c_D within 1 %,
+// DFG cylinder benchmarks (validation/dfg_cylinder_*/README.md): 2D-1 c_D within 1 %,
 // 2D-2 St within 1 % and max c_D within 2 % of the published values.
 inline constexpr double dfg_steady_drag_tolerance = 0.01;  // relative
 inline constexpr double dfg_strouhal_tolerance = 0.01;     // relative

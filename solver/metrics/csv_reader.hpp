@@ -1,4 +1,4 @@
-// The one CSV reader of ibms's tables (issue 15 item 3): `ibms compare`'s input, the validation
+// The one CSV reader of ibms's tables: `ibms compare`'s input, the validation
 // checks' run outputs (<stem>_bodies.csv, centre-line profiles) and the references they compare
 // with (published tables, quantity files, constraints) all go through read_csv.
 //  - '#' comment lines and blank lines are skipped;

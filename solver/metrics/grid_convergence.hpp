@@ -1,5 +1,5 @@
 // Convergence figures, one definition for the verification tests, the validation checks, the
-// benches and `ibms compare` (issue 15 items 3 and 4):
+// benches and `ibms compare`:
 //  - observed_order: least-squares slope of log(error) against log(h) with its standard error
 //    (GSL gsl_fit_linear), over the finest `levels` points;
 //  - grid_convergence: observed order, Richardson-extrapolated value and fine-grid GCI of a scalar

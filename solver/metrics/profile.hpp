@@ -1,5 +1,5 @@
 // Profiles along a line (centre-line velocities, histories): interpolation and extrema by a cubic
-// spline (GSL, natural end conditions) and Brent's minimisation (issue 15 item 4). One definition
+// spline (GSL, natural end conditions) and Brent's minimisation. One definition
 // for the cavity checks, `ibms compare`, the work-precision bench and the accuracy tests.
 //  - interpolation: O(h^4) away from the ends; within a few points of an end the natural end
 //    condition (f'' = 0) adds an O(h^2) error that decays by ~(2 - sqrt 3) per point inward;

@@ -1,6 +1,6 @@
 // The fully resolved scene as TOML (scene_reader.hpp: resolved_scene_toml): every key with its
 // value, defaults included, sections in the documented order. Every run stores this text in its
-// output (DESIGN.md §5), so reading it back must give the same Scene: floats are written with
+// output (docs/design.md §5), so reading it back must give the same Scene: floats are written with
 // the shortest text that round-trips, strings are TOML-escaped.
 #include <fmt/format.h>
 

@@ -1,4 +1,4 @@
-// A validated, typed scene: everything a run needs, with defaults filled in (DESIGN.md §4).
+// A validated, typed scene: everything a run needs, with defaults filled in (docs/design.md §4).
 // scene/scene_reader.cpp builds it from TOML and checks every value once; the rest of the code
 // trusts it. Units: the solver is unit-agnostic, each scene states its system in a comment.
 #pragma once
@@ -24,7 +24,7 @@ struct RunSpec {
   double max_viscous_number = 0.0;
   // Solid sub-steps (sim/body_update.hpp): "per_group" (each group of bodies that may touch within
   // the step takes its own sub-step; contact sub-steps only for a group that may touch something)
-  // or "global" (every body takes the smallest sub-step of all, the first version's scheme).
+  // or "global" (every body takes the smallest sub-step of all).
   std::string solid_substeps = "per_group";
   // A body whose kinetic energy exceeds what the scene can give it (Simulation::body_energy_scale:
   // an unstable spring or contact) stops the run with the blow-up message ("stop") or is reported
@@ -41,7 +41,7 @@ struct DomainSpec {
 struct FluidSpec {
   double density = 1.0;              // rho_f [mass/length^3]
   double kinematic_viscosity = 0.01; // nu [length^2/time]
-  std::array<double, 2> gravity{0.0, 0.0};  // g [length/time^2]; acts on bodies only (METHOD.md §2.6)
+  std::array<double, 2> gravity{0.0, 0.0};  // g [length/time^2]; acts on bodies only (docs/method.md §2.6)
   // Spatial options (fluid/fluid_solver.hpp, FluidSchemes; docs/fluid-accuracy.md): convected face
   // values central | quick, and the viscous wall closure linear | quadratic.
   std::string convection = "central";
@@ -73,7 +73,7 @@ struct IbmSpec {
   int forcing_passes = 1;            // multi-direct forcing passes [-]
   // Which velocity the markers force: "explicit_estimate" (Uhlmann 2005: the explicit estimate
   // u^n + dt(-N + nu L u^n - G p^n), the force then enters the Crank-Nicolson solve) or
-  // "implicit_prediction" (the Crank-Nicolson prediction, force added after it; ibms 0.1).
+  // "implicit_prediction" (the Crank-Nicolson prediction, force added after it).
   std::string forcing_stage = "explicit_estimate";
   std::string inner_fluid_inertia = "kempe";  // kempe (variant K) | none (variant A, papers' literal form)
   bool sub_markers = false;          // extra IB markers when marker spacing exceeds the cell size
@@ -81,7 +81,7 @@ struct IbmSpec {
   // regularised kernel makes the forced body look larger than its rim by a fraction of a cell
   // (validation/dfg_cylinder_2d1/README.md measures it); 0 = markers on the rim [-].
   double marker_retraction = 0.0;
-  // How the forces hold the no-slip condition (docs/method.md, "Coupling"):
+  // How the forces hold the no-slip condition (docs/method.md §3.5, §3.7):
   //  "uhlmann"  Uhlmann (2005): the forcing passes on the explicit estimate, the force then enters
   //             the implicit solve; the implicit solve and the projection leave a slip at the end
   //             of the step that scales with nu dt / h^2 (the papers' scheme);
@@ -101,7 +101,7 @@ struct SwellingSpec {
   double max_diameter = 0.0;         // swelling stops at this diameter [length]
 };
 
-// A body of one of three kinds (DESIGN.md §11), chosen by `kind`:
+// A body of one of three kinds (docs/design.md §11), chosen by `kind`:
 //  mass_spring  the papers' deformable wheel (springs, swelling, sub-steps);
 //  rigid        Newton-Euler translation and rotation of a rigid ring of Lagrangian points;
 //  prescribed   centre X(t) = X0 + V t + A sin(2 pi t / T + phase), angle

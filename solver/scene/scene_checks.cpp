@@ -18,7 +18,7 @@ namespace {
 
 // The adaptive step aims at run.cfl with the velocity of the step before, so the CFL number it
 // reaches exceeds run.cfl a little wherever the flow speeds up; run.max_cfl, the blow-up guard,
-// must sit above it or it stops a sound run (issue 15 item 7: the Re 1000 cavity at cfl = 1 stopped
+// must sit above it or it stops a sound run (the Re 1000 cavity at cfl = 1 would stop
 // at step 1174 with "CFL number 1 exceeds run.max_cfl = 1"). A fixed run.time_step does not use run.cfl.
 void check_run(const RunSpec& run, const SceneDiagnostics& diagnostics) {
   if (run.time_step > 0.0 || run.cfl < run.max_cfl) return;

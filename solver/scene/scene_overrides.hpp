@@ -1,5 +1,5 @@
 // Command-line overrides `--set dotted.key=value` applied to a parsed scene before validation
-// (DESIGN.md §4), so convergence sweeps need no copies of scene files. `bodies.<index>.key`
+// (docs/design.md §4), so convergence sweeps need no copies of scene files. `bodies.<index>.key`
 // addresses one [[bodies]] entry. The value is read as a TOML value, else taken as a string.
 #pragma once
 #include <string>

@@ -1,4 +1,4 @@
-// TOML scene -> validated, typed Scene (DESIGN.md §4). All input checks live here: unknown keys,
+// TOML scene -> validated, typed Scene (docs/design.md §4). All input checks live here: unknown keys,
 // wrong types, missing required keys, values out of range, bodies outside the box or overlapping,
 // an unwritable output directory. Each failure throws InputError with ONE line:
 //   "<file>:<line>:<col>: <key path>: <reason>"  (or "<file>: <key path>: <reason>" without a place).

@@ -1,4 +1,4 @@
-// The scene schema: which sections and keys a scene may contain (DESIGN.md §4). One list serves
+// The scene schema: which sections and keys a scene may contain (docs/design.md §4). One list serves
 // the reader (unknown-key errors), the `--set` overrides (key validation) and the suggestions
 // for misspelt keys, so the three can never disagree. Key names equal the fields in scene.hpp.
 #pragma once

@@ -17,7 +17,7 @@
 // The linear system is solved by a sparse LDL^T factorisation in the natural order (rim points,
 // then the centre: a cyclic band plus one dense border row, little fill), written here so that
 // the symbolic analysis and all storage are made once per body and topology and every later
-// step allocates nothing (DESIGN.md: no allocation inside the step).
+// step allocates nothing (docs/design.md: no allocation inside the step).
 #pragma once
 #include <array>
 #include <utility>

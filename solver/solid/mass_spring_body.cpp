@@ -1,4 +1,4 @@
-// Wheel construction, mass lumping and rim geometry, METHOD.md §1.2, §1.3, §1.5.
+// Wheel construction, mass lumping and rim geometry, docs/method.md §1.2, §1.3, §1.5.
 #include "solid/mass_spring_body.hpp"
 
 #include <cmath>
@@ -33,10 +33,10 @@ void check_wheel_spec(const BodySpec& spec) {
 std::vector<double> lumped_mass_fractions(const std::string& lumping, int n_surface) {
   std::vector<double> fraction(n_surface + 1);
   if (lumping == "equal") {
-    // Guinea et al.: M = rho_s V_s / N with N = N_l + 1 (METHOD.md §1.3).
+    // Guinea et al.: M = rho_s V_s / N with N = N_l + 1 (docs/method.md §1.3).
     for (double& f : fraction) f = 1.0 / (n_surface + 1);
   } else if (lumping == "uniform_disk") {
-    // Mass and moment of inertia of a uniform disk: M_tot/2 at the centre (METHOD.md §1.3).
+    // Mass and moment of inertia of a uniform disk: M_tot/2 at the centre (docs/method.md §1.3).
     for (int l = 0; l < n_surface; ++l) fraction[l] = 0.5 / n_surface;
     fraction[n_surface] = 0.5;
   } else {

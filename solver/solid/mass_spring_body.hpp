@@ -1,4 +1,4 @@
-// A deformable body as a mass-spring network (METHOD.md §1.1-1.3): N_l rim points (the IB
+// A deformable body as a mass-spring network (docs/method.md §1.1-1.3): N_l rim points (the IB
 // markers) plus one centre point joined by spring-dashpot elements listed as data
 // (i, j, k_ij, c_ij, L0_ij). build_wheel makes the ring + spokes (+ optional (l, l+2) cross)
 // topology of §1.2 from a BodySpec. 2D, per unit depth: masses [mass/length], stiffness
@@ -12,7 +12,7 @@
 
 namespace ibms {
 
-// One spring-dashpot element between points i and j (METHOD.md §1.2).
+// One spring-dashpot element between points i and j (docs/method.md §1.2).
 struct Spring {
   int i = 0, j = 0;
   double stiffness = 0.0;        // k_ij [force/length^2 per unit depth]
@@ -20,7 +20,7 @@ struct Spring {
   double natural_length0 = 0.0;  // L0_ij at the initial diameter D0 [length]
 };
 
-// What moves the points (DESIGN.md §11): springs (the papers' model), one rigid motion from
+// What moves the points (docs/design.md §11): springs (the papers' model), one rigid motion from
 // Newton-Euler, or a motion given by the scene (solid/rigid_motion.hpp). Rigid and prescribed
 // bodies carry no springs; a prescribed body is infinitely heavy for contacts.
 enum class BodyKind { mass_spring, rigid, prescribed };
@@ -46,7 +46,7 @@ struct MassSpringBody {
 
   int n_points() const { return static_cast<int>(position.size()); }
   int centre_index() const { return n_surface; }
-  // Swelling factor s = D / D0 [-]; natural lengths are s * L0 (METHOD.md §1.2).
+  // Swelling factor s = D / D0 [-]; natural lengths are s * L0 (docs/method.md §1.2).
   double length_scale() const { return diameter / diameter0; }
   // V_s: the area of the disk of diameter D [length^2 per unit depth]. This (not the area of the
   // inscribed rim polygon, 1.6 % smaller for N_l = 20) is the V_s of M = rho_s V_s / N.
@@ -54,7 +54,7 @@ struct MassSpringBody {
   double total_mass() const;
 };
 
-// Wheel of METHOD.md §1.2 from a scene body: rim points at angles 2 pi l / N_l (counter-clockwise),
+// Wheel of docs/method.md §1.2 from a scene body: rim points at angles 2 pi l / N_l (counter-clockwise),
 // ring springs (l, l+1), spokes (l, c), cross springs (l, l+2) if asked, natural lengths from
 // this regular polygon; all points start with spec.velocity. Masses (§1.3): "equal" gives
 // 1/(N_l+1) of rho_s V_s to every point; "uniform_disk" half to the centre, the rest shared by

@@ -1,4 +1,4 @@
-// Spring-dashpot restitution, damping and contact-time relations, METHOD.md §1.5, A8.
+// Spring-dashpot restitution, damping and contact-time relations, docs/method.md §1.5, A8.
 #include "solid/spring_dashpot.hpp"
 
 #include <cmath>

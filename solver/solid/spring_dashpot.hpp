@@ -1,4 +1,4 @@
-// Linear spring-dashpot relations (METHOD.md §1.5 and appendix A8), shared by the body springs
+// Linear spring-dashpot relations (docs/method.md §1.5 and appendix A8), shared by the body springs
 // and the DEM contacts: for effective mass m_eff and stiffness k,
 //   zeta = -ln e / sqrt(pi^2 + ln^2 e),  c = 2 zeta sqrt(m_eff k),
 //   t_c = pi / omega_d = sqrt(m_eff/k) sqrt(pi^2 + ln^2 e),  delta_max ~ v0 sqrt(m_eff/k).
@@ -10,7 +10,7 @@ namespace ibms {
 // Damping ratio zeta [-] giving restitution e in (0, 1]; e = 1 -> 0.
 double damping_ratio_from_restitution(double restitution);
 
-// Dashpot constant c = 2 zeta sqrt(m_eff k) (METHOD.md §1.5, A8).
+// Dashpot constant c = 2 zeta sqrt(m_eff k) (docs/method.md §1.5, A8).
 double damping_from_restitution(double restitution, double m_eff, double stiffness);
 
 // Inverse: e = exp(-pi zeta / sqrt(1 - zeta^2)) with zeta = c / (2 sqrt(m_eff k)); 0 if zeta >= 1.

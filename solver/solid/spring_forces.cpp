@@ -1,4 +1,4 @@
-// Spring-dashpot forces and elastic energy, METHOD.md §1.2.
+// Spring-dashpot forces and elastic energy, docs/method.md §1.2.
 #include "solid/spring_forces.hpp"
 
 #include <cmath>
@@ -24,7 +24,7 @@ void add_spring_forces(const MassSpringBody& body, double length_scale,
     const double ex = dx / length, ey = dy / length;
     const auto& ui = body.velocity[spring.i];
     const auto& uj = body.velocity[spring.j];
-    // METHOD.md §1.2: tension k (L - s L0) plus dashpot c (U_j - U_i).e, along e.
+    // docs/method.md §1.2: tension k (L - s L0) plus dashpot c (U_j - U_i).e, along e.
     const double separation_rate = (uj[0] - ui[0])*ex + (uj[1] - ui[1])*ey;
     const double tension = spring.stiffness * (length - length_scale*spring.natural_length0) +
                            spring.damping * separation_rate;

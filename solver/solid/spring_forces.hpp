@@ -1,4 +1,4 @@
-// Spring-dashpot forces of a mass-spring body, METHOD.md §1.2: for element (i, j) with
+// Spring-dashpot forces of a mass-spring body, docs/method.md §1.2: for element (i, j) with
 // e = (x_j - x_i)/|x_j - x_i| and natural length s L0 (s = D/D0, swelling),
 //   F_ij = [k (|x_j - x_i| - s L0) + c (U_j - U_i).e] e  on i,   F_ji = -F_ij.
 // Forces per unit depth [force/length]; energies [energy/length].

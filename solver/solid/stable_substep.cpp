@@ -1,4 +1,4 @@
-// Sub-step bound of METHOD.md §5.1/§5.3. Departure from the plain Gershgorin bound of §5.3
+// Sub-step bound of docs/method.md §5.1/§5.3. Departure from the plain Gershgorin bound of §5.3
 // (omega^2 <= max_i sum_j |A_ij|, A = M^-1 K): that bound overestimates omega_max of the wheel
 // by 1.54-1.60x (N_l = 20-70, hub mode), so a step at 3x the safe one would still be stable.
 // Gershgorin applied to D^-1 |A| D is as rigorous for any positive diagonal D, and with D from
@@ -113,7 +113,7 @@ double stable_substep(const MassSpringBody& body, double safety, SpectralWorkspa
   const double gamma = bounds.damping_rate_max;
   const double omega_squared = bounds.omega_squared_max;
   if (gamma == 0.0 && omega_squared == 0.0) return std::numeric_limits<double>::infinity();
-  // METHOD.md §5.1 limit 2 (sqrt(1 + zeta^2) - zeta)/omega, rationalised so omega = 0 is fine;
+  // docs/method.md §5.1 limit 2 (sqrt(1 + zeta^2) - zeta)/omega, rationalised so omega = 0 is fine;
   // the largest gamma and omega may come from different modes, which only makes it smaller.
   return safety * 4.0 / (gamma + std::sqrt(gamma*gamma + 4.0*omega_squared));
 }

@@ -1,4 +1,4 @@
-// Largest stable symplectic-Euler sub-step of a mass-spring body, METHOD.md §5.1 and §5.3:
+// Largest stable symplectic-Euler sub-step of a mass-spring body, docs/method.md §5.1 and §5.3:
 // for a mode omega with damping rate gamma = 2 zeta omega, symplectic Euler is stable for
 //   dt <= 2 (sqrt(1 + zeta^2) - zeta) / omega = 4 / (gamma + sqrt(gamma^2 + 4 omega^2)),
 // with omega_max^2 bounded by a (diagonally scaled) Gershgorin bound of M^-1 K and gamma_max by

@@ -1,4 +1,4 @@
-// Linear swelling schedule and its application to a body, METHOD.md §1.2, §1.8.
+// Linear swelling schedule and its application to a body, docs/method.md §1.2, §1.8.
 #include "solid/swelling_schedule.hpp"
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-// Swelling law of METHOD.md §1.8 (default reading, linear in D): from the scene's SwellingSpec,
+// Swelling law of docs/method.md §1.8 (default reading, linear in D): from the scene's SwellingSpec,
 //   D(t) = clamp(D0 + rate (t - onset), D0, max_diameter),
 // applied to a body by scaling all natural lengths by s = D/D0 (§1.2) and the masses at
 // constant density, M_i = rho_s (pi D^2/4) mass_fraction_i, so M is proportional to s^2.

@@ -1,4 +1,4 @@
-// Symplectic Euler sub-step, METHOD.md §5.1 (stable for omega dt <= 2(sqrt(1+zeta^2) - zeta)).
+// Symplectic Euler sub-step, docs/method.md §5.1 (stable for omega dt <= 2(sqrt(1+zeta^2) - zeta)).
 #include "solid/symplectic_euler.hpp"
 
 #include <stdexcept>

@@ -1,4 +1,4 @@
-// One symplectic (semi-implicit) Euler sub-step of a mass-spring body, METHOD.md §5.1, §5.3:
+// One symplectic (semi-implicit) Euler sub-step of a mass-spring body, docs/method.md §5.1, §5.3:
 //   U^{k+1} = U^k + dt (F_s(x^k, U^k) + F_ext) / M,   x^{k+1} = x^k + dt U^{k+1},
 // springs and dashpots re-evaluated at x^k, U^k with natural lengths s L0 (s = D/D0); the
 // external force per point (fluid reaction, internal-fluid term, contacts, buoyant gravity

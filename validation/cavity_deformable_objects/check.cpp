@@ -1,4 +1,4 @@
-// Check of the one-sided cavity with deformable objects (README.md; issue 4 §3): reads the body
+// Check of the one-sided cavity with deformable objects (README.md): reads the body
 // series of the k = 10 and k = 100 runs and verifies, for each run,
 //   1. it reached end_time (no blow-up: no point left the box, nothing non-finite);
 //   2. the wall contacts keep the bodies in the box: the smallest rim-point distance to a wall

@@ -1,4 +1,4 @@
-// Check of the two-sided cavity with 16 particles (README.md; issue 4 §3): reads the body series
+// Check of the two-sided cavity with 16 particles (README.md): reads the body series
 // of the non-swelling and the swelling run, writes the centre trajectories for
 // t_stop <= t <= t_end as CSV (long format: time, particle, x, y, diameter), and verifies
 //   1. both runs reach t_end (stable: no blow-up);

@@ -1,5 +1,5 @@
 // Check of a lid-driven cavity case against Ghia, Ghia & Shin (1982) and of the antiparallel
-// two-sided cavity against its exact symmetry constraints (DESIGN.md §7). Reads the centre-line
+// two-sided cavity against its exact symmetry constraints (docs/design.md §7). Reads the centre-line
 // CSV files that `ibms run` wrote for three grids (coarse, medium, fine; refinement ratio 2),
 // prints the metric, the grid convergence index of Celik et al. (2008) of the profile extrema,
 // appends a result line to a CSV for the report, and exits non-zero on failure.
@@ -68,7 +68,7 @@ void report_gci(const std::vector<Profiles>& grids, const std::string& results, 
     std::printf("  %-18s coarse %.6f  medium %.6f  fine %.6f  observed order %.2f  extrapolated %.6f  GCI_fine %.3f %%%s\n",
                 q.label, phi[0], phi[1], phi[2], g.order, g.extrapolated, 100 * g.gci_fine,
                 g.monotone ? "" : "  (non-monotone convergence: no order, no GCI)");
-    // Reported, not gated: the GCI estimates our own discretisation error (DESIGN.md §6).
+    // Reported, not gated: the GCI estimates our own discretisation error (docs/design.md §6).
     char metric[160];
     std::snprintf(metric, sizeof metric, "GCI_fine of %s (observed order %.6g)", q.label, g.order);
     validation::append_result_line(results, name, metric, NAN, g.gci_fine, "info");

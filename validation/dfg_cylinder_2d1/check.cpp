@@ -3,7 +3,7 @@
 // and back probes). For each grid it prints the quantities; over the grids (coarse to fine, at least
 // three for a convergence statement) the observed order and the Richardson value by the procedure of
 // Celik et al. (2008, J. Fluids Eng. 130, 078001: non-uniform refinement ratios) and the GCI of the
-// finest grid; then it checks the targets of issue 11 and writes one line per figure to
+// finest grid; then it checks the targets (README.md) and writes one line per figure to
 // $IBMS_VALIDATION_RESULTS.
 //
 // usage: dfg_check steady   <case> <reference.csv> <gates> <cells_per_diameter>:<base> ...

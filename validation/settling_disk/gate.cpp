@@ -1,4 +1,4 @@
-// Quantitative gate of the settling-disk case (issue 10 item 5, README.md): the same disk run as a
+// Quantitative gate of the settling-disk case (README.md): the same disk run as a
 // stiff mass-spring wheel (scene.toml) and as a rigid body (scene_rigid.toml) on the same grids.
 // Claims, each on every grid (no single grid decides):
 //  (1) touchdown time (centre at y = 0.14) within 3 % of the read-off 0.80 s;

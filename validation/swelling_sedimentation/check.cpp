@@ -1,4 +1,4 @@
-// Check of the swelling sedimentation case (README.md; issue 3 §5): reads the body series of the
+// Check of the swelling sedimentation case (README.md): reads the body series of the
 // swelling run and of the non-swelling runs with D = 0.25 and D = 0.30, prints the three metrics,
 // writes the three diameter and velocity histories on the swelling run's times to one CSV, and
 // exits non-zero if a check fails:
@@ -6,7 +6,7 @@
 //   2. after swelling ends and before wall effects (the D = 0.30 disk's gap to the bottom still
 //      > 4 D_max), the swelling run approaches the D = 0.30 run: (a) the largest |v_sw - v_030| / |v_030|
 //      over the second half of the window <= 3 % and (b) the difference at the end of the window is
-//      at most a tenth of the one at its start. (Issue 15: this was one value at the window's end;
+//      at most a tenth of the one at its start. (Not one value at the window's end alone:
 //      over the whole window the largest difference is 3.1 % at n_x = 100, right after swelling
 //      ends, before the disk has adjusted to its new size; it is recorded as information.)
 //   3. bottom arrival (gap centre_y - D/2 <= 0.015 cm): t_030 < t_sw < t_025.

@@ -66,7 +66,7 @@ else
   echo "ok   blow-up: $(cat err.txt)"
 fi
 
-# Output failure (issue 15 item 6): writes past a 40 kB file-size limit fail with EFBIG, as on a full
+# Output failure: writes past a 40 kB file-size limit fail with EFBIG, as on a full
 # disk; the run exits with code 5 (not 2: the input was good), one line naming the file and the
 # system's reason, no crash (HDF5's exit handler is skipped), no stray XDMF temporary.
 rm -f full.*

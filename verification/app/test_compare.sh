@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Claims (issue 5 item 5, docs/compare.md): `ibms compare CASE FILE...` accepts an ibms run's own
+# Claims (docs/compare.md): `ibms compare CASE FILE...` accepts an ibms run's own
 # output (exit 0), rejects a deliberately perturbed copy (exit 1, a FAIL line), and stops on a
 # malformed CSV with exit 2 and one line naming the file and line.
 # usage: test_compare.sh IBMS VALIDATION_DIR

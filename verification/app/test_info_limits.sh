@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Claims (issue 5 item 4): `ibms info` prints every time-step limit (CFL, viscous, marker travel,
+# Claims: `ibms info` prints every time-step limit (CFL, viscous, marker travel,
 # spring period, damping, contact duration) and the solid sub-steps it will use; it warns when a
 # fixed time step exceeds the safe fraction of the CFL limit, and not for the adaptive step; it gives
 # the von Neumann CFL limit at the scene's cell Reynolds number and a note when run.cfl is above it.

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Claims (issue 6 item 3), on verification/sim/restart_scene.toml (bodies, swelling, contacts):
+# Claims, on verification/sim/restart_scene.toml (bodies, swelling, contacts):
 # (1) SIGTERM: the run writes a complete checkpoint and exits with code 4; `ibms run --restart`
 #     from it ends bit-identical (every /checkpoint value) to the run that was never interrupted.
 # (2) SIGINT: the same exit code 4 and a complete checkpoint.

@@ -1,5 +1,5 @@
-// Scenes and helpers for the immersed-boundary verification of rigid and prescribed bodies
-// (issue 10 item 4), built in code. Markers: N_l = round(pi D / h), spacing ~ h (Uhlmann 2005).
+// Scenes and helpers for the immersed-boundary verification of rigid and prescribed bodies,
+// built in code. Markers: N_l = round(pi D / h), spacing ~ h (Uhlmann 2005).
 #pragma once
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-// Circular Couette flow between two concentric prescribed cylinders (issue 10 item 4): the inner
+// Circular Couette flow between two concentric prescribed cylinders: the inner
 // one (radius R1) turns at Omega, the outer one (R2) is fixed, both immersed in a walled box. The
 // steady Navier-Stokes solution in the annulus is u_theta = A r + B / r with
 //   A = -Omega R1^2 / (R2^2 - R1^2),  B = Omega R1^2 R2^2 / (R2^2 - R1^2),  u_r = 0
@@ -10,7 +10,7 @@
 // converge); at a fixed viscous number it is O(h).
 // Expected orders: the regularised kernel spreads the no-slip condition over ~ 3 h, so the discrete
 // boundary sits O(h) away from the true one: first order in both L2 and max norms (Uhlmann 2005;
-// Breugem 2012 reaches ~2 only with retracted markers). Asserted (DESIGN.md §6): slope over the
+// Breugem 2012 reaches ~2 only with retracted markers). Asserted (docs/design.md §6): slope over the
 // finest three >= 1 - 0.1, every pairwise order positive.
 #define BOOST_TEST_MODULE circular_couette
 #include <boost/test/unit_test.hpp>

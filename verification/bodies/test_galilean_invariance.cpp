@@ -1,4 +1,4 @@
-// Galilean invariance of the immersed boundary (issue 10 item 4): a prescribed cylinder moving at
+// Galilean invariance of the immersed boundary: a prescribed cylinder moving at
 // U through fluid at rest in a periodic box, against the same cylinder held fixed in fluid that
 // starts as the uniform stream -U. Seen from the cylinder the two are the same flow, so the
 // hydrodynamic force histories must agree; the discrete solutions differ because in the first the

@@ -1,4 +1,4 @@
-// Rigid bodies in two flows whose answer is known (issue 10 item 4):
+// Rigid bodies in two flows whose answer is known:
 //  (1) a neutrally buoyant rigid disk at rest in fluid at rest, with gravity, stays at rest: the
 //      buoyancy-corrected weight is zero and nothing else may move it (round-off tolerance);
 //  (2) a neutrally buoyant rigid disk (D = 0.2), started at rest at the centre of a prescribed

@@ -1,5 +1,5 @@
 // Convergence bookkeeping shared by verification programs: pairwise observed orders, the
-// least-squares log-log slope over the finest three levels with its standard error (DESIGN.md §6;
+// least-squares log-log slope over the finest three levels with its standard error (docs/design.md §6;
 // metrics::observed_order, GSL's linear fit), and a printed table. When the environment variable
 // IBMS_RESULTS_DIR is set (ctest sets it for every test), each table is also appended to
 // $IBMS_RESULTS_DIR/convergence.csv (title,N,h,error,order,fit_order,fit_standard_error,
@@ -41,8 +41,8 @@ inline double finest_three_slope(const std::vector<double>& h, const std::vector
 // With the order, the tests assert that the finest three errors lie on one line in log-log: the
 // fit's standard error at most 0.1 (pairwise orders differing by more than ~0.35 fail it), so a
 // slope averaged over a kink (not yet asymptotic, or a change of the leading error term) does not
-// pass. It replaced "every pairwise order > 0", which asserted nothing (issue 15 item 1).
-// Measured (ctest -L convergence, issue 15): at most 0.084 (Galilean invariance), 0.072
+// pass (every pairwise order > 0 alone would assert almost nothing).
+// Measured (ctest -L convergence): at most 0.084 (Galilean invariance), 0.072
 // (Taylor-Green), <= 0.033 for the others.
 inline constexpr double max_order_standard_error = 0.1;
 

@@ -72,7 +72,7 @@ BOOST_AUTO_TEST_CASE(a_body_near_the_rim_of_its_prescribed_container_can_touch_i
   BOOST_TEST(contact_possible_within(model(), {container, disk({0.79, 0.5}, 0.2)}, box, 0.01, no_extra));
 }
 
-// Contact groups (issue 12, multi-rate sub-steps): bodies joined through a chain of pairs that may
+// Contact groups (multi-rate sub-steps): bodies joined through a chain of pairs that may
 // touch form one group, whatever the order of the bodies; a group touches if a pair in it or one
 // of its bodies and a wall may; groups are numbered by their lowest body.
 BOOST_AUTO_TEST_CASE(groups_join_chains_of_close_pairs_and_keep_far_bodies_apart) {

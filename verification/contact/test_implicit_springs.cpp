@@ -1,4 +1,4 @@
-// The linearly implicit Euler step of the springs (solid/implicit_euler.hpp, issue 12 item 3).
+// The linearly implicit Euler step of the springs (solid/implicit_euler.hpp).
 // Claims, each a test that a wrong step would fail:
 //  - energy: for one linear spring moving along its axis, each step multiplies the oscillator
 //    energy by exactly 1 / (1 + (omega dt)^2) (backward Euler's factor), stretched or compressed,

@@ -1,4 +1,4 @@
-// The CDS pair search (METHOD.md §1.9): the cell list (bins >= 2 r_max) finds exactly the pairs of
+// The CDS pair search (docs/method.md §1.9): the cell list (bins >= 2 r_max) finds exactly the pairs of
 // the brute-force O(n^2) search, with and without periodic directions, so does the body-box broad
 // phase (the one the contact forces use; its speed is measured in bench/, not here); a scene with one body
 // does no pair search at all (only wall contacts). CDS radii follow the current diameter.

@@ -1,5 +1,5 @@
 // Head-on collisions of two stiff wheels, and of a wheel with a wall, with no fluid rebound with
-// the restitution coefficient e_D of the contact (METHOD.md §1.9, A8), measured on the
+// the restitution coefficient e_D of the contact (docs/method.md §1.9, A8), measured on the
 // centre-of-mass velocities. The wheels are stiff: springs 1000 k_Dn, so the wheel modes are far
 // above the contact frequency sqrt(S k_Dn / m_eff) and the body rebounds as a rigid one (a
 // compliant wheel in series softens the contact, lowers its damping ratio and raises e; the error
@@ -61,7 +61,7 @@ void check_restitution_table(const char* title, CollisionRecord (*run)(double, d
   BOOST_TEST_MESSAGE(title);
   BOOST_TEST_MESSAGE("e_target  e_measured  rel_error  max_active  steps_per_contact");
   using verification::csv_number;
-  const double tolerance = 0.01;  // issue 4: within 1 %
+  const double tolerance = 0.01;  // the target: the measured e within 1 % of e_D
   std::vector<std::string> table, history;
   for (double e : {0.1, 0.5, 0.9}) {
     const CollisionRecord r = run(e, stiff_ratio);
@@ -128,7 +128,7 @@ BOOST_AUTO_TEST_CASE(elastic_collisions_conserve_kinetic_energy) {
   const std::vector<MassSpringBody> single = {pair[0]};
   const CollisionRecord records[2] = {wheel_pair(1.0), wheel_on_wall(1.0)};
   const char* names[2] = {"wheel-wheel", "wheel-wall"};
-  const double tolerance = 1e-3;  // issue 4: within 0.1 % for e = 1
+  const double tolerance = 1e-3;  // the target for e = 1: within 0.1 %
   std::vector<std::string> table;
   using verification::csv_number;
   for (int c = 0; c < 2; ++c) {

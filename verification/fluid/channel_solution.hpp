@@ -1,5 +1,5 @@
 // Manufactured solution for a box with an inflow side (x = 0), an outflow side (x = 1) and walls
-// (y = 0, 1), issue 11 item 3. Stream function psi = A c(t) g(x) h(y) with
+// (y = 0, 1). Stream function psi = A c(t) g(x) h(y) with
 //   h(y) = sin^2(pi y)                 (u = v = 0 on the walls: h = h' = 0 at y = 0, 1),
 //   g(x) = (1 - x)^3 (1 + x)           (g'(1) = g''(1) = 0: du/dx = dv/dx = 0 at the outflow),
 // u = psi_y = A c g h', v = -psi_x = -A c g' h, and the kinematic pressure

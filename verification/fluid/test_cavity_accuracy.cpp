@@ -1,8 +1,8 @@
 // Accuracy per cell of the lid-driven cavity at Re 1000 against the spectral extrema of Botella &
-// Peyret (1998) (issue 13): the largest error of u_min (x = 1/2), v_max and v_min (y = 1/2), each
+// Peyret (1998): the largest error of u_min (x = 1/2), v_max and v_min (y = 1/2), each
 // the extremum of the cubic spline through the profile located by Brent's method
-// (metrics::centreline_extrema; until issue 15 the parabola through the discrete extremum and its
-// neighbours), run to the case's steady criterion at 64^2. Measured with the spline rule (issue 15):
+// (metrics::centreline_extrema; docs/fluid-accuracy.md also gives the figures of the parabola
+// through the discrete extremum and its neighbours), run to the case's steady criterion at 64^2. Measured with the spline rule:
 // central + linear wall closure (the default) 2.877e-2, QUICK 2.079e-2, quadratic wall closure
 // 2.255e-2, both 1.506e-2 (parabola rule, docs/fluid-accuracy.md: 2.81e-2, 2.01e-2, 2.19e-2,
 // 1.44e-2; Basilisk, parabola rule: 1.54e-2). Asserted: each option lowers the error by at least
@@ -71,10 +71,10 @@ BOOST_AUTO_TEST_CASE(quick_convection_and_quadratic_wall_closure_bring_the_re100
   BOOST_TEST(quick <= 0.85 * central);
   BOOST_TEST(wall <= 0.85 * central);
   BOOST_TEST(both <= 0.60 * central);
-  BOOST_TEST(both <= 1.54e-2);  // Basilisk at 64^2 (issue 13's table)
+  BOOST_TEST(both <= 1.54e-2);  // Basilisk at 64^2 (docs/fluid-accuracy.md)
 }
 
-// Issue 13 item 4: the cases' steady criterion (run.steady_tolerance = 1e-5: max|u^{n+1} - u^n| /
+// The cases' steady criterion (run.steady_tolerance = 1e-5: max|u^{n+1} - u^n| /
 // (dt max|u|), the largest velocity change per unit time relative to the largest velocity) does
 // not limit the accuracy: tightened tenfold, the extrema move by less than 1 % of their error.
 BOOST_AUTO_TEST_CASE(the_steady_criterion_does_not_limit_the_cavity_accuracy) {

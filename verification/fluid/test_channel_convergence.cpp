@@ -1,7 +1,7 @@
-// Claims (issue 11 item 3), label convergence:
+// Claims, label convergence:
 //  - with an inflow side (x = 0, velocity data), an outflow side (x = 1: zero normal gradient,
 //    p = 0) and walls, the solver keeps second order in space for u, v and p in the L2 and max
-//    norms (finest-three slope >= 1.9, DESIGN.md §6) on the manufactured solution of
+//    norms (finest-three slope >= 1.9, docs/design.md §6) on the manufactured solution of
 //    channel_solution.hpp, steady and unsteady (t = 1); the pressure, which needs no mean
 //    removal (p = 0 at the outflow fixes it), only >= 1.85 in L2 and first order in the max norm,
 //    because of a layer at the corners where the inflow meets a wall (see mms_study);
@@ -115,9 +115,9 @@ void mms_study(bool steady) {
   // Dirichlet side or with a quadratic pressure ghost at the walls). So the max norm over the whole
   // box is first order (measured slope 1.06 steady, 1.03 unsteady); the L2 norm (1.92 steady, 1.88
   // unsteady) and the max norm farther than 0.25 from those corners (1.87, 1.88) stay below
-  // DESIGN.md §6's 1.9 because the corner error reaches into the box. Asserted at the measured
-  // orders less about 0.03: this is issue 11's "second order in pressure" missed, stated in
-  // docs/open-boundaries.md, not a claim of second order.
+  // docs/design.md §6's 1.9 because the corner error reaches into the box. Asserted at the measured
+  // orders less about 0.03: second order in pressure is missed here, as
+  // docs/open-boundaries.md states, not a claim of second order.
   check_order(kind + "p, L2 norm", grids, h, pl2, 1.85);
   check_order(kind + "p, max norm", grids, h, pmax, 0.95);
   check_order(kind + "p, max norm farther than 0.25 from the inflow-wall corners", grids, h, pmax_away, 1.85);

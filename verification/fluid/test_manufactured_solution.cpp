@@ -1,4 +1,4 @@
-// Claims (METHOD.md A10b, issue 2): with no-slip walls the collocated SMAC solver is second
+// Claims (docs/method.md A10b): with no-slip walls the collocated SMAC solver is second
 // order in space for u, v and p in L2 and max norms (>= 1.9 over four grids), and second order in
 // time for the velocity (>= 1.8) on a fixed fine grid; the pressure at least first order in time.
 #define BOOST_TEST_MODULE manufactured_solution
@@ -102,9 +102,9 @@ void spatial_study(bool steady, FluidSchemes schemes = {}, std::vector<int> grid
     vl2.push_back(r.errors.v_l2); vmax.push_back(r.errors.v_max);
     pl2.push_back(r.errors.p_l2); pmax.push_back(r.errors.p_max);
   }
-  // Velocity and pressure >= 1.9 (formal order 2 minus the 0.1 margin of DESIGN.md §6). METHOD.md
-  // A10b expected O(h^1.5) for p near walls on a collocated grid and issue 2 asserted 1.5; measured
-  // 1.94-1.99 in both norms (issue 15), so the design's rule applies to p as well.
+  // Velocity and pressure >= 1.9 (formal order 2 minus the 0.1 margin of docs/design.md §6). docs/method.md
+  // A10b expects O(h^1.5) for p near walls on a collocated grid; measured 1.94-1.99 in both norms,
+  // so the design's rule applies to p as well.
   const std::string kind = std::string(steady ? "steady MMS, " : "unsteady MMS (t = 1), ") +
                            (schemes.quick_convection ? "QUICK convection, " : "") +
                            (schemes.quadratic_wall ? "quadratic wall closure, " : "");
@@ -167,7 +167,7 @@ BOOST_AUTO_TEST_CASE(velocity_is_second_order_in_time) {
   BOOST_TEST_MESSAGE(verification::convergence_table(
       "velocity, max |u_dt - u_dt/2| at t = 1 on 64^2 (N = steps)", n, h, e, {2.0, 1.8, INFINITY, "dt"}));
   BOOST_TEST(verification::finest_three_fit(h, e).standard_error <= verification::max_order_standard_error);
-  BOOST_TEST(verification::finest_three_slope(h, e) >= 1.8);  // issue 2 target
+  BOOST_TEST(verification::finest_three_slope(h, e) >= 1.8);  // the target: formal order 2 less 0.2
 }
 
 // The same time study for the pressure: max |p_dt - p_dt/2| at t = 1 on 64^2. Expected order 1, not
@@ -175,7 +175,7 @@ BOOST_AUTO_TEST_CASE(velocity_is_second_order_in_time) {
 // rotational form is unstable on this collocated grid), and the standard form's pressure carries a
 // numerical boundary layer that limits it to first order in time (Guermond, Minev & Shen 2006,
 // Comput. Methods Appl. Mech. Engrg. 195:6011, §3.3). Measured: 1.32 / 1.32 / 1.24 pairwise, slope
-// 1.28. Asserted >= 0.9 (expected 1 minus the 0.1 margin of DESIGN.md §6).
+// 1.28. Asserted >= 0.9 (expected 1 minus the 0.1 margin of docs/design.md §6).
 BOOST_AUTO_TEST_CASE(pressure_is_first_order_in_time) {
   std::vector<double> h, e;
   std::vector<int> n;
@@ -198,7 +198,7 @@ BOOST_AUTO_TEST_CASE(pressure_is_first_order_in_time) {
   BOOST_TEST(verification::finest_three_slope(h, e) >= 0.9);
 }
 
-// The spatial options of issue 13 (QUICK convection, quadratic wall closure, fluid_solver.hpp)
+// The spatial options (QUICK convection, quadratic wall closure, fluid_solver.hpp)
 // keep the asserted orders: second order in space for u, v, p (>= 1.9, both norms) and in time
 // for the velocity (>= 1.8). The errors are about half the default's at 128^2 (u max 1.2e-4
 // against 2.4e-4, p max 9.7e-5 against 1.8e-4), but the pressure's max norm approaches its order

@@ -1,4 +1,4 @@
-// Claims (issue 11 items 2-3), label unit:
+// Claims, label unit:
 //  - the FFTW solver with mixed ends (Neumann at one end of a direction, Dirichlet at the other:
 //    DCT-IV / DST-IV) solves (a I + b L) q = r to round-off, for the pressure (outflow = Dirichlet)
 //    and the velocity (outflow = Neumann) problems, with every combination of ends on both axes;

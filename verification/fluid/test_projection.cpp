@@ -1,5 +1,5 @@
 // Claims: after the SMAC projection the face velocities are divergence-free to round-off relative
-// to the divergence before projection (METHOD.md §2.3: the Poisson operator is exactly D G_f),
+// to the divergence before projection (docs/method.md §2.3: the Poisson operator is exactly D G_f),
 // for walls, a moving lid and periodic boundaries; and plane Couette flow driven by a moving wall
 // is a discrete steady solution to round-off (the wall shift of the Helmholtz solve is exact).
 #define BOOST_TEST_MODULE projection
@@ -79,7 +79,7 @@ BOOST_AUTO_TEST_CASE(plane_couette_flow_is_a_discrete_steady_state) {
   BOOST_TEST(error < 1e-13);  // round-off on O(1) values
 }
 
-// The pressure update must stay stable where the compact rotational form of METHOD.md is not
+// The pressure update must stay stable where the compact rotational form of docs/method.md is not
 // (nu dt/h^2 > 1/4, README "Departures"): a checkerboard pressure perturbation at nu dt/h^2 = 10
 // must decay instead of growing by 4 nu dt/h^2 = 40 per step.
 BOOST_AUTO_TEST_CASE(checkerboard_pressure_mode_decays_at_large_viscous_number) {

@@ -1,6 +1,6 @@
 // Claims: the FFTW Poisson/Helmholtz solver agrees with the Eigen CG reference and reproduces
 // discrete manufactured solutions to round-off for wall, periodic and mixed boundaries, and the
-// moving-lid (inhomogeneous Dirichlet) shift of METHOD.md §6 is exact.
+// moving-lid (inhomogeneous Dirichlet) shift of docs/method.md §6 is exact.
 #define BOOST_TEST_MODULE spectral_solver
 #include <boost/test/unit_test.hpp>
 
@@ -111,7 +111,7 @@ BOOST_AUTO_TEST_CASE(singular_poisson_reports_the_removed_rhs_mean) {
 }
 
 // Moving lid: with the ghost rule q_g = 2 u_w - q_int the operator is the homogeneous one plus
-// 2 u_w / h^2 in the wall row (METHOD.md §6); moving that to the rhs gives the exact solution.
+// 2 u_w / h^2 in the wall row (docs/method.md §6); moving that to the rhs gives the exact solution.
 BOOST_AUTO_TEST_CASE(moving_lid_shift_reproduces_inhomogeneous_dirichlet_solution) {
   const Grid g(20, 20, 1.0, 1.0);
   FluidBoundaries bc;

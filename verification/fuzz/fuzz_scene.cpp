@@ -1,4 +1,4 @@
-// libFuzzer target on scene parsing and validation (issue 6 item 5): the input is scene text,
+// libFuzzer target on scene parsing and validation: the input is scene text,
 // optionally preceded by lines "#set key=value" that become --set overrides, fed to
 // read_scene_string (TOML parse, overrides, typed reads, cross-section checks). The claim under
 // test: every input either yields a Scene or throws InputError; anything else (another exception,

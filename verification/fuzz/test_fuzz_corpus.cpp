@@ -1,4 +1,4 @@
-// Regression test of the scene fuzzer (issue 6 item 5): every input kept in the fuzz corpus
+// Regression test of the scene fuzzer: every input kept in the fuzz corpus
 // (seeds/: the validation scenes; corpus/: what the fuzzer found interesting) and every input that
 // once crashed the reader (regressions/) is either accepted or refused with a one-line InputError
 // naming the source; nothing else may escape read_scene_string. Same input format as

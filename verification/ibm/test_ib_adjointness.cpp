@@ -1,4 +1,4 @@
-// Spreading is the adjoint of interpolation, METHOD.md §4 ("S = J*"): with zero wall speeds
+// Spreading is the adjoint of interpolation, docs/method.md §4 ("S = J*"): with zero wall speeds
 // sum_cells (f.u) dx dy == sum_l dV_l F_l.(J u)_l, for random fields, forces and volumes, in
 // the interior, 0.3h from each wall, in the corners, and in periodic boxes (all four kernels).
 #define BOOST_TEST_MODULE ib_adjointness

@@ -1,4 +1,4 @@
-// Moment properties of interpolation and spreading away from walls, METHOD.md §4:
+// Moment properties of interpolation and spreading away from walls, docs/method.md §4:
 // total force sum f h^2 = sum F dV (zeroth moment, all kernels), total torque
 // sum x x f h^2 = sum X x F dV and exact interpolation of linear fields (first moment: all
 // kernels but cosine, whose torque error is printed), plus the direct-forcing helper.
@@ -26,7 +26,7 @@ constexpr double round_off = 1e-13;
 struct Markers { Points position, force; std::vector<double> volume; };
 
 // A ring of 40 markers of radius 0.2 round (0.53, 0.41), h-spaced-ish, random forces; dV from
-// marker_weights (METHOD.md §3.6).
+// marker_weights (docs/method.md §3.6).
 Markers ring_with_random_forces(const Grid& grid) {
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> uniform(-1.0, 1.0);

@@ -1,4 +1,4 @@
-// Claims (issue 15 item 6): a failed write of the output is an OutputError (exit 5 in `ibms run`),
+// Claims: a failed write of the output is an OutputError (exit 5 in `ibms run`),
 // not bad input: the message names the file and the system's reason, no temporary file is left,
 // and an XDMF sidecar written before stays as it was. The failure is provoked without privileges by
 // a file-size limit (RLIMIT_FSIZE, SIGXFSZ ignored): writes past it fail with EFBIG, as they would

@@ -1,4 +1,4 @@
-// The output file format (DESIGN.md §5): a tiny run (4 x 3 grid, one body of 5 points) with
+// The output file format (docs/design.md §5): a tiny run (4 x 3 grid, one body of 5 points) with
 // three series rows, two snapshots and two checkpoints is written to a temporary directory,
 // reopened with the HDF5 C API and checked dataset by dataset. Format, not physics.
 #define BOOST_TEST_MODULE output_format

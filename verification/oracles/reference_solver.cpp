@@ -1,4 +1,4 @@
-// Eigen sparse assembly of the 5-point operator with ghost rules (METHOD.md §2.5, §6) and CG.
+// Eigen sparse assembly of the 5-point operator with ghost rules (docs/method.md §2.5, §6) and CG.
 #include "oracles/reference_solver.hpp"
 
 #include <Eigen/IterativeLinearSolvers>

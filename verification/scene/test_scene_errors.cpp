@@ -1,4 +1,4 @@
-// Bad scenes are rejected with ONE line naming the file, the key and the reason (STYLE.md §8).
+// Bad scenes are rejected with ONE line naming the file, the key and the reason (docs/design.md §4).
 // A data-driven table: each row is a valid scene (scene_fixture.hpp) spoiled in one way.
 #define BOOST_TEST_MODULE scene_errors
 #include <boost/test/unit_test.hpp>
@@ -159,7 +159,7 @@ BOOST_AUTO_TEST_CASE(error_points_at_line_and_column_of_the_bad_value) {
 }
 
 BOOST_AUTO_TEST_CASE(adaptive_cfl_not_below_max_cfl_names_both_keys_and_a_fixed_step_is_accepted) {
-  // Issue 15 item 7: with the adaptive step, run.cfl >= run.max_cfl would let the guard stop a sound run.
+  // With the adaptive step, run.cfl >= run.max_cfl would let the guard stop a sound run.
   std::string message;
   try {
     ibms::read_scene_string(good_scene_with("end_time = 2.5", "end_time = 2.5\ncfl = 1.2\nmax_cfl = 1.0"), source_name);

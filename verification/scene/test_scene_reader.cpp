@@ -200,7 +200,7 @@ BOOST_AUTO_TEST_CASE(mutated_scenes_throw_nothing_but_input_error) {
   BOOST_TEST(n_rejected > 0);
 }
 
-// Open sides (issue 11): every side kind with its keys, the inflow's time factors, and the probes
+// Open sides: every side kind with its keys, the inflow's time factors, and the probes
 // read back from the resolved text to equal values; the sides are as written.
 BOOST_AUTO_TEST_CASE(open_sides_and_probes_read_back_to_equal_values) {
   for (const char* factor : {"time_factor = \"sinusoidal\"\nfactor_offset = 1.0\nfactor_amplitude = 0.25\nfactor_period = 0.3",

@@ -1,4 +1,4 @@
-// Blow-up detection (issue 6 item 2): non-finite values, a CFL number beyond run.max_cfl and a
+// Blow-up detection: non-finite values, a CFL number beyond run.max_cfl and a
 // body point leaving the box are each reported by check_for_blow_up with step, time, quantity and
 // place; run_simulation stops in the very step where a point leaves the box, and the series
 // written before that step stay readable.
@@ -149,7 +149,7 @@ BOOST_AUTO_TEST_CASE(run_stops_in_the_step_where_a_point_leaves_the_box) {
   BOOST_TEST(rows == static_cast<hsize_t>(reported_step - 1));
 }
 
-// A rigid disk carried by a channel flow towards the outflow (issue 11): the run stops, naming the
+// A rigid disk carried by a channel flow towards the outflow: the run stops, naming the
 // body and the side, as soon as a rim point comes within 3 cells of the open side, before the
 // kernel would reach across it.
 BOOST_AUTO_TEST_CASE(body_reaching_an_outflow_stops_the_run_with_the_side_named) {

@@ -1,4 +1,4 @@
-// Momentum of fluid plus bodies in a periodic box without walls or gravity (issue 3 §4):
+// Momentum of fluid plus bodies in a periodic box without walls or gravity:
 // a wheel launched at (1, 0.5) into fluid at rest. Every force is internal: springs cancel in
 // pairs, spreading conserves the total force (sum f h^2 = sum F dV), the fluid reaction is its
 // negative, and the periodic predictor and projection conserve sum u h^2. So

@@ -1,6 +1,6 @@
-// Multi-rate solid sub-steps (issue 12, sim/body_update.hpp): with run.solid_substeps = "per_group"
+// Multi-rate solid sub-steps (sim/body_update.hpp): with run.solid_substeps = "per_group"
 // each group of bodies that may touch within the step takes its own sub-step, and only a group that
-// may touch something takes the contact sub-step. Claims tested against the first version's global
+// may touch something takes the contact sub-step. Claims tested against the global
 // sub-step ("global", every body at the smallest sub-step of all) on one scene where a contact
 // begins inside a fluid step: two wheels collide head-on while a third, far away, never touches.
 //  - the contact is caught in time: the deepest overlap is within 2 % of the global run's;

@@ -1,4 +1,4 @@
-// No allocation inside the step (DESIGN.md §9, issue 12 item 1): after a warm-up, during which work
+// No allocation inside the step (docs/design.md §9): after a warm-up, during which work
 // arrays reach their size (contacts have begun, triangle overlaps settled), further fluid steps with
 // bodies, swelling, DEM contacts, rigid and prescribed bodies call operator new zero times, and so
 // does the run loop's control-volume force of every body around each step. The global operator new
@@ -71,7 +71,7 @@ BOOST_AUTO_TEST_CASE(mass_spring_bodies_with_swelling_and_contacts_step_without_
 
 BOOST_AUTO_TEST_CASE(implicit_springs_and_global_substeps_step_without_allocating) {
   // The same scene with the springs' implicit step (its LDL^T storage is made once per body) and
-  // with the first version's global sub-steps.
+  // with global sub-steps (run.solid_substeps = "global").
   BOOST_TEST(allocations_in_steps(IBMS_SCENE_MASS_SPRING, 100, 150,
                                   {"bodies.0.spring_integrator=implicit", "bodies.1.spring_integrator=implicit"}) == 0);
   BOOST_TEST(allocations_in_steps(IBMS_SCENE_MASS_SPRING, 100, 150, {"run.solid_substeps=global"}) == 0);

@@ -1,4 +1,4 @@
-// A swelling disk at rest in quiescent fluid without gravity (METHOD.md §1.8, §8 item 6; issue 3 §5).
+// A swelling disk at rest in quiescent fluid without gravity (docs/method.md §1.8, §8 item 6).
 // With the forcing target U_target = U_l - (s'/s)(X_l - X_c) the fluid is forced only by what the
 // wheel's motion departs from a uniform dilation: a perfectly homothetic swelling has target 0 and
 // leaves the fluid at rest exactly. The direct forcing drives the fluid near the markers towards the

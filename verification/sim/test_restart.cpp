@@ -1,4 +1,4 @@
-// Restart (issue 6 item 3): a run stopped at step M and continued with --restart from its
+// Restart: a run stopped at step M and continued with --restart from its
 // /checkpoint ends bit-identical to the run that never stopped, with bodies, swelling and DEM
 // contacts active; the checkpoint's format version, scene and sizes are checked by the reader.
 #define BOOST_TEST_MODULE restart
@@ -153,7 +153,7 @@ BOOST_AUTO_TEST_CASE(restarted_run_with_the_no_slip_coupling_ends_bit_identical)
   BOOST_TEST(n_different_values(dir.file("whole.h5"), dir.file("rest.h5")) == 0u);
 }
 
-// Issue 13 item 3: at a fixed thread count of 2 (threaded loops and FFTs, body groups on two
+// At a fixed thread count of 2 (threaded loops and FFTs, body groups on two
 // threads) the restart is bit-identical as well.
 BOOST_AUTO_TEST_CASE(restarted_run_at_two_threads_ends_bit_identical) {
   ibms::set_thread_count(2);

@@ -1,4 +1,4 @@
-// A scene pays only for what it uses (DESIGN.md §3, issue 5 item 3), structurally: the pipeline of
+// A scene pays only for what it uses (docs/design.md §3), structurally: the pipeline of
 // a fluid-only scene holds no body stage and its timers record no body work; a one-body scene with
 // contacts evaluates wall contacts but lists no pair search and examines no CDS pair; two bodies do.
 // (The per-step cost figures are measured by bench/bench_overhead.cpp, not asserted here.)
@@ -66,7 +66,7 @@ BOOST_AUTO_TEST_CASE(two_body_scene_searches_pairs) {
   scene.bodies[0].centre = {0.35, 0.5};
   scene.bodies.push_back(scene.bodies[0]);
   scene.bodies[1].centre = {0.65, 0.5};
-  {  // global sub-steps (the first version): the pair search runs every sub-step
+  {  // global sub-steps: the pair search runs every sub-step
     scene.run.solid_substeps = "global";
     Simulation sim(scene);
     BOOST_TEST(lists_stage(sim, "pair search"));
@@ -74,7 +74,7 @@ BOOST_AUTO_TEST_CASE(two_body_scene_searches_pairs) {
     BOOST_TEST(sim.total_pair_checks > 0);
   }
   {  // per group (default): bodies 0.1 apart cannot touch within a step, so each is a group of
-     // one and no pair is searched (issue 12)
+     // one and no pair is searched
     scene.run.solid_substeps = "per_group";
     Simulation sim(scene);
     run_steps(sim, 5, 0.005);

@@ -1,4 +1,4 @@
-// Sub-markers (ibm.sub_markers, METHOD.md §3.6, an extension off by default): with N_l = 21
+// Sub-markers (ibm.sub_markers, docs/method.md §3.6, an extension off by default): with N_l = 21
 // rim points on a disk of diameter 0.25 in a 64^2 box the rim spacing is 2.3 h, so the markers
 // alone leave gaps the fluid leaks through. Claims, each asserted:
 //   1. every rim edge is split into ceil(|e|/h) pieces: marker spacing <= h, also after swelling;

@@ -1,10 +1,10 @@
-// Both cores (issue 13): the fluid's cell loops and FFTs on 1 and on 2 threads give the same run.
+// Both cores: the fluid's cell loops and FFTs on 1 and on 2 threads give the same run.
 // Each parallel loop writes every cell from one thread and its only reductions are maxima (exact in
 // any order); FFTW's threaded plans may split a transform differently, so the two runs are
 // compared to round-off (1e-12 of the largest value) rather than bit for bit. One lid-driven
 // cavity (fluid only, 64^2, 60 steps) and one scene with bodies, contacts and swelling
 // (verification/sim/restart_scene.toml, 150 steps: contacts from step 34; the two wheels are two
-// body groups until then, advanced on two threads at once, issue 12 item 4: bitwise the same).
+// body groups until then, advanced on two threads at once: bitwise the same).
 #define BOOST_TEST_MODULE threads
 #include <boost/test/unit_test.hpp>
 

@@ -1,4 +1,4 @@
-// Every run's output carries /timing (DESIGN.md §11, issue 12 item 4): the wall seconds and calls
+// Every run's output carries /timing (docs/design.md §11): the wall seconds and calls
 // of each pipeline stage and of the whole run, so a user sees where the time of their scene went.
 #define BOOST_TEST_MODULE timing_output
 #include <boost/test/unit_test.hpp>

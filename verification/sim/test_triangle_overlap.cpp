@@ -1,5 +1,5 @@
 // The exact triangle-cell overlaps of ibm/triangle_cell_overlap (used for the inner-fluid
-// momentum of METHOD.md §1.7, variant K): for every triangle the overlaps add up to its area,
+// momentum of docs/method.md §1.7, variant K): for every triangle the overlaps add up to its area,
 // and over a fan (c, l, l+1) to the polygon's area, to round-off, in the interior, across a
 // periodic boundary and for both orientations.
 #define BOOST_TEST_MODULE triangle_overlap

@@ -1,5 +1,5 @@
-// A run whose body goes unstable stops with a clear message instead of writing NaN (issue 5
-// item 4): a stiff wheel advanced with one solid step per fluid step (fixed_solid_substeps = 1,
+// A run whose body goes unstable stops with a clear message instead of writing NaN: a
+// stiff wheel advanced with one solid step per fluid step (fixed_solid_substeps = 1,
 // dt far above its stable sub-step) through run_simulation throws BlowUpError naming step, time,
 // body, point and position, and every value of the body series written up to then is finite.
 // With the automatic sub-steps the same scene runs to its end, and so it does with
@@ -86,8 +86,8 @@ BOOST_AUTO_TEST_CASE(automatic_substeps_run_the_same_scene_to_its_end) {
   std::filesystem::remove_all(dir);
 }
 
-// The instability guard of issue 12 item 5 on the collision of bench_stability that used to run to
-// its end unflagged: two wheels approaching at 5 cm/s each, contact stiffness 1e3, fluid step
+// The instability guard on the collision of bench_stability that an unguarded run takes to its
+// end unflagged: two wheels approaching at 5 cm/s each, contact stiffness 1e3, fluid step
 // 3e-3 s with one explicit solid step per fluid step. The contact returns more energy than it
 // received (restitution > 1): the run stops naming it; with run.on_body_instability = "warn" it
 // goes on; with automatic sub-steps the contact work stays <= 0 up to its integration error.

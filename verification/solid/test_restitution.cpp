@@ -1,5 +1,5 @@
 // Two mass points meeting through a linear spring-dashpot contact that acts only while they
-// overlap (DEM-like, METHOD.md §1.9) rebound with the restitution coefficient the dashpot was
+// overlap (DEM-like, docs/method.md §1.9) rebound with the restitution coefficient the dashpot was
 // built for: c = 2 zeta sqrt(m_eff k), zeta = -ln e / sqrt(pi^2 + ln^2 e) (§1.5, A8). The force is
 // not clipped to stay repulsive (A8 caveat: clipping changes the realised e).
 #define BOOST_TEST_MODULE restitution
@@ -50,7 +50,7 @@ Collision collide(double target_restitution) {
     const double overlap = contact_distance - gap;
     force[0] = force[1] = {0.0, 0.0};
     if (overlap > 0.0) {
-      // F on point 0 = -(k delta - c v_n) n, n = +x, v_n = U_1 - U_0 (METHOD.md §1.9).
+      // F on point 0 = -(k delta - c v_n) n, n = +x, v_n = U_1 - U_0 (docs/method.md §1.9).
       const double normal_rate = pair.velocity[1][0] - pair.velocity[0][0];
       const double push = stiffness*overlap - damping*normal_rate;
       force[0][0] = -push;
@@ -105,6 +105,6 @@ BOOST_AUTO_TEST_CASE(restitution_and_damping_relations_are_inverse) {
     const double c = damping_from_restitution(e, 0.7, 3e5);
     BOOST_TEST(std::abs(restitution_from_damping(c, 0.7, 3e5) - e) <= 1e-14);  // round-off
   }
-  // METHOD.md §1.5: e = 0.5 -> zeta = 0.2155 (4 digits quoted).
+  // docs/method.md §1.5: e = 0.5 -> zeta = 0.2155 (4 digits quoted).
   BOOST_TEST(std::abs(damping_ratio_from_restitution(0.5) - 0.2155) <= 5e-5);
 }

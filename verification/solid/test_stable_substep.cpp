@@ -1,4 +1,4 @@
-// stable_substep (METHOD.md §5.1, §5.3) is meaningful: a wheel integrated at the returned
+// stable_substep (docs/method.md §5.1, §5.3) is meaningful: a wheel integrated at the returned
 // sub-step (safety 0.5) stays bounded, and at 3x that step it blows up. The bound on omega_max
 // is also compared with the exact largest eigenvalue of M^-1 K (Eigen) in the log.
 #define BOOST_TEST_MODULE stable_substep

@@ -1,5 +1,5 @@
 // An undamped wheel (N_l = 20, k = 1e3) released from an elliptic deformation, integrated with
-// symplectic Euler (METHOD.md §5.1) for 1000 periods T = 2 pi sqrt(M/k): the energy error is
+// symplectic Euler (docs/method.md §5.1) for 1000 periods T = 2 pi sqrt(M/k): the energy error is
 // bounded (no drift) and first order in the sub-step. Why first order: symplectic Euler exactly
 // conserves a modified energy H~ = H + O(dt) (backward error analysis, Hairer, Lubich & Wanner
 // 2006, ch. IX; for one mode H~ = H - (dt/2) omega^2 x v), so |H - H0|/H0 stays bounded but is

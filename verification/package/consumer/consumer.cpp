@@ -1,5 +1,5 @@
 // Uses the installed ibms package the way another code would: a delta-kernel moment (sum of the
-// weights and first moment of every kernel over marker offsets, METHOD.md §4) and a Poisson solve
+// weights and first moment of every kernel over marker offsets, docs/method.md §4) and a Poisson solve
 // L q = r with homogeneous Dirichlet walls by the FFTW solver, against q = sin(pi x) sin(pi y)
 // (second order: error ratio ~4 between 32^2 and 64^2). Exit 0 when both hold, 1 otherwise.
 #include <algorithm>
