@@ -1,4 +1,4 @@
-// Ghost-cell fills for the collocated grid (METHOD.md §2.5; walls as CaNS src/bound.f90; open sides
+// Ghost-cell fills for the collocated grid (docs/method.md §2.5; walls as CaNS src/bound.f90; open sides
 // issue 11). Rules in boundary_conditions.hpp.
 #include "fluid/boundary_conditions.hpp"
 

@@ -1,4 +1,4 @@
-// SMAC projection with momentum interpolation on a collocated grid: METHOD.md §2.3, §2.5, §6.
+// SMAC projection with momentum interpolation on a collocated grid: docs/method.md §2.3, §2.5, §6.
 #include "fluid/fluid_solver.hpp"
 
 #include <algorithm>
@@ -197,7 +197,7 @@ void FluidSolver::complete_prediction(FluidState& state, double dt) {
       star_y_(i, j) -= 0.5 * dt * nu_ * lap_y_(i, j);
     }
   // Boundary velocities at t^{n+1} in the implicit half: the row of L next to a Dirichlet side
-  // (wall, inflow) is the homogeneous row plus 2 u_b / h^2 (METHOD.md §6, inhomogeneous
+  // (wall, inflow) is the homogeneous row plus 2 u_b / h^2 (docs/method.md §6, inhomogeneous
   // Dirichlet), moved to the rhs; an outflow's zero-gradient row is homogeneous.
   const double t_new = state.time + dt;
   const double cx = 0.5 * nu_ * dt * 2.0 / (grid_.dx() * grid_.dx());
@@ -264,7 +264,7 @@ ProjectionStats FluidSolver::project_smac(FluidState& state, double dt) {
 ProjectionStats FluidSolver::project(FluidState& state, double dt, const FaceForcing* forcing) {
   ProjectionStats stats;
   const double inv_dx = 1.0 / grid_.dx(), inv_dy = 1.0 / grid_.dy();
-  // Momentum interpolation (METHOD.md §2.3 step 3): remove the wide gradient of p^n from the
+  // Momentum interpolation (docs/method.md §2.3 step 3): remove the wide gradient of p^n from the
   // cell velocity, average to the face, add the compact face gradient back.
   //   U*_{i-1/2} = mean(u* + dt G_c p^n) - dt (p_i - p_{i-1})/dx
   // With a FaceForcing, the force's cell increment is taken out of u* before the mean and its face
@@ -310,7 +310,7 @@ ProjectionStats FluidSolver::project(FluidState& state, double dt, const FaceFor
   sync_periodic_faces(grid_, star_face_x_, star_face_y_);
   stats.max_divergence_before = max_abs_divergence(grid_, star_face_x_, star_face_y_);
 
-  // METHOD.md §2.3 step 4: L_c phi = D U* / dt, pure Neumann (mean removed) or periodic.
+  // docs/method.md §2.3 step 4: L_c phi = D U* / dt, pure Neumann (mean removed) or periodic.
   divergence(grid_, star_face_x_, star_face_y_, 1.0 / dt, buffer_.data());
   stats.removed_mean = poisson_->solve(/*a=*/0.0, /*b=*/1.0, buffer_.data(), buffer_.data()).removed_mean;
   phi_.copy_interior_from(buffer_.data());

@@ -1,11 +1,11 @@
-// Collocated-grid SMAC fluid solver (METHOD.md §2.3): AB2 convection with the face velocities,
+// Collocated-grid SMAC fluid solver (docs/method.md §2.3): AB2 convection with the face velocities,
 // Crank-Nicolson diffusion by a direct DST Helmholtz solve, momentum interpolation to faces,
 // DCT/FFT Poisson solve for the pressure correction, face velocities divergence-free to round-off.
-// Pressure update: the standard incremental form p^{n+1} = p^n + phi. METHOD.md's rotational
+// Pressure update: the standard incremental form p^{n+1} = p^n + phi. docs/method.md's rotational
 // form p^n + phi - (nu dt/2) L_c phi is unstable on this collocated grid once nu dt/h^2 > 1/4:
 // the checkerboard pressure mode is invisible to the cell-centre gradient, so the predictor never
 // damps it while L_c amplifies it by 4 nu dt/h^2 per step (von Neumann analysis in
-// README.md, "Departures from METHOD.md"). The standard form is unconditionally stable and
+// docs/method.md §2.3). The standard form is unconditionally stable and
 // measured second order for p in space and time on the manufactured solution.
 // Pressure is kinematic (p / rho_f) [length^2/time^2]; forcing terms are accelerations.
 // The step is split so the immersed boundary can act between the stages:
@@ -94,14 +94,14 @@ class FluidSolver {
   // they are divergence-free; the cell velocities get the same correction. Pressure untouched.
   void initialise_faces(FluidState& state);
 
-  // METHOD.md §2.3 step 1: (u~ - u^n)/dt = -AB2(N) + nu L (u~ + u^n)/2 - G_c p^n + f^{n+1/2}.
+  // docs/method.md §2.3 step 1: (u~ - u^n)/dt = -AB2(N) + nu L (u~ + u^n)/2 - G_c p^n + f^{n+1/2}.
   // force_x/force_y (accelerations at t^{n+1/2}) may be null. Result in velocity_star_x/y.
   // Only the ghost layers of `state` are written (they are scratch).
   void predict_momentum(FluidState& state, double dt, const CellField* force_x,
                         const CellField* force_y);
 
   // The same prediction in two halves, so that the immersed boundary can force the explicit
-  // estimate and its force enter the implicit solve (Uhlmann 2005 steps 1-5, METHOD.md §3.1):
+  // estimate and its force enter the implicit solve (Uhlmann 2005 steps 1-5, docs/method.md §3.1):
   //   predict_explicit: velocity_star = u~_e = u^n + dt (-N_ext + nu L u^n - G_c p^n);
   //   [the caller adds dt f to velocity_star];
   //   complete_prediction: velocity_star = (I - nu dt L/2)^-1 (velocity_star - nu dt L u^n / 2 + walls),
@@ -113,7 +113,7 @@ class FluidSolver {
   CellField& velocity_star_x() { return star_x_; }
   CellField& velocity_star_y() { return star_y_; }
 
-  // METHOD.md §2.3 steps 3-5: momentum interpolation, L phi = D U*/dt, corrections of U_f, u, p.
+  // docs/method.md §2.3 steps 3-5: momentum interpolation, L phi = D U*/dt, corrections of U_f, u, p.
   // Writes the fields of level n+1 into `state`; its clock stays at t^n until end_step.
   // forcing: a force in u* that the faces take in the balanced form (FaceForcing), or null.
   ProjectionStats project(FluidState& state, double dt, const FaceForcing* forcing = nullptr);

@@ -1,4 +1,4 @@
-// Finite-volume operators of METHOD.md §2.2 (compact Laplacian, conservative convection with face
+// Finite-volume operators of docs/method.md §2.2 (compact Laplacian, conservative convection with face
 // velocities, wide centre gradient, face divergence). Loops run x fastest over contiguous rows;
 // rows are shared among the OpenMP threads (fluid/threads.hpp), each cell written by one thread.
 #include "fluid/operators.hpp"
@@ -24,7 +24,7 @@ void convection(const Grid& grid, const FaceField& velocity_face_x, const FaceFi
   IBMS_PARALLEL_ROWS
   for (int j = 0; j < grid.ny; ++j)
     for (int i = 0; i < grid.nx; ++i) {
-      // METHOD.md §2.2: (1/h)[U_{i+1/2} (q_{i+1}+q_i)/2 - U_{i-1/2} (q_i+q_{i-1})/2 + y-faces]
+      // docs/method.md §2.2: (1/h)[U_{i+1/2} (q_{i+1}+q_i)/2 - U_{i-1/2} (q_i+q_{i-1})/2 + y-faces]
       const double flux_east = velocity_face_x(i + 1, j) * 0.5 * (q(i + 1, j) + q(i, j));
       const double flux_west = velocity_face_x(i, j) * 0.5 * (q(i, j) + q(i - 1, j));
       const double flux_north = velocity_face_y(i, j + 1) * 0.5 * (q(i, j + 1) + q(i, j));

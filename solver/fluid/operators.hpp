@@ -1,4 +1,4 @@
-// Second-order finite-volume operators on the collocated grid (METHOD.md §2.2). Cell inputs
+// Second-order finite-volume operators on the collocated grid (docs/method.md §2.2). Cell inputs
 // must have their ghost layer filled (fluid/boundary_conditions.hpp); outputs are interior only.
 // Face fields: x-faces (nx+1) x ny, y-faces nx x (ny+1) (core/fields.hpp).
 #pragma once
@@ -11,7 +11,7 @@ namespace ibms {
 void laplacian(const Grid& grid, const CellField& q, CellField& out);
 
 // Conservative convection with the face velocities: div(U_f q) with q interpolated to faces by
-// the arithmetic mean (central, METHOD.md §2.2) [q/time].
+// the arithmetic mean (central, docs/method.md §2.2) [q/time].
 void convection(const Grid& grid, const FaceField& velocity_face_x, const FaceField& velocity_face_y,
                 const CellField& q, CellField& out);
 

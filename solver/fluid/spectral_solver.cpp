@@ -1,4 +1,4 @@
-// FFTW real-to-real Poisson/Helmholtz solver (METHOD.md §6; transform kinds and eigenvalues as in
+// FFTW real-to-real Poisson/Helmholtz solver (docs/method.md §6; transform kinds and eigenvalues as in
 // CaNS src/initsolver_eigenvalues-inc.f90 and src/fft.f90).
 #include "fluid/spectral_solver.hpp"
 #include "fluid/threads.hpp"

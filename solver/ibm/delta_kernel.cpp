@@ -1,4 +1,4 @@
-// Regularised delta functions of METHOD.md §4 / A9; formulas copied term by term from A9.
+// Regularised delta functions of docs/method.md §4 / A9; formulas copied term by term from A9.
 #include "ibm/delta_kernel.hpp"
 
 #include <cmath>
@@ -7,7 +7,7 @@
 namespace ibms {
 namespace {
 
-// Roma, Peskin & Berger (1999), JCP 153:509, 3-point kernel (METHOD.md A9).
+// Roma, Peskin & Berger (1999), JCP 153:509, 3-point kernel (docs/method.md A9).
 double roma3_phi(double r) {
   const double a = std::abs(r);
   if (a <= 0.5) return (1.0 + std::sqrt(1.0 - 3.0*a*a)) / 3.0;
@@ -18,7 +18,7 @@ double roma3_phi(double r) {
   return 0.0;
 }
 
-// Peskin (2002), Acta Numerica 11:479, standard 4-point kernel (METHOD.md A9).
+// Peskin (2002), Acta Numerica 11:479, standard 4-point kernel (docs/method.md A9).
 double peskin4_phi(double r) {
   const double a = std::abs(r);
   if (a <= 1.0) return (3.0 - 2.0*a + std::sqrt(1.0 + 4.0*a - 4.0*a*a)) / 8.0;
@@ -26,14 +26,14 @@ double peskin4_phi(double r) {
   return 0.0;
 }
 
-// Cosine 4-point kernel (METHOD.md A9); not first-moment exact.
+// Cosine 4-point kernel (docs/method.md A9); not first-moment exact.
 double cosine4_phi(double r) {
   const double a = std::abs(r);
   if (a <= 2.0) return 0.25 * (1.0 + std::cos(0.5 * M_PI * a));
   return 0.0;
 }
 
-// Bao, Kaiser & Peskin (2016) 6-point kernel, IBAMR ib_6_delta_fcn (METHOD.md A9): for
+// Bao, Kaiser & Peskin (2016) 6-point kernel, IBAMR ib_6_delta_fcn (docs/method.md A9): for
 // rl in [0, 1) returns w[0..5], the weights of the nodes at distances rl - 3, ..., rl + 2.
 std::array<double, 6> bkp6_weights(double rl) {
   const double K = bkp6_second_moment();

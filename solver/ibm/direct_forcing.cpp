@@ -1,4 +1,4 @@
-// F_l = (U_target_l - U_interp_l) / dt, Uhlmann (2005) eq. (14), METHOD.md §3.1 step 3.
+// F_l = (U_target_l - U_interp_l) / dt, Uhlmann (2005) eq. (14), docs/method.md §3.1 step 3.
 #include "ibm/direct_forcing.hpp"
 
 #include <stdexcept>

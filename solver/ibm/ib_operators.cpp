@@ -1,4 +1,4 @@
-// Interpolation and spreading with wall mirroring, METHOD.md §3.1, §4 (see ib_operators.hpp).
+// Interpolation and spreading with wall mirroring, docs/method.md §3.1, §4 (see ib_operators.hpp).
 // Per marker and direction the kernel weights are computed once (kernel_stencil) and each node
 // is mapped to the interior cell it reads/writes, with the side of the wall it mirrors across.
 #include "ibm/ib_operators.hpp"

@@ -1,5 +1,5 @@
 // Interpolation J (grid -> markers) and spreading S = J* (markers -> grid) of the direct-forcing
-// IB method, METHOD.md §3.1 steps 2 and 4 and §4 ("Weights, adjointness, conservation"):
+// IB method, docs/method.md §3.1 steps 2 and 4 and §4 ("Weights, adjointness, conservation"):
 //   U_l = sum_x u(x) delta_h(x - X_l) dx dy,   f(x) += sum_l F_l delta_h(x - X_l) dV_l,
 // on cell-centred (collocated) velocity components; only interior cell values are read/written.
 // Walls: stencil cells beyond a wall are mirrored onto interior cells with the no-slip ghost

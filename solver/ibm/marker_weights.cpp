@@ -1,4 +1,4 @@
-// Marker volume weights dV_l = h s_l of METHOD.md §3.6.
+// Marker volume weights dV_l = h s_l of docs/method.md §3.6.
 #include "ibm/marker_weights.hpp"
 
 #include <cmath>

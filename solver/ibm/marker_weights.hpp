@@ -1,4 +1,4 @@
-// Volume weights of the IB markers of a closed deformable rim, METHOD.md §3.6:
+// Volume weights of the IB markers of a closed deformable rim, docs/method.md §3.6:
 // dV_l = h s_l, s_l = (|X_{l+1} - X_l| + |X_l - X_{l-1}|) / 2 (indices modulo N),
 // the 2D analogue of Uhlmann's (2005) shell of thickness h; recompute every step.
 #pragma once

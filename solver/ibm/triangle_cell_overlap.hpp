@@ -1,5 +1,5 @@
 // Exact overlap areas of a triangle with the cells of the grid, for the inner-fluid momentum
-// I_T = sum_ij alpha_T(i,j) u_ij h^2 of METHOD.md §1.7 (variant K, step 1): each cell square is
+// I_T = sum_ij alpha_T(i,j) u_ij h^2 of docs/method.md §1.7 (variant K, step 1): each cell square is
 // clipped by the triangle (Sutherland-Hodgman; the triangle is convex) and the clipped polygon's
 // shoelace area is its overlap. Summed over the triangles of a fan, the overlaps add up to the
 // polygon's area to round-off, so the inner-fluid momentum is split between triangles without

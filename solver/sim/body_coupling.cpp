@@ -68,7 +68,7 @@ void prepare_markers(const std::vector<MassSpringBody>& bodies,
     if (!sub_markers) {
       for (int l = 0; l < n_rim; ++l) c.marker[l] = body.position[l];
     } else {
-      // METHOD.md §3.6: split each rim edge into ceil(|e|/h) pieces, so marker spacing <= h.
+      // docs/method.md §3.6: split each rim edge into ceil(|e|/h) pieces, so marker spacing <= h.
       // An edge longer than the reserved capacity allows (8 x the nominal swollen edge) means the
       // body has exploded (in a periodic box nothing else catches it before the size overflows).
       const double max_pieces = 8.0 * static_cast<double>(c.marker.capacity()) / n_rim;
@@ -108,8 +108,8 @@ void prepare_markers(const std::vector<MassSpringBody>& bodies,
         radial_factor[l] = (r - retraction) / r;
         c.marker[l] = {x_c[0] + radial_factor[l] * rx, x_c[1] + radial_factor[l] * ry};
       }
-    marker_weights(c.marker, h, c.marker_volume);  // dV_l = h s_l, METHOD.md §3.6 (in place)
-    // METHOD.md §1.8: the fluid is forced towards the marker velocity minus the swelling
+    marker_weights(c.marker, h, c.marker_volume);  // dV_l = h s_l, docs/method.md §3.6 (in place)
+    // docs/method.md §1.8: the fluid is forced towards the marker velocity minus the swelling
     // part (s'/s)(X_l - X_c), so a swelling body absorbs fluid instead of pushing it away.
     // s'/s [1/time] over the step that produced U^n: the marker velocities at t^n are the end of
     // the previous step's sub-steps, so the dilation they carry is that step's, ln(s^n/s^{n-1})/dt^{n-1}
@@ -223,7 +223,7 @@ void compute_fluid_reaction(double fluid_density, std::vector<BodyCoupling>& cou
   for (BodyCoupling& c : coupling) {
     for (Vec2& f : c.fluid_force) f = {0.0, 0.0};  // the centre point gets none
     const int n_rim = static_cast<int>(c.triangle_momentum.size());
-    // METHOD.md §1.6: F_f,l = -rho_f (sum_m F_l^(m)) dV_l, a force per unit depth; a sub-marker's
+    // docs/method.md §1.6: F_f,l = -rho_f (sum_m F_l^(m)) dV_l, a force per unit depth; a sub-marker's
     // share goes to its edge's end points with weights (1 - w, w) (§3.6).
     for (std::size_t l = 0; l < c.marker.size(); ++l) {
       const int e0 = c.marker_edge[l];

@@ -1,5 +1,5 @@
-// The immersed-boundary coupling of the mass-spring bodies with the fluid (METHOD.md §1.6, §1.8,
-// §3.5, §3.6, §7 steps 2 and 5): the markers X^n (rim points), their volume weights dV_l = h s_l,
+// The immersed-boundary coupling of the mass-spring bodies with the fluid (docs/method.md §1.6, §1.8,
+// §3.5, §3.6, §7 steps 1, 2 and 6): the markers X^n (rim points), their volume weights dV_l = h s_l,
 // the forcing target U_target_l = U_l - (s'/s)(X_l - X_c) (swelling part removed, §1.8), the
 // multi-direct forcing passes on the predicted velocity, and the fluid reaction
 // F_f,l = -rho_f (sum_m F_l^(m)) dV_l on the rim points (the centre point gets none).
@@ -23,7 +23,7 @@ using Vec2 = std::array<double, 2>;
 
 struct BodyCoupling {
   // IB markers, per marker l: the rim points and, with ibm.sub_markers, the sub-markers that split
-  // each rim edge (METHOD.md §3.6, an extension, off by default). Marker l sits on rim edge
+  // each rim edge (docs/method.md §3.6, an extension, off by default). Marker l sits on rim edge
   // marker_edge[l] (points e -> e+1) at fraction marker_fraction[l] in [0, 1): its target velocity
   // is the linear interpolation of the two end points' targets, and its force reaction goes back
   // to the end points with the same weights (1 - w, w), which keeps total force and torque.
@@ -54,7 +54,7 @@ struct BodyCoupling {
   double inner_fluid_torque = 0.0;
   // What the fluid does to the body this step (issue 10 item 2): the IB reaction plus the inner-fluid
   // term, F = sum_p F_f,p + rho_f dI/dt [force/length], and its torque about the centre point X_c^n,
-  // T = sum_p (X_p - X_c) x F_f,p + rho_f dL/dt [force] (METHOD.md §1.7 eq. 1.7a). Buoyancy is not
+  // T = sum_p (X_p - X_c) x F_f,p + rho_f dL/dt [force] (docs/method.md §1.7 eq. 1.7a). Buoyancy is not
   // in it: gravity acts on the bodies only (§2.6), as the buoyancy-corrected weight.
   Vec2 hydrodynamic_force{0.0, 0.0};
   double hydrodynamic_torque = 0.0;
@@ -74,15 +74,15 @@ struct BodyCoupling {
 };
 
 // Markers per rim edge needed for spacing <= h on a body of diameter d with n_surface rim points
-// (ceil(|e|/h) pieces per edge, METHOD.md §3.6), for reserving capacity.
+// (ceil(|e|/h) pieces per edge, docs/method.md §3.6), for reserving capacity.
 std::size_t max_sub_marker_count(double diameter, int n_surface, double h);
 
 // Tangential wall speeds at `time` seen by interpolation (ghost rule of the fluid walls).
 WallVelocities wall_velocities_at(const FluidBoundaries& boundaries, double time);
 
-// X^n, dV_l and U_target_l of every body (METHOD.md §1.8, §3.6) at `time` = t^n; previous_dt is
+// X^n, dV_l and U_target_l of every body (docs/method.md §1.8, §3.6) at `time` = t^n; previous_dt is
 // dt^{n-1} (0 on the first step), over which the swelling part of U^n is measured. With
-// sub_markers, each rim edge e is split into ceil(|e|/h) pieces at X^n (METHOD.md §3.6).
+// sub_markers, each rim edge e is split into ceil(|e|/h) pieces at X^n (docs/method.md §3.6).
 // retraction: markers moved towards the centre of mass X_c by this length (ibm.marker_retraction
 // times h), each marker's velocity relative to X_c's scaled by the same radial factor (exact for a
 // rigid motion and a uniform dilation), volumes dV_l from the moved markers.
@@ -121,7 +121,7 @@ void spread_step_forces(const Grid& grid, KernelKind kernel, double dt, std::vec
 void keep_forces(std::vector<BodyCoupling>& coupling);
 
 // F_f = -rho_f forcing_sum_l dV_l of every marker, returned to the rim points of its edge with
-// weights (1 - w, w); 0 on the centre (METHOD.md §1.6, §3.6).
+// weights (1 - w, w); 0 on the centre (docs/method.md §1.6, §3.6).
 void compute_fluid_reaction(double fluid_density, std::vector<BodyCoupling>& coupling);
 
 // hydrodynamic_force and hydrodynamic_torque of every body from its fluid reaction and inner-fluid

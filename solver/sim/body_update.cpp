@@ -1,4 +1,4 @@
-// Sub-stepped mass-spring update of the bodies, METHOD.md §5.3 (see body_update.hpp).
+// Sub-stepped mass-spring update of the bodies, docs/method.md §5.3 (see body_update.hpp).
 #include "sim/body_update.hpp"
 
 #include <algorithm>
@@ -86,7 +86,7 @@ void advance_group(const SolidStepInputs& in, const std::vector<SwellingSchedule
         continue;
       }
       // M (1 - rho_f/rho_s) g: gravity on the body minus the buoyancy of the displaced fluid
-      // (no gravity in the fluid, METHOD.md §2.6); with variant K the body's full mass M stays
+      // (no gravity in the fluid, docs/method.md §2.6); with variant K the body's full mass M stays
       // on the left-hand side and the inner fluid's inertia arrives through F_int (§1.7).
       const double buoyancy_factor = 1.0 - in.fluid_density / body.density;
       for (int p = 0; p < body.n_points(); ++p)

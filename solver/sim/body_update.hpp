@@ -1,4 +1,4 @@
-// The solid part of the step (METHOD.md §5.3, §7 step 6), multi-rate (issue 12): the bodies are
+// The solid part of the step (docs/method.md §5.3, §7 step 6), multi-rate (issue 12): the bodies are
 // split into groups that cannot touch one another within the step (contact_model.hpp,
 // find_contact_groups); each group takes n_sub = ceil(dt / dt_s) symplectic-Euler sub-steps, dt_s
 // the smallest stable sub-step of its members (§5.1, safety 0.5) and, if the group may touch
@@ -84,7 +84,7 @@ struct SolidStepInputs {
 
 // Advances all bodies from t^n to t^n + dt, group by group (groups.group_of; empty: one group).
 // Each sub-step
-// moves each body by its kind (DESIGN.md §11): mass_spring by symplectic Euler of its points;
+// moves each body by its kind (docs/design.md §11): mass_spring by symplectic Euler of its points;
 // rigid by Newton-Euler with the total hydrodynamic force and torque (frozen over the step),
 // the contact forces summed to force and torque about X_c, and m (1 - rho_f/rho_s) g; prescribed
 // to its scene motion at the sub-step's end. rigid[b] holds the motion of rigid and prescribed

@@ -1,4 +1,4 @@
-// Blow-up checks, adaptive time step and centre-line profiles (DESIGN.md §3 stage 6).
+// Blow-up checks, adaptive time step and centre-line profiles (docs/design.md §3 stage 6).
 #include "sim/diagnostics.hpp"
 
 #include <fmt/format.h>

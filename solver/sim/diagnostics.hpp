@@ -26,7 +26,7 @@ double max_body_point_speed(const Simulation& sim);
 void check_for_blow_up(const Simulation& sim, double dt, const VelocityScan& scan);
 
 // The time step for the next step: fixed, or cfl / max rate (with moving walls counted) and,
-// with bodies, marker travel <= 0.5 h per step (METHOD.md §7 step 7), capped by
+// with bodies, marker travel <= 0.5 h per step (docs/method.md §7 step 7), capped by
 // run.max_time_step and by the time left to run.end_time.
 double next_time_step(const Simulation& sim, const VelocityScan& scan);
 
@@ -34,7 +34,7 @@ double next_time_step(const Simulation& sim, const VelocityScan& scan);
 // grows like (nu dt / h^2) h); infinity when run.max_viscous_number is 0 [time].
 double viscous_time_step_limit(const RunSpec& run, double h, double kinematic_viscosity);
 
-// Marker travel limit of METHOD.md §7 step 7: a marker moves at most this fraction of h per step.
+// Marker travel limit of docs/method.md §7 step 7: a marker moves at most this fraction of h per step.
 inline constexpr double max_marker_travel_cells = 0.5;
 
 // Velocity along the vertical centre line (u against y) and the horizontal one (v against x),

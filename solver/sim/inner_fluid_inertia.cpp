@@ -1,4 +1,4 @@
-// Inner-fluid inertia, METHOD.md §1.7 variant K (Reynolds-transport form) and variant A.
+// Inner-fluid inertia, docs/method.md §1.7 variant K (Reynolds-transport form) and variant A.
 #include "sim/inner_fluid_inertia.hpp"
 
 #include <cmath>
@@ -89,7 +89,7 @@ void kempe_inner_fluid_inertia(const Grid& grid, double fluid_density, const Flu
     for (int l = 0; l < body.n_surface; ++l) {
       const Vec2 momentum_np1 = triangle_momentum(c.triangle_cells[l], fluid);  // I_T(X^n, u^{n+1})
       angular_np1 += triangle_angular_momentum(grid, c.triangle_cells[l], fluid, x_c);
-      // METHOD.md §1.7 step 3 (Reynolds-transport form) and step 4 (a third to each vertex).
+      // docs/method.md §1.7 step 3 (Reynolds-transport form) and step 4 (a third to each vertex).
       const int vertex[3] = {body.centre_index(), l, (l + 1) % body.n_surface};
       for (int d = 0; d < 2; ++d) {
         const double force = fluid_density * (momentum_np1[d] - c.triangle_momentum[l][d]) / dt;

@@ -1,4 +1,4 @@
-// The inner-fluid inertia term rho_f dI/dt of the body momentum balance (METHOD.md §1.7, eq. 1.7a).
+// The inner-fluid inertia term rho_f dI/dt of the body momentum balance (docs/method.md §1.7, eq. 1.7a).
 // Variant K ("kempe", default): I_T = sum_ij alpha_T(i,j) u_ij h^2 over the fan triangles
 // T_l = (c, l, l+1) with exact clipped cell areas alpha_T h^2 (ibm/triangle_cell_overlap), and
 //   F_int,T = rho_f (I_T(X^n, u^{n+1}) - I_T(X^{n-1}, u^n)) / dt,

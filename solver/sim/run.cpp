@@ -1,4 +1,4 @@
-// Run loop, output and progress (DESIGN.md §3 stage 6, §5).
+// Run loop, output and progress (docs/design.md §3 stage 6, §5).
 #include "sim/run.hpp"
 
 #include <fmt/format.h>
@@ -130,7 +130,7 @@ std::vector<SeriesValue> body_series(const Simulation& sim, const ControlVolumeM
   std::vector<SeriesValue> row;
   if (!sim.has_bodies()) return row;
   // Coupling diagnostics of the step: largest fluid velocity component and the Poisson removed
-  // mean (compatibility, METHOD.md §1.8), with each body's largest forcing target speed.
+  // mean (compatibility, docs/method.md §1.8), with each body's largest forcing target speed.
   row.push_back({"max_fluid_velocity_component", "length/time", sim.last_projection.max_velocity});
   row.push_back({"poisson_removed_mean_bodies", "1/time^2", sim.last_projection.removed_mean});
   if (sim.enforces_no_slip())

@@ -58,7 +58,7 @@ Simulation::Simulation(const Scene& scene)
   inner_fluid_inertia = inner_fluid_inertia_from_name(scene.ibm.inner_fluid_inertia);
   fluid_solver_.initialise_faces(fluid_);  // fluid at rest: faces 0, projection is a no-op
   if (!has_bodies()) return;
-  // dV_l = h s_l (METHOD.md §3.6) and the kernel assume square cells.
+  // dV_l = h s_l (docs/method.md §3.6) and the kernel assume square cells.
   if (std::abs(grid_.dx() - grid_.dy()) > 1e-12 * grid_.dx())
     throw InputError(scene.source_file + ": domain: bodies need square cells (dx = dy), got dx = " +
                      std::to_string(grid_.dx()) + ", dy = " + std::to_string(grid_.dy()));

@@ -1,7 +1,7 @@
 // The Simulation: everything one run holds (grid, fluid solver and state, stage list, timers),
-// built once from a validated Scene. sim/ is the only place where modules meet (DESIGN.md §2).
+// built once from a validated Scene. sim/ is the only place where modules meet (docs/design.md §2).
 // Schemes and stages are chosen here, when the Simulation is built, never inside the step:
-// the IB kernel, the inner-fluid inertia variant (METHOD.md §1.7) and the contact hook.
+// the IB kernel, the inner-fluid inertia variant (docs/method.md §1.7) and the contact hook.
 // Bodies, their swelling schedules and all coupling work arrays are allocated here, once.
 #pragma once
 #include <string>
@@ -46,7 +46,7 @@ class Simulation {
   // Names of the pipeline stages this scene runs, in order (`ibms info` prints them).
   std::vector<std::string> stage_names() const;
 
-  // Bodies (METHOD.md §1), in scene order, and what couples them to the fluid.
+  // Bodies (docs/method.md §1), in scene order, and what couples them to the fluid.
   std::vector<MassSpringBody>& bodies() { return bodies_; }
   const std::vector<MassSpringBody>& bodies() const { return bodies_; }
   const std::vector<SwellingSchedule>& swelling() const { return swelling_; }
@@ -95,10 +95,10 @@ class Simulation {
   double global_contact_limit(double dt) const;
   ContactStats last_contact_stats;  // merged over the sub-steps of the latest step
   long total_pair_checks = 0;       // CDS pairs examined by the pair search over the run [-]
-  // Pair search runs only with contacts and two or more bodies (DESIGN.md §3: one body, no pair search).
+  // Pair search runs only with contacts and two or more bodies (docs/design.md §3: one body, no pair search).
   bool has_pair_search() const { return has_contacts() && bodies_.size() > 1; }
   // > 0: the solid takes exactly this many sub-steps per fluid step, ignoring its stability bound
-  // (bench/bench_stability.cpp's fixed-step runs); 0: automatic sub-stepping (METHOD.md §5.3).
+  // (bench/bench_stability.cpp's fixed-step runs); 0: automatic sub-stepping (docs/method.md §5.3).
   int fixed_solid_substeps = 0;
   SpectralWorkspace spectral_workspace;  // scratch of the solid sub-step bound, reused every step
   std::vector<ImplicitSpringSystem> implicit_systems;  // per body: storage of the implicit spring step
@@ -147,7 +147,7 @@ class Simulation {
 Grid grid_from_scene(const Scene& scene);
 FluidBoundaries boundaries_from_scene(const Scene& scene);
 
-// One step n -> n+1 of METHOD.md §7 (sim/time_step.cpp).
+// One step n -> n+1 of docs/method.md §7 (sim/time_step.cpp).
 void advance_one_step(Simulation& sim, double dt);
 
 }  // namespace ibms
