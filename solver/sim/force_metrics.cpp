@@ -25,11 +25,7 @@ PeriodicForces periodic_forces(const std::vector<double>& time, const std::vecto
                                const std::vector<double>& lift, const std::vector<double>& dp, double t_from,
                                double length, double speed) {
   PeriodicForces out;
-  std::size_t rows = time.size();
-  if (rows >= 3 && time[rows - 1] - time[rows - 2] < 0.9 * (time[rows - 2] - time[rows - 3])) {
-    --rows;
-    out.dropped_last_row = true;
-  }
+  const std::size_t rows = time.size();
   double mean = 0.0;
   int n = 0;
   for (std::size_t k = 0; k < rows; ++k)

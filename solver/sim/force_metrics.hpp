@@ -28,12 +28,10 @@ struct PeriodicForces {
   double strouhal = NAN;                  // f L / U [-]
   double pressure_difference_half_period = NAN;  // NaN without a Delta p series [pressure]
   int periods = 0;                        // whole lift periods measured
-  bool dropped_last_row = false;          // the final, shortened step was left out
 };
 
-// Over the rows with time >= t_from (time increasing, one row per step). A last row whose step is
-// below 0.9 of the one before (a run shortened to land on its end time) is left out: the direct
-// forcing's force carries the previous step's rim slip over dt and jumps there. Throws
+// Over every row with time >= t_from (time increasing, one row per step; the run's last steps share
+// the time left, so the last is no small fraction of the one before, docs/method.md §3.7). Throws
 // std::runtime_error with fewer than 10 rows or two lift periods in the window.
 PeriodicForces periodic_forces(const std::vector<double>& time, const std::vector<double>& drag,
                                const std::vector<double>& lift, const std::vector<double>& pressure_difference,

@@ -156,8 +156,7 @@ int main(int argc, char** argv) {
         }
         const PeriodicForces f = periodic_forces(time, column(t, "body_000/drag_coefficient", file),
                                                  column(t, "body_000/lift_coefficient", file), dp, t_from, d, u_mean);
-        std::printf("D/h = %g: %d shedding periods after t = %g%s\n", g.resolution, f.periods, t_from,
-                    f.dropped_last_row ? " (last, shortened step left out)" : "");
+        std::printf("D/h = %g: %d shedding periods after t = %g (every step)\n", g.resolution, f.periods, t_from);
         figures.push_back({f.drag_max, f.lift_max, f.strouhal, f.pressure_difference_half_period});
       }
     }
