@@ -97,6 +97,26 @@ Simulation::Simulation(const Scene& scene)
         last_contact_stats.include(stats);
       }
     };
+    if (scene.contact.time_stepping == "inner_loop") {
+      contact_inner_loop = [this](std::vector<MassSpringBody>& bodies, const BodyMask& members, double dt_outer,
+                                  int n_inner, const std::vector<std::vector<Vec2>>& frozen_force) {
+        thread_local ContactSubcycler subcycler;  // this thread's neighbour list and scratch
+        const auto start = std::chrono::steady_clock::now();
+        const ContactSubcycleResult result =
+            subcycler.advance(contact_model_, contact_box_, dt_outer, n_inner, frozen_force, members, bodies);
+        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+#if defined(_OPENMP)
+#pragma omp critical(ibms_contact_stats)
+#endif
+        {
+          timers_.add(Stage::contacts, seconds, 1);
+          total_pair_checks += result.stats.n_pair_checks;
+          total_contact_inner_steps += result.inner_steps;
+          last_contact_stats.include(result.stats);
+        }
+        return result.work;
+      };
+    }
   }
   // Variant K: I_T at t = 0 (region X^0, velocity u^0), the first "previous" value.
   if (inner_fluid_inertia == &kempe_inner_fluid_inertia)
@@ -150,6 +170,7 @@ SubstepGroups& Simulation::substep_groups(double dt) {
 }
 
 void Simulation::plan_substep_groups(double dt, SubstepGroups& groups) const {
+  if (static_cast<bool>(groups.inner_loop) != static_cast<bool>(contact_inner_loop)) groups.inner_loop = contact_inner_loop;
   if (scene_.run.solid_substeps == "global") {
     groups.group_of.clear();
     return;
