@@ -174,9 +174,13 @@ int group_substeps(const SolidStepInputs& in, SubstepGroups& groups, int g, cons
     return std::max(1, static_cast<int>(std::ceil(span / limit * (1.0 - 1e-12))));
   };
   if (inner_loop_fits) {
+    // Only where it pays: springs slower than the contact (stiff bodies keep the shared sub-step).
     const int n_outer = substeps(in.dt, inner_loop_outer_fraction * spring_dt);
-    inner_substeps = substeps(in.dt / n_outer, contact_dt);
-    return n_outer;
+    const int n_inner = substeps(in.dt / n_outer, contact_dt);
+    if (n_inner >= 2) {
+      inner_substeps = n_inner;
+      return n_outer;
+    }
   }
   return substeps(in.dt, std::min(contact_dt, spring_dt));
 }

@@ -103,11 +103,13 @@ inline CollisionRecord collide(const ContactModel& model, const WallBox& box, st
   double spring_substep = HUGE_VAL;
   if (!implicit_springs)
     for (const auto& body : bodies) spring_substep = std::min(spring_substep, stable_substep(body));
-  if (stepping == ContactStepping::inner_loop) {
-    // As body_update.cpp plans it: a fraction of the springs' sub-step, the contact sub-step inside it.
-    spring_substep *= inner_loop_outer_fraction;
-    record.inner_steps = std::max(1, static_cast<int>(std::ceil(spring_substep / record.substep * (1.0 - 1e-12))));
-    record.substep = spring_substep;
+  const double outer = inner_loop_outer_fraction * spring_substep;
+  const int n_inner = static_cast<int>(std::ceil(outer / record.substep * (1.0 - 1e-12)));
+  if (stepping == ContactStepping::inner_loop && n_inner >= 2) {
+    // As body_update.cpp plans it: a fraction of the springs' sub-step, the contact sub-step inside
+    // it; where that gives one inner step (stiff springs), the shared sub-step.
+    record.inner_steps = n_inner;
+    record.substep = outer;
   } else {
     record.substep = std::min(record.substep, spring_substep);
   }
@@ -131,7 +133,7 @@ inline CollisionRecord collide(const ContactModel& model, const WallBox& box, st
   long first_contact = -1;
   for (long step = 0; step < 100000000; ++step) {
     const ContactStats stats =
-        stepping == ContactStepping::inner_loop
+        record.inner_steps > 1
             ? advance_bodies_inner_loop(model, box, record.substep, record.inner_steps, no_external, bodies,
                                         subcycler).stats
             : advance_bodies_substep(model, box, record.substep, no_external, bodies,
