@@ -276,8 +276,8 @@ ContactSubcycleResult ContactSubcycler::advance(const ContactModel& model, const
     search_.pairs.reserve(8 * offset_.back());
     walls_.reserve(2 * offset_.back());
     active_.reserve(10 * offset_.back());
-    shares_.reserve(2 * bodies.size() + 4);
-    projection_.reserve(2 * bodies.size() + 4);
+    shares_.reserve(8 * bodies.size() + 8);  // body pairs and body-wall pairs in touch
+    projection_.reserve(8 * bodies.size() + 8);
     spheres_.centre.reserve(offset_.back());
     spheres_.radius.reserve(offset_.back());
     spheres_.body.reserve(offset_.back());
