@@ -243,17 +243,19 @@ void ContactSubcycler::move_off_list(const BodyMask& members, std::vector<MassSp
 
 std::array<double, 2> ContactSubcycler::fastest(const BodyMask& members, const std::vector<MassSpringBody>& bodies,
                                                 bool off_list_only) const {
-  std::array<double, 2> largest{0.0, 0.0};  // speed, slow acceleration
+  std::array<double, 2> largest{0.0, 0.0};  // squared speed, squared slow acceleration
   for (std::size_t b = 0; b < bodies.size(); ++b) {
     if (!selected(members, b)) continue;
     const MassSpringBody& body = bodies[b];
     for (int p = 0; p < body.n_points(); ++p) {
       if (off_list_only && slot_[offset_[b] + p] >= 0) continue;
-      largest[0] = std::max(largest[0], std::hypot(body.velocity[p][0], body.velocity[p][1]));
-      largest[1] = std::max(largest[1], std::hypot(slow_[b][p][0], slow_[b][p][1]) / body.mass[p]);
+      const Vec& u = body.velocity[p];
+      const Vec& f = slow_[b][p];
+      largest[0] = std::max(largest[0], u[0]*u[0] + u[1]*u[1]);
+      largest[1] = std::max(largest[1], (f[0]*f[0] + f[1]*f[1]) / (body.mass[p] * body.mass[p]));
     }
   }
-  return largest;
+  return {std::sqrt(largest[0]), std::sqrt(largest[1])};
 }
 
 ContactSubcycleResult ContactSubcycler::advance(const ContactModel& model, const WallBox& box, double dt_outer,
