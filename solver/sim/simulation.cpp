@@ -249,7 +249,12 @@ std::vector<std::string> Simulation::stage_names() const {
                      (scene_.run.solid_substeps == "per_group" ? "; each group of bodies that may touch within the step "
                                                                  "at its own sub-step)"
                                                                : "; all bodies at the smallest sub-step)"));
-    if (has_contacts()) stages.push_back("  contacts (DEM spring-dashpots on CDS, every sub-step; walls)");
+    if (has_contacts())
+      stages.push_back(scene_.contact.time_stepping == "inner_loop"
+                           ? "  contacts (DEM spring-dashpots on CDS, walls; groups of explicit mass-spring bodies: "
+                             "inner loop at the contact sub-step over the points near a contact, springs and "
+                             "fluid held over outer steps of 1/16 of the springs' sub-step)"
+                           : "  contacts (DEM spring-dashpots on CDS, every sub-step; walls)");
     if (has_pair_search()) stages.push_back("  pair search (CDS: body-box broad phase, cell list in periodic boxes; every sub-step)");
   }
   stages.push_back("diagnostics");
