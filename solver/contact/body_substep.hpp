@@ -28,6 +28,7 @@ ContactStats advance_bodies_substep(const ContactModel& model, const WallBox& bo
 ContactSubcycleResult advance_bodies_inner_loop(const ContactModel& model, const WallBox& box, double dt_outer,
                                                 int n_inner,
                                                 const std::vector<std::vector<std::array<double, 2>>>& frozen_force_per_body,
-                                                std::vector<MassSpringBody>& bodies, ContactSubcycler& subcycler);
+                                                std::vector<MassSpringBody>& bodies, ContactSubcycler& subcycler,
+                                                bool continues = false);
 
 }  // namespace ibms

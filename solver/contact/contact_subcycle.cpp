@@ -27,7 +27,10 @@ int ContactSubcycler::candidate(int body, int point, const std::vector<MassSprin
   p.inverse_mass = 1.0 / bodies[body].mass[point];
   p.position = p.anchor = bodies[body].position[point];
   p.velocity = bodies[body].velocity[point];
-  for (int c = 0; c < 2; ++c) p.slow_acceleration[c] = slow_[body][point][c] * p.inverse_mass;
+  for (int c = 0; c < 2; ++c) {
+    p.slow_acceleration[c] = slow_[body][point][c] * p.inverse_mass;
+    p.slow_rate[c] = rate_[body][point][c] * p.inverse_mass;
+  }
   points_.push_back(p);
   return slot;
 }
@@ -55,11 +58,13 @@ void ContactSubcycler::release_list(std::vector<MassSpringBody>& bodies) {
 }
 
 void ContactSubcycler::build_list(const ContactModel& model, const WallBox& box, double skin,
-                                  const BodyMask& members, const std::vector<MassSpringBody>& bodies) {
+                                  const BodyMask& members, const std::vector<MassSpringBody>& bodies, double time) {
+  time_built_ = time;
   const double half_skin = 0.5 * skin;
   const double zeta_factor = 2.0 * damping_ratio_from_restitution(model.restitution_coefficient);
   // Pairs of different bodies closer than the skin: the pair search on CDS grown by s / 2.
   gather_contact_spheres(model, bodies, spheres_, members);
+  for (int s = 0; s < spheres_.n_spheres(); ++s) spheres_.radius[s] += time * radius_rate_[spheres_.body[s]];
   const bool several_bodies = std::any_of(spheres_.body.begin(), spheres_.body.end(),
                                           [&](int b) { return b != spheres_.body.front(); });
   if (several_bodies) {
@@ -77,6 +82,7 @@ void ContactSubcycler::build_list(const ContactModel& model, const WallBox& box,
       const Vec d = separation(xa, xb, box);
       pair.shift = {d[0] - (xb[0] - xa[0]), d[1] - (xb[1] - xa[1])};
       pair.radius_sum = spheres_.radius[s] + spheres_.radius[t] - skin;
+      pair.radius_rate = radius_rate_[body_s] + radius_rate_[body_t];
       pair.damping = zeta_factor * std::sqrt(contact_effective_mass(model, bodies, body_s, spheres_.point[s], body_t,
                                                                     spheres_.point[t]) *
                                              model.stiffness);
@@ -88,7 +94,7 @@ void ContactSubcycler::build_list(const ContactModel& model, const WallBox& box,
   if (model.walls) {
     for (int b = 0; b < static_cast<int>(bodies.size()); ++b) {
       if (!selected(members, b)) continue;
-      const double radius = model.cds_radius_of(bodies[b]);
+      const double radius = model.cds_radius_of(bodies[b]) + time * radius_rate_[b];
       for (int k = 0; k < bodies[b].n_surface; ++k) {
         for (int c = 0; c < 2; ++c) {
           if (box.periodic[c]) continue;
@@ -103,6 +109,7 @@ void ContactSubcycler::build_list(const ContactModel& model, const WallBox& box,
             wall.axis = c;
             wall.side = side;
             wall.radius = radius;
+            wall.radius_rate = radius_rate_[b];
             wall.coordinate = wall_coordinate[side];
             wall.damping = zeta_factor * std::sqrt(contact_effective_mass(model, bodies, b, k, -1, 0) * model.stiffness);
             wall.share = share_of(b, -1 - (2*c + side));
@@ -115,7 +122,8 @@ void ContactSubcycler::build_list(const ContactModel& model, const WallBox& box,
 }
 
 // DEM forces on the candidates at their current state (contact_forces.cpp, restricted to the list).
-void ContactSubcycler::contact_forces(const ContactModel& model, ContactStats& stats) {
+void ContactSubcycler::contact_forces(const ContactModel& model, double time, ContactStats& stats) {
+  const double since_built = time - time_built_;
   for (Point& p : points_) p.force = {0.0, 0.0};
   for (Share& s : shares_) {
     s.normal_sum = {0.0, 0.0};
@@ -128,12 +136,13 @@ void ContactSubcycler::contact_forces(const ContactModel& model, ContactStats& s
     const Vec& xb = points_[pair.b].position;
     const double dx = xb[0] - xa[0] + pair.shift[0], dy = xb[1] - xa[1] + pair.shift[1];
     const double distance_squared = dx*dx + dy*dy;
-    if (!(distance_squared < pair.radius_sum * pair.radius_sum)) continue;
+    const double radius_sum = pair.radius_sum + since_built * pair.radius_rate;
+    if (!(distance_squared < radius_sum * radius_sum)) continue;
     const double distance = std::sqrt(distance_squared);
     if (!(distance > 0.0)) throw std::runtime_error("contact: two CDS centres coincide");
     Active a;
     a.index = i;
-    a.overlap = pair.radius_sum - distance;
+    a.overlap = radius_sum - distance;
     a.normal = {dx / distance, dy / distance};
     active_.push_back(a);
     Share& s = shares_[pair.share];
@@ -146,7 +155,7 @@ void ContactSubcycler::contact_forces(const ContactModel& model, ContactStats& s
     const Wall& wall = walls_[i];
     const double x = points_[wall.a].position[wall.axis];
     const double distance = wall.side == 0 ? x - wall.coordinate : wall.coordinate - x;
-    const double overlap = wall.radius - distance;
+    const double overlap = wall.radius + since_built * wall.radius_rate - distance;
     if (!(overlap > 0.0)) continue;
     Active a;
     a.index = i;
@@ -212,12 +221,13 @@ void ContactSubcycler::contact_forces(const ContactModel& model, ContactStats& s
   }
 }
 
-void ContactSubcycler::kick_and_drift(double dt, double& work) {
+void ContactSubcycler::kick_and_drift(double dt, double time, double& work) {
   for (Point& p : points_) {
     for (int c = 0; c < 2; ++c) {
-      // Symplectic Euler for the contact force, the held slow force integrated exactly.
-      p.velocity[c] += dt * (p.slow_acceleration[c] + p.force[c] * p.inverse_mass);
-      p.position[c] += dt * (p.velocity[c] - 0.5 * dt * p.slow_acceleration[c]);
+      // Symplectic Euler for the contact force, the slow force a + r t integrated exactly.
+      const double a = p.slow_acceleration[c], r = p.slow_rate[c], f = p.force[c] * p.inverse_mass;
+      p.position[c] += dt * p.velocity[c] + dt * dt * (0.5 * a + r * (0.5 * time + dt / 6.0) + f);
+      p.velocity[c] += dt * (a + r * (time + 0.5 * dt) + f);
     }
     work += dt * (p.force[0]*p.velocity[0] + p.force[1]*p.velocity[1]);
   }
@@ -225,17 +235,16 @@ void ContactSubcycler::kick_and_drift(double dt, double& work) {
 
 void ContactSubcycler::move_off_list(const BodyMask& members, std::vector<MassSpringBody>& bodies, double dt_inner,
                                      int from, int to) {
-  const double span = (to - from) * dt_inner;
-  const double drift = 0.5 * span * span;
+  const double span = (to - from) * dt_inner, start = from * dt_inner;
   for (std::size_t b = 0; b < bodies.size(); ++b) {
     if (!selected(members, b)) continue;
     MassSpringBody& body = bodies[b];
     for (int p = 0; p < body.n_points(); ++p) {
       if (slot_[offset_[b] + p] >= 0) continue;
       for (int c = 0; c < 2; ++c) {
-        const double a = slow_[b][p][c] / body.mass[p];
-        body.position[p][c] += span * body.velocity[p][c] + drift * a;
-        body.velocity[p][c] += span * a;
+        const double a = slow_[b][p][c] / body.mass[p], r = rate_[b][p][c] / body.mass[p];
+        body.position[p][c] += span * body.velocity[p][c] + span * span * (0.5 * a + r * (0.5 * start + span / 6.0));
+        body.velocity[p][c] += span * (a + r * (start + 0.5 * span));
       }
     }
   }
@@ -251,8 +260,11 @@ std::array<double, 2> ContactSubcycler::fastest(const BodyMask& members, const s
       if (off_list_only && slot_[offset_[b] + p] >= 0) continue;
       const Vec& u = body.velocity[p];
       const Vec& f = slow_[b][p];
+      const Vec& r = rate_[b][p];
+      // |F + r t| <= |F| + |r| t: the slow force's largest value over the step.
+      const double force = std::sqrt(f[0]*f[0] + f[1]*f[1]) + previous_dt_ * std::sqrt(r[0]*r[0] + r[1]*r[1]);
       largest[0] = std::max(largest[0], u[0]*u[0] + u[1]*u[1]);
-      largest[1] = std::max(largest[1], (f[0]*f[0] + f[1]*f[1]) / (body.mass[p] * body.mass[p]));
+      largest[1] = std::max(largest[1], force * force / (body.mass[p] * body.mass[p]));
     }
   }
   return {std::sqrt(largest[0]), std::sqrt(largest[1])};
@@ -261,7 +273,8 @@ std::array<double, 2> ContactSubcycler::fastest(const BodyMask& members, const s
 ContactSubcycleResult ContactSubcycler::advance(const ContactModel& model, const WallBox& box, double dt_outer,
                                                 int n_inner,
                                                 const std::vector<std::vector<std::array<double, 2>>>& external_force,
-                                                const BodyMask& members, std::vector<MassSpringBody>& bodies) {
+                                                const BodyMask& members, std::vector<MassSpringBody>& bodies,
+                                                bool continues, const std::vector<double>& diameter_rate) {
   if (n_inner < 1) throw std::invalid_argument("ContactSubcycler: n_inner must be >= 1");
   if (external_force.size() != bodies.size()) throw std::invalid_argument("ContactSubcycler: one force vector per body");
   ContactSubcycleResult result;
@@ -287,6 +300,11 @@ ContactSubcycleResult ContactSubcycler::advance(const ContactModel& model, const
   }
   slow_.resize(bodies.size());
   spring_.resize(bodies.size());
+  rate_.resize(bodies.size());
+  previous_slow_.resize(bodies.size());
+  radius_rate_.assign(bodies.size(), 0.0);
+  if (!diameter_rate.empty() && model.cds_radius == 0.0)
+    for (std::size_t b = 0; b < bodies.size(); ++b) radius_rate_[b] = model.cds_radius_fraction * diameter_rate[b];
   double smallest_radius = HUGE_VAL;
   for (std::size_t b = 0; b < bodies.size(); ++b) {
     if (!selected(members, b)) continue;
@@ -302,15 +320,25 @@ ContactSubcycleResult ContactSubcycler::advance(const ContactModel& model, const
     slow_[b].resize(body.n_points());
     for (int p = 0; p < body.n_points(); ++p)
       for (int c = 0; c < 2; ++c) slow_[b][p][c] = external_force[b][p][c] + spring_[b][p][c];
+    rate_[b].assign(body.n_points(), Vec{0.0, 0.0});
+    if (continues && previous_slow_[b].size() == slow_[b].size() && previous_dt_ > 0.0)
+      for (int p = 0; p < body.n_points(); ++p)
+        for (int c = 0; c < 2; ++c) rate_[b][p][c] = (slow_[b][p][c] - previous_slow_[b][p][c]) / previous_dt_;
+    previous_slow_[b].assign(slow_[b].begin(), slow_[b].end());
   }
+  previous_dt_ = dt_outer;
   const double skin_floor = skin_floor_fraction * smallest_radius;
+  double growth = 0.0;  // fastest CDS radius growth [length/time]: two radii close a gap at twice it
+  for (std::size_t b = 0; b < bodies.size(); ++b)
+    if (selected(members, b)) growth = std::max(growth, std::abs(radius_rate_[b]));
   const double dt_inner = dt_outer / n_inner;
   // Skin for the time left: the travel bound V T + A T^2 / 2 of a point without contact.
   const auto travel = [](const std::array<double, 2>& largest, double time) {
     return largest[0] * time + 0.5 * largest[1] * time * time;
   };
-  double skin = std::max(2.0 * skin_travel_factor * travel(fastest(members, bodies, false), dt_outer), skin_floor);
-  build_list(model, box, skin, members, bodies);
+  double skin = std::max(2.0 * skin_travel_factor * (travel(fastest(members, bodies, false), dt_outer) + growth * dt_outer),
+                         skin_floor);
+  build_list(model, box, skin, members, bodies, 0.0);
   result.list_builds = 1;
   std::array<double, 2> off_list = fastest(members, bodies, /*off_list_only=*/true);
   int step_built = 0;   // inner step at which the list was built
@@ -323,35 +351,39 @@ ContactSubcycleResult ContactSubcycler::advance(const ContactModel& model, const
         const double dx = p.position[0] - p.anchor[0], dy = p.position[1] - p.anchor[1];
         moved_squared = std::max(moved_squared, dx*dx + dy*dy);
       }
-      const double moved = std::max(std::sqrt(moved_squared), travel(off_list, (j - step_built) * dt_inner));
+      const double moved = std::max(std::sqrt(moved_squared), travel(off_list, (j - step_built) * dt_inner)) +
+                           growth * (j - step_built) * dt_inner;
       if (2.0 * moved >= skin) {
         // Every point to this inner step, then a new list for the time left.
         move_off_list(members, bodies, dt_inner, step_synced, j);
         step_synced = j;
         release_list(bodies);
-        skin = std::max(2.0 * skin_travel_factor * travel(fastest(members, bodies, false), dt_outer - j * dt_inner),
+        skin = std::max(2.0 * skin_travel_factor *
+                            (travel(fastest(members, bodies, false), dt_outer - j * dt_inner) + growth * (dt_outer - j * dt_inner)),
                         skin_floor);
-        build_list(model, box, skin, members, bodies);
+        build_list(model, box, skin, members, bodies, j * dt_inner);
         ++result.list_builds;
         off_list = fastest(members, bodies, true);
         step_built = j;
         if (points_.empty()) break;
       }
     }
-    contact_forces(model, result.stats);
-    kick_and_drift(dt_inner, result.work);
+    contact_forces(model, j * dt_inner, result.stats);
+    kick_and_drift(dt_inner, j * dt_inner, result.work);
     ++result.inner_steps;
   }
   move_off_list(members, bodies, dt_inner, step_synced, n_inner);
   release_list(bodies);
-  // Step 4: U += dt (F_s(x^{k+1}, U*) - F_s(x^k, U^k)) / (2 m).
+  // Step 4: U += dt (F_s(x^{k+1}, U*) - F_s(x^k, U^k) - dt r) / (2 m): the velocity change over
+  // the step becomes dt (F^k + F^{k+1}) / (2 m), what the extrapolated rate r gave taken back.
   for (std::size_t b = 0; b < bodies.size(); ++b) {
     if (!selected(members, b)) continue;
     MassSpringBody& body = bodies[b];
     for (Vec& f : spring_[b]) f = {-f[0], -f[1]};
     add_spring_forces(body, body.length_scale(), spring_[b]);
     for (int p = 0; p < body.n_points(); ++p)
-      for (int c = 0; c < 2; ++c) body.velocity[p][c] += 0.5 * dt_outer * spring_[b][p][c] / body.mass[p];
+      for (int c = 0; c < 2; ++c)
+        body.velocity[p][c] += 0.5 * dt_outer * (spring_[b][p][c] - dt_outer * rate_[b][p][c]) / body.mass[p];
   }
   result.stats.n_pair_checks = pair_checks_;
   return result;

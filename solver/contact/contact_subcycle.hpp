@@ -64,9 +64,15 @@ class ContactSubcycler {
   // Advances the points of the member bodies (members; empty = all) over dt_outer in n_inner inner
   // steps as described above. external_force: the frozen force on every point other than springs
   // and contacts, one vector of n_points per body (only members read) [force/length].
+  // continues: this step follows the previous call's step for the same members within one fluid
+  // step; the slow force then varies linearly over the step at the rate between the two steps'
+  // starts (continuous across outer steps to second order; held when false).
+  // diameter_rate: dD/dt of each body (empty: none): the CDS radii grow continuously over the
+  // inner steps (a swelling step in the radius would set an undamped resting contact ringing).
   ContactSubcycleResult advance(const ContactModel& model, const WallBox& box, double dt_outer, int n_inner,
                                 const std::vector<std::vector<std::array<double, 2>>>& external_force,
-                                const BodyMask& members, std::vector<MassSpringBody>& bodies);
+                                const BodyMask& members, std::vector<MassSpringBody>& bodies, bool continues = false,
+                                const std::vector<double>& diameter_rate = {});
 
  private:
   using Vec = std::array<double, 2>;
@@ -74,18 +80,21 @@ class ContactSubcycler {
     int body = 0, point = 0;
     double inverse_mass = 0.0;
     Vec position{}, velocity{}, force{}, anchor{};  // anchor: position when the list was built
-    Vec slow_acceleration{};                        // a = F_slow / m [length/time^2]
+    Vec slow_acceleration{};                        // a = F_slow / m at the step's start [length/time^2]
+    Vec slow_rate{};                                // its rate of change over the step [length/time^3]
   };
   struct Pair {      // two candidate points of different bodies
     int a = 0, b = 0;
     Vec shift{};              // periodic image: x_b - x_a + shift is the separation
-    double radius_sum = 0.0;  // r_a + r_b [length]
+    double radius_sum = 0.0;  // r_a + r_b at the list's inner time [length]
+    double radius_rate = 0.0; // d(r_a + r_b)/dt [length/time]
     double damping = 0.0;     // 2 zeta sqrt(m_eff k_Dn): the dashpot of one pair, before sharing
     int share = 0;            // the pairs of one body pair (or body and wall) share a dashpot
   };
   struct Wall {      // a candidate point and one wall
     int a = 0, axis = 0, side = 0;
     double radius = 0.0, coordinate = 0.0, damping = 0.0;
+    double radius_rate = 0.0;  // dr/dt [length/time]
     int share = 0;
   };
   struct Share {     // S = sum (n_p . N)^2 over the active pairs of one body pair (contact_forces.hpp)
@@ -102,12 +111,12 @@ class ContactSubcycler {
   };
 
   void build_list(const ContactModel& model, const WallBox& box, double skin, const BodyMask& members,
-                  const std::vector<MassSpringBody>& bodies);
+                  const std::vector<MassSpringBody>& bodies, double time);
   void release_list(std::vector<MassSpringBody>& bodies);  // candidates' state back into the bodies
   int candidate(int body, int point, const std::vector<MassSpringBody>& bodies);
   int share_of(int body_a, int partner);
-  void contact_forces(const ContactModel& model, ContactStats& stats);
-  void kick_and_drift(double dt, double& work);
+  void contact_forces(const ContactModel& model, double time, ContactStats& stats);
+  void kick_and_drift(double dt, double time, double& work);
   // Off-list points from inner step `from` to `to` in closed form (step 3 above).
   void move_off_list(const BodyMask& members, std::vector<MassSpringBody>& bodies, double dt_inner, int from, int to);
   // Largest speed and slow acceleration of the members' points (off_list_only: of the points off the list).
@@ -124,6 +133,11 @@ class ContactSubcycler {
   std::vector<double> projection_;  // scratch of the sharing sums
   std::vector<std::vector<Vec>> slow_;    // per body and point: F_slow = external + springs at x^k, U^k
   std::vector<std::vector<Vec>> spring_;  // per body and point: springs at x^{k+1}, predicted U
+  std::vector<std::vector<Vec>> rate_;    // per body and point: dF_slow/dt over the step (0: held)
+  std::vector<std::vector<Vec>> previous_slow_;  // F_slow at the previous call's start
+  double previous_dt_ = 0.0;
+  std::vector<double> radius_rate_;  // per body: dr_cds/dt over this step [length/time]
+  double time_built_ = 0.0;          // inner time of the list: radii in the list belong to it
   ContactSpheres spheres_;
   PairSearchResult search_;
   long pair_checks_ = 0;

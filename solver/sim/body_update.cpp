@@ -77,17 +77,20 @@ void external_force(const SolidStepInputs& in, const std::vector<Vec2>* contact,
 void advance_group_inner_loop(const SolidStepInputs& in, const std::vector<SwellingSchedule>& swelling,
                               const ContactInnerLoop& inner_loop, const BodyMask& members, int n_sub, int n_inner,
                               std::vector<BodyCoupling>& coupling, std::vector<std::vector<Vec2>>& frozen,
-                              std::vector<MassSpringBody>& bodies, double& contact_energy) {
+                              std::vector<double>& diameter_rate, std::vector<MassSpringBody>& bodies,
+                              double& contact_energy) {
   const double dt_sub = in.dt / n_sub;
   for (int k = 0; k < n_sub; ++k) {
     const double time_k = in.time + k*dt_sub;
     for (std::size_t b = 0; b < bodies.size(); ++b) {
       if (!selected(members, b)) continue;
       if (swelling[b].enabled) apply_swelling(bodies[b], swelling[b].diameter(time_k));  // L0, M follow s(t), §1.8
+      diameter_rate[b] =
+          swelling[b].enabled ? (swelling[b].diameter(time_k + dt_sub) - swelling[b].diameter(time_k)) / dt_sub : 0.0;
       external_force(in, nullptr, bodies[b], coupling[b]);
       std::copy(coupling[b].external_force.begin(), coupling[b].external_force.end(), frozen[b].begin());
     }
-    contact_energy += inner_loop(bodies, members, dt_sub, n_inner, frozen);
+    contact_energy += inner_loop(bodies, members, dt_sub, n_inner, frozen, /*continues=*/k > 0, diameter_rate);
   }
 }
 
@@ -243,6 +246,7 @@ SolidStepCount advance_bodies(const SolidStepInputs& in, const std::vector<Swell
   // thread count. Exceptions (a blow-up) are caught per group; the lowest group's is rethrown.
   const int n_groups = end - first;
   groups.group_work.assign(n_groups, 0.0);
+  groups.diameter_rate.resize(bodies.size());  // each group writes its members' entries
   std::exception_ptr error;
   int error_group = n_groups;
 #if defined(_OPENMP)
@@ -259,7 +263,8 @@ SolidStepCount advance_bodies(const SolidStepInputs& in, const std::vector<Swell
     try {
       if (groups.group_inner_substeps[k] > 0)
         advance_group_inner_loop(in, swelling, groups.inner_loop, mask, groups.group_substeps[k],
-                                 groups.group_inner_substeps[k], coupling, contact_work, bodies, groups.group_work[k]);
+                                 groups.group_inner_substeps[k], coupling, contact_work, groups.diameter_rate, bodies,
+                                 groups.group_work[k]);
       else
         advance_group(in, swelling, contact_forces, mask, groups.implicit_of_body, implicit, groups.group_substeps[k],
                       coupling, contact_work, rigid, bodies, groups.group_work[k]);

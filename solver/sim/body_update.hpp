@@ -40,9 +40,12 @@ void no_contact_forces(const std::vector<MassSpringBody>& bodies, const BodyMask
 // and frozen_force[b][p] (fluid, inner fluid, buoyant gravity) held over dt_outer; returns the work
 // of the contact forces [energy/length]. Called concurrently for different groups, as
 // ContactForces. Empty: every group takes the shared sub-step.
+// continues: the call follows the previous outer step of the same group within the fluid step;
+// diameter_rate: dD/dt of each body over the outer step (swelling; the members' entries).
 using ContactInnerLoop = std::function<double(std::vector<MassSpringBody>& bodies, const BodyMask& members,
                                               double dt_outer, int n_inner,
-                                              const std::vector<std::vector<Vec2>>& frozen_force)>;
+                                              const std::vector<std::vector<Vec2>>& frozen_force, bool continues,
+                                              const std::vector<double>& diameter_rate)>;
 
 // Sets every body's diameter (natural lengths) and masses (constant density) to D(time).
 void apply_swelling_schedules(const std::vector<SwellingSchedule>& swelling, double time,
@@ -65,6 +68,7 @@ struct SubstepGroups {
   std::vector<char> implicit_of_body; // out: body b's springs took implicit steps in the latest step
   std::vector<int> group_substeps;    // scratch: sub-steps of each group in the latest step
   std::vector<double> group_work;     // scratch: contact work of each group
+  std::vector<double> diameter_rate;  // scratch: dD/dt of each body over its outer sub-step
   double contact_work = 0.0;          // out: work of all contact forces on all bodies in the latest step
                                       // [energy/length]; <= 0 for a dissipative contact law, walls at rest
 };

@@ -99,11 +99,13 @@ Simulation::Simulation(const Scene& scene)
     };
     if (scene.contact.time_stepping == "inner_loop") {
       contact_inner_loop = [this](std::vector<MassSpringBody>& bodies, const BodyMask& members, double dt_outer,
-                                  int n_inner, const std::vector<std::vector<Vec2>>& frozen_force) {
+                                  int n_inner, const std::vector<std::vector<Vec2>>& frozen_force, bool continues,
+                                  const std::vector<double>& diameter_rate) {
         thread_local ContactSubcycler subcycler;  // this thread's neighbour list and scratch
         const auto start = std::chrono::steady_clock::now();
         const ContactSubcycleResult result =
-            subcycler.advance(contact_model_, contact_box_, dt_outer, n_inner, frozen_force, members, bodies);
+            subcycler.advance(contact_model_, contact_box_, dt_outer, n_inner, frozen_force, members, bodies, continues,
+                              diameter_rate);
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 #if defined(_OPENMP)
 #pragma omp critical(ibms_contact_stats)

@@ -135,7 +135,7 @@ inline CollisionRecord collide(const ContactModel& model, const WallBox& box, st
     const ContactStats stats =
         record.inner_steps > 1
             ? advance_bodies_inner_loop(model, box, record.substep, record.inner_steps, no_external, bodies,
-                                        subcycler).stats
+                                        subcycler, /*continues=*/step > 0).stats
             : advance_bodies_substep(model, box, record.substep, no_external, bodies,
                                      implicit_springs ? &implicit : nullptr);
     const int n_active = stats.n_active_pairs + stats.n_wall_contacts;
