@@ -5,7 +5,10 @@
 // contact only, while the slow forces on every point (springs and their dashpots; the frozen
 // fluid reaction, inner-fluid term and buoyant gravity) are evaluated once per outer step.
 //
-// One outer step of length dt = n dt_i from x^k, U^k, with a = F_slow(x^k, U^k) / m per point:
+// One outer step of length dt = n dt_i from x^k, U^k, with a = F_slow(x^k, U^k) / m per point
+// (plus r t, r the rate of change of F_slow / m between the previous outer step's start and this
+// one's within the fluid step, 0 in its first: the slow force is continuous across outer steps to
+// second order, so it sets no undamped resting contact ringing; left out of the formulas below):
 //   1. neighbour list: the CDS pairs of different bodies (and the CDS-wall pairs) closer than a
 //      skin s = 3 (V T + A T^2 / 2), T the time left, V and A the largest point speed and slow
 //      acceleration of the members (s >= a tenth of the smallest CDS radius); their points are
@@ -14,7 +17,11 @@
 //      x += dt_i (U - dt_i a / 2) (symplectic Euler for the contact, the held slow force exact);
 //   3. every other point moves as a candidate would without contact, in closed form:
 //      x += dt U^k + dt^2 a / 2, U += dt a;
-//   4. the springs again at the new x and the predicted U: U += dt (F_s^{k+1} - F_s^k) / (2 m).
+//   4. the springs again at the new x and the predicted U: U += dt (F_s^{k+1} - F_s^k) / (2 m)
+//      (less dt^2 r / 2: the velocity change over the step is dt (F^k + F^{k+1}) / (2 m)).
+// The CDS radii of swelling bodies grow linearly over the inner steps (a step in the radius per
+// outer step, about a third of the static overlap in the swelling cavity at k_Dn = 1e4, set its
+// e_D = 1 resting contacts ringing: 34 instead of 45 touching CDS pairs on average).
 //      Without contact, 3. and 4. are velocity Verlet for the slow forces: symplectic, second
 //      order, stable for omega dt < 2 as symplectic Euler.
 // The slow force acts on a contact as a steady force, not as an impulse dt F / m per outer step:
