@@ -6,13 +6,17 @@
 // Columns: fluid = predictor + projection; IB = direct forcing (interpolate + spread, all passes;
 // marker preparation, incl. sub-markers, is timed with the schedules under "other");
 // solid = sub-stepped body update without contacts (springs, fluid reaction, inner-fluid inertia);
-// contacts = DEM forces and pair search inside the solid sub-steps; other = schedules,
+// contacts = DEM forces and pair search inside the solid sub-steps (with contact.time_stepping =
+// "inner_loop": the whole inner loop, its neighbour lists and point updates); other = schedules,
 // diagnostics and output. Ratios are against the fluid stage of the same run.
 // Usage: bench_bodies SETTLING_SCENE [--cells 100,150,200] [--until 0.3] [--set k=v]... [--substep-modes]
-//                     [EXTRA_SCENE...]
+//                     [--contact-modes] [EXTRA_SCENE...]
 //   (--set applies to the extra scenes, e.g. --set contact.stiffness=1e7 for the paper's DEM stiffness;
 //    --substep-modes runs each extra scene with run.solid_substeps = per_group and = global and prints
-//    the ratio of their wall times, issue 12)
+//    the ratio of their wall times; --contact-modes runs each extra scene also with
+//    contact.time_stepping = shared, every point of a group in contact at the contact sub-step,
+//    and prints the ratio of the wall times and contact stages to the inner loop's; --cells ""
+//    skips the settling runs)
 #include <unistd.h>
 
 #include <cstdio>
@@ -35,6 +39,7 @@ struct Figures {
   double fluid = 0, ib = 0, solid = 0, contacts = 0, other = 0, wall = 0;
   long substeps = 0;       // most sub-steps of any body group, summed over steps
   long body_substeps = 0;  // sub-steps summed over bodies and steps (the solid's work)
+  long inner_steps = 0;    // inner contact steps summed over groups and steps
 };
 
 Figures run_and_time(const std::string& scene_path, const std::vector<std::string>& overrides) {
@@ -60,6 +65,7 @@ Figures run_and_time(const std::string& scene_path, const std::vector<std::strin
   f.wall = summary.wall_seconds;
   f.substeps = sim.total_substeps;
   f.body_substeps = sim.total_body_substeps;
+  f.inner_steps = sim.total_contact_inner_steps;
   return f;
 }
 
@@ -99,13 +105,14 @@ int main(int argc, char** argv) {
   std::vector<int> cells{100, 150, 200};
   std::string until = "0.3";
   std::vector<std::string> extra, extra_sets;
-  bool substep_modes = false;
+  bool substep_modes = false, contact_modes = false;
   for (int a = 2; a < argc; ++a) {
     const std::string arg = argv[a];
     if (arg == "--cells" && a + 1 < argc) cells = parse_list(argv[++a]);
     else if (arg == "--until" && a + 1 < argc) until = argv[++a];
     else if (arg == "--set" && a + 1 < argc) extra_sets.push_back(argv[++a]);
     else if (arg == "--substep-modes") substep_modes = true;
+    else if (arg == "--contact-modes") contact_modes = true;
     else extra.push_back(arg);
   }
   try {
@@ -127,7 +134,16 @@ int main(int argc, char** argv) {
                                std::filesystem::path(path).stem().string();
       const Figures f = run_and_time(path, extra_sets);
       print_row(name, f);
-      std::printf("   %-28s wall %.1f s\n", "", f.wall);
+      std::printf("   %-28s wall %.1f s; inner contact steps %.1f per step\n", "", f.wall,
+                  static_cast<double>(f.inner_steps) / static_cast<double>(std::max(1L, f.steps)));
+      if (contact_modes) {
+        std::vector<std::string> shared_sets = extra_sets;
+        shared_sets.push_back("contact.time_stepping=shared");
+        const Figures s = run_and_time(path, shared_sets);
+        print_row(name.substr(0, 21) + " shared", s);
+        std::printf("   %-28s wall %.1f s; shared / inner loop: wall %.2f, contact stage %.2f\n", "", s.wall,
+                    s.wall / f.wall, s.contacts / f.contacts);
+      }
       if (!substep_modes) continue;
       std::vector<std::string> global_sets = extra_sets;
       global_sets.push_back("run.solid_substeps=global");

@@ -24,4 +24,14 @@ ContactStats advance_bodies_substep(const ContactModel& model, const WallBox& bo
   return stats;
 }
 
+ContactSubcycleResult advance_bodies_inner_loop(const ContactModel& model, const WallBox& box, double dt_outer,
+                                                int n_inner,
+                                                const std::vector<std::vector<std::array<double, 2>>>& frozen_force_per_body,
+                                                std::vector<MassSpringBody>& bodies, ContactSubcycler& subcycler,
+                                                bool continues) {
+  if (frozen_force_per_body.size() != bodies.size())
+    throw std::invalid_argument("advance_bodies_inner_loop: one force vector per body expected");
+  return subcycler.advance(model, box, dt_outer, n_inner, frozen_force_per_body, {}, bodies, continues);
+}
+
 }  // namespace ibms

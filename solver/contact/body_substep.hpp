@@ -9,6 +9,7 @@
 
 #include "contact/contact_forces.hpp"
 #include "contact/contact_model.hpp"
+#include "contact/contact_subcycle.hpp"
 #include "solid/implicit_euler.hpp"
 #include "solid/mass_spring_body.hpp"
 
@@ -20,5 +21,14 @@ ContactStats advance_bodies_substep(const ContactModel& model, const WallBox& bo
                                     const std::vector<std::vector<std::array<double, 2>>>& frozen_force_per_body,
                                     std::vector<MassSpringBody>& bodies,
                                     std::vector<ImplicitSpringSystem>* implicit = nullptr);
+
+// One outer sub-step of all bodies (mass_spring, explicit springs) with the contacts in the inner
+// loop of contact_subcycle.hpp: n_inner inner contact steps of dt_outer / n_inner on the points
+// near a contact, the springs and the frozen force on every point held over dt_outer.
+ContactSubcycleResult advance_bodies_inner_loop(const ContactModel& model, const WallBox& box, double dt_outer,
+                                                int n_inner,
+                                                const std::vector<std::vector<std::array<double, 2>>>& frozen_force_per_body,
+                                                std::vector<MassSpringBody>& bodies, ContactSubcycler& subcycler,
+                                                bool continues = false);
 
 }  // namespace ibms

@@ -13,6 +13,20 @@
 
 namespace ibms {
 
+double contact_effective_mass(const ContactModel& model, const std::vector<MassSpringBody>& bodies, int body_a,
+                              int point_a, int body_b, int point_b) {
+  const bool whole_body = model.effective_mass == ContactEffectiveMass::body;
+  const MassSpringBody& a = bodies[body_a];
+  const double m_a = whole_body ? a.total_mass() : cds_point_mass(a, point_a);
+  if (body_b < 0) return m_a;
+  const MassSpringBody& b = bodies[body_b];
+  const double m_b = whole_body ? b.total_mass() : cds_point_mass(b, point_b);
+  // A prescribed body does not yield: it acts like a wall (infinite mass) on its partner.
+  if (b.kind == BodyKind::prescribed) return m_a;
+  if (a.kind == BodyKind::prescribed) return m_b;
+  return m_a * m_b / (m_a + m_b);
+}
+
 void ContactStats::include(const ContactStats& later) {
   n_active_pairs = std::max(n_active_pairs, later.n_active_pairs);
   n_wall_contacts = std::max(n_wall_contacts, later.n_wall_contacts);
@@ -96,19 +110,10 @@ void collect_wall_contacts(const ContactModel& model, const std::vector<MassSpri
   }
 }
 
-// m_eff of A8 for one contact: bodies or points, m_a m_b / (m_a + m_b); against a wall m_a.
 double effective_mass(const ContactModel& model, const std::vector<MassSpringBody>& bodies,
                       const ActiveContact& contact) {
-  const bool whole_body = model.effective_mass == ContactEffectiveMass::body;
-  const MassSpringBody& a = bodies[contact.body_a];
-  const double m_a = whole_body ? a.total_mass() : cds_point_mass(a, contact.point_a);
-  if (contact.body_b == wall_partner) return m_a;
-  const MassSpringBody& b = bodies[contact.body_b];
-  const double m_b = whole_body ? b.total_mass() : cds_point_mass(b, contact.point_b);
-  // A prescribed body does not yield: it acts like a wall (infinite mass) on its partner.
-  if (b.kind == BodyKind::prescribed) return m_a;
-  if (a.kind == BodyKind::prescribed) return m_b;
-  return m_a * m_b / (m_a + m_b);
+  return contact_effective_mass(model, bodies, contact.body_a, contact.point_a,
+                                contact.body_b == wall_partner ? -1 : contact.body_b, contact.point_b);
 }
 
 // S = sum_p (n_p . N)^2 per group, N the unit mean normal of its pairs: the number of pairs acting

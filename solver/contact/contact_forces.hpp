@@ -23,6 +23,12 @@ struct ContactStats {
   void include(const ContactStats& later);
 };
 
+// m_eff of A8 for the CDS of point_a of body_a touching point_b of body_b, or a wall (body_b < 0):
+// whole-body or point masses (ContactModel::effective_mass), m_a m_b / (m_a + m_b); a prescribed
+// partner counts as infinitely heavy [mass/length].
+double contact_effective_mass(const ContactModel& model, const std::vector<MassSpringBody>& bodies, int body_a,
+                              int point_a, int body_b, int point_b);
+
 // Adds the contact forces to force_per_body (one vector of n_points per body; not cleared; the
 // centre points receive nothing). Does nothing when the model is off. members: only contacts among
 // these bodies and of these bodies with the walls (a contact group, contact_model.hpp); empty = all.

@@ -152,6 +152,7 @@ std::string resolved_scene_toml(const Scene& scene) {
   out += fmt::format("cds_radius = {}\n", toml_float(contact.cds_radius));
   out += fmt::format("cds_radius_fraction = {}\n", toml_float(contact.cds_radius_fraction));
   out += fmt::format("walls = {}\n", toml_bool(contact.walls));
+  out += fmt::format("time_stepping = {}\n", toml_string(contact.time_stepping));
 
   const OutputSpec& output = scene.output;
   out += "\n[output]\n";

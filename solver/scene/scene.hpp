@@ -141,6 +141,10 @@ struct ContactSpec {
   double cds_radius = 0.0;           // absolute CDS radius [length]; 0: use cds_radius_fraction
   double cds_radius_fraction = 0.0;  // CDS radius as a fraction of the body diameter [-]
   bool walls = true;                 // body-wall contacts
+  // "inner_loop": a group of mass-spring bodies that may touch something takes its springs'
+  // sub-step, the contact sub-step only in an inner loop over the points near a contact
+  // (contact/contact_subcycle.hpp); "shared": every point of the group at the contact sub-step.
+  std::string time_stepping = "inner_loop";
 };
 
 struct OutputSpec {

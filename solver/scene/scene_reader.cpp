@@ -261,6 +261,7 @@ Scene scene_from_table(const toml::table& root, SceneDiagnostics& diagnostics) {
   contact.read_real("cds_radius_fraction", scene.contact.cds_radius_fraction, Need::optional,
                     non_negative);
   contact.read_bool("walls", scene.contact.walls);
+  contact.read_choice("time_stepping", scene.contact.time_stepping, schema::contact_time_stepping_choices);
   TomlTableReader output = section("output");
   output.reject_unknown_keys(schema::output_keys);
   output.read_string("file", scene.output.file);

@@ -6,6 +6,7 @@
 #include <exception>
 #include <stdexcept>
 
+#include "contact/contact_subcycle.hpp"
 #include "solid/stable_substep.hpp"
 #include "solid/symplectic_euler.hpp"
 
@@ -54,7 +55,46 @@ void advance_rigid(const SolidStepInputs& in, double dt_sub, const BodyCoupling&
 
 namespace {
 
-// One group (groups.members) from t^n to t^n + dt in n_sub sub-steps.
+// The force on every point of a mass-spring body other than its springs, F_f + F_int +
+// M (1 - rho_f/rho_s) g + contact (null: none, the inner loop adds the contacts), into
+// c.external_force.
+void external_force(const SolidStepInputs& in, const std::vector<Vec2>* contact, const MassSpringBody& body,
+                    BodyCoupling& c) {
+  // M (1 - rho_f/rho_s) g: gravity on the body minus the buoyancy of the displaced fluid
+  // (no gravity in the fluid, METHOD.md §2.6); with variant K the body's full mass M stays
+  // on the left-hand side and the inner fluid's inertia arrives through F_int (§1.7).
+  const double buoyancy_factor = 1.0 - in.fluid_density / body.density;
+  for (int p = 0; p < body.n_points(); ++p)
+    for (int d = 0; d < 2; ++d)
+      c.external_force[p][d] = c.fluid_force[p][d] + c.inner_fluid_force[p][d] +
+                               (contact != nullptr ? (*contact)[p][d] : 0.0) +
+                               body.mass[p] * buoyancy_factor * in.gravity[d];
+}
+
+// One group of mass-spring bodies with explicit springs in n_sub outer sub-steps, the contacts in
+// the inner loop (n_inner inner steps per sub-step). frozen is scratch (the caller's contact_work
+// arrays, one per body): the force on each point other than springs and contacts.
+void advance_group_inner_loop(const SolidStepInputs& in, const std::vector<SwellingSchedule>& swelling,
+                              const ContactInnerLoop& inner_loop, const BodyMask& members, int n_sub, int n_inner,
+                              std::vector<BodyCoupling>& coupling, std::vector<std::vector<Vec2>>& frozen,
+                              std::vector<double>& diameter_rate, std::vector<MassSpringBody>& bodies,
+                              double& contact_energy) {
+  const double dt_sub = in.dt / n_sub;
+  for (int k = 0; k < n_sub; ++k) {
+    const double time_k = in.time + k*dt_sub;
+    for (std::size_t b = 0; b < bodies.size(); ++b) {
+      if (!selected(members, b)) continue;
+      if (swelling[b].enabled) apply_swelling(bodies[b], swelling[b].diameter(time_k));  // L0, M follow s(t), §1.8
+      diameter_rate[b] =
+          swelling[b].enabled ? (swelling[b].diameter(time_k + dt_sub) - swelling[b].diameter(time_k)) / dt_sub : 0.0;
+      external_force(in, nullptr, bodies[b], coupling[b]);
+      std::copy(coupling[b].external_force.begin(), coupling[b].external_force.end(), frozen[b].begin());
+    }
+    contact_energy += inner_loop(bodies, members, dt_sub, n_inner, frozen, /*continues=*/k > 0, diameter_rate);
+  }
+}
+
+// One group (groups.members) from t^n to t^n + dt in n_sub shared sub-steps.
 void advance_group(const SolidStepInputs& in, const std::vector<SwellingSchedule>& swelling,
                    const ContactForces& contact_forces, const BodyMask& members, const std::vector<char>& implicit_of_body,
                    std::vector<ImplicitSpringSystem>& implicit, int n_sub,
@@ -85,14 +125,7 @@ void advance_group(const SolidStepInputs& in, const std::vector<SwellingSchedule
         place_points(rigid[b], body);
         continue;
       }
-      // M (1 - rho_f/rho_s) g: gravity on the body minus the buoyancy of the displaced fluid
-      // (no gravity in the fluid, docs/method.md §2.6); with variant K the body's full mass M stays
-      // on the left-hand side and the inner fluid's inertia arrives through F_int (§1.7).
-      const double buoyancy_factor = 1.0 - in.fluid_density / body.density;
-      for (int p = 0; p < body.n_points(); ++p)
-        for (int d = 0; d < 2; ++d)
-          c.external_force[p][d] = c.fluid_force[p][d] + c.inner_fluid_force[p][d] + contact_work[b][p][d] +
-                                   body.mass[p] * buoyancy_factor * in.gravity[d];
+      external_force(in, &contact_work[b], body, c);
       if (implicit_of_body[b]) implicit[b].advance(body, dt_sub, c.external_force);  // no spring limit
       else advance_symplectic_euler_in_place(body, dt_sub, c.external_force);  // rebuilt every sub-step above
     }
@@ -113,14 +146,18 @@ namespace {
 
 // Sets groups.members to group g (global mode, g = -1: the empty mask, all bodies), decides the
 // spring integrator of its mass-spring bodies (groups.implicit_of_body) and returns the sub-steps
-// the group needs in this step (0: no members).
+// the group needs in this step (0: no members). inner_substeps: the inner contact steps per
+// sub-step when the group takes the inner loop (its sub-step is then its springs' alone), else 0.
 int group_substeps(const SolidStepInputs& in, SubstepGroups& groups, int g, const std::vector<MassSpringBody>& bodies,
-                   SpectralWorkspace& scratch) {
+                   SpectralWorkspace& scratch, int& inner_substeps) {
+  inner_substeps = 0;
   if (g < 0) groups.members.clear();
   else groups.members.resize(bodies.size());
   groups.implicit_of_body.resize(bodies.size());
-  double dt_s = g < 0 ? in.max_substep : groups.max_substep[g];
+  const double contact_dt = g < 0 ? in.max_substep : groups.max_substep[g];
+  double spring_dt = HUGE_VAL;
   int n_members = 0;
+  bool inner_loop_fits = static_cast<bool>(groups.inner_loop) && std::isfinite(contact_dt);
   for (std::size_t b = 0; b < bodies.size(); ++b) {
     if (g >= 0) groups.members[b] = groups.group_of[b] == g ? 1 : 0;
     if (!selected(groups.members, b)) continue;
@@ -129,12 +166,26 @@ int group_substeps(const SolidStepInputs& in, SubstepGroups& groups, int g, cons
     const bool forced_implicit = bodies[b].integrator == SpringIntegrator::implicit_euler;
     const double spring_substep = forced_implicit ? HUGE_VAL : stable_substep(bodies[b], /*safety=*/0.5, scratch);
     groups.implicit_of_body[b] = uses_implicit_springs(bodies[b], in.dt, spring_substep) ? 1 : 0;
-    if (!groups.implicit_of_body[b]) dt_s = std::min(dt_s, spring_substep);
+    if (!groups.implicit_of_body[b]) spring_dt = std::min(spring_dt, spring_substep);
+    // Rigid and prescribed bodies move all their points at once; implicit springs are not slow.
+    if (bodies[b].kind != BodyKind::mass_spring || groups.implicit_of_body[b]) inner_loop_fits = false;
   }
   if (n_members == 0) return 0;
   if (in.fixed_substeps > 0) return in.fixed_substeps;
-  if (!(dt_s > 0.0)) throw std::runtime_error("advance_bodies: non-positive stable sub-step");
-  return std::max(1, static_cast<int>(std::ceil(in.dt / dt_s * (1.0 - 1e-12))));
+  const auto substeps = [&](double span, double limit) {
+    if (!(limit > 0.0)) throw std::runtime_error("advance_bodies: non-positive stable sub-step");
+    return std::max(1, static_cast<int>(std::ceil(span / limit * (1.0 - 1e-12))));
+  };
+  if (inner_loop_fits) {
+    // Only where it pays: springs slower than the contact (stiff bodies keep the shared sub-step).
+    const int n_outer = substeps(in.dt, inner_loop_outer_fraction * spring_dt);
+    const int n_inner = substeps(in.dt / n_outer, contact_dt);
+    if (n_inner >= 2) {
+      inner_substeps = n_inner;
+      return n_outer;
+    }
+  }
+  return substeps(in.dt, std::min(contact_dt, spring_dt));
 }
 
 // Group numbers to visit: -1 alone in the global mode, else 0 .. n_groups - 1.
@@ -164,8 +215,12 @@ SolidStepCount count_substeps(const SolidStepInputs& in, SubstepGroups& groups,
   groups.substeps_of_body.assign(bodies.size(), 0);
   groups.group_substeps.reserve(bodies.size());  // at most one group per body: sized once
   groups.group_substeps.clear();
+  groups.group_inner_substeps.reserve(bodies.size());
+  groups.group_inner_substeps.clear();
   for (int g = first_group(groups, bodies); g < end_group(groups, bodies); ++g) {
-    groups.group_substeps.push_back(group_substeps(in, groups, g, bodies, scratch));
+    int inner = 0;
+    groups.group_substeps.push_back(group_substeps(in, groups, g, bodies, scratch, inner));
+    groups.group_inner_substeps.push_back(inner);
     record(groups, groups.group_substeps.back(), groups.substeps_of_body, count);
   }
   return count;
@@ -191,6 +246,7 @@ SolidStepCount advance_bodies(const SolidStepInputs& in, const std::vector<Swell
   // thread count. Exceptions (a blow-up) are caught per group; the lowest group's is rethrown.
   const int n_groups = end - first;
   groups.group_work.assign(n_groups, 0.0);
+  groups.diameter_rate.resize(bodies.size());  // each group writes its members' entries
   std::exception_ptr error;
   int error_group = n_groups;
 #if defined(_OPENMP)
@@ -205,8 +261,13 @@ SolidStepCount advance_bodies(const SolidStepInputs& in, const std::vector<Swell
       for (std::size_t b = 0; b < bodies.size(); ++b) mask[b] = groups.group_of[b] == first + k ? 1 : 0;
     }
     try {
-      advance_group(in, swelling, contact_forces, mask, groups.implicit_of_body, implicit, groups.group_substeps[k],
-                    coupling, contact_work, rigid, bodies, groups.group_work[k]);
+      if (groups.group_inner_substeps[k] > 0)
+        advance_group_inner_loop(in, swelling, groups.inner_loop, mask, groups.group_substeps[k],
+                                 groups.group_inner_substeps[k], coupling, contact_work, groups.diameter_rate, bodies,
+                                 groups.group_work[k]);
+      else
+        advance_group(in, swelling, contact_forces, mask, groups.implicit_of_body, implicit, groups.group_substeps[k],
+                      coupling, contact_work, rigid, bodies, groups.group_work[k]);
     } catch (...) {
 #if defined(_OPENMP)
 #pragma omp critical(ibms_group_error)

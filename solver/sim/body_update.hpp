@@ -35,6 +35,18 @@ using ContactForces = std::function<void(const std::vector<MassSpringBody>& bodi
 void no_contact_forces(const std::vector<MassSpringBody>& bodies, const BodyMask& members, double time,
                        std::vector<std::vector<Vec2>>& forces);
 
+// Inner-loop seam (contact/contact_subcycle.hpp): advances the members' points over dt_outer with the
+// DEM contacts re-evaluated in n_inner inner steps on the points near a contact only, the springs
+// and frozen_force[b][p] (fluid, inner fluid, buoyant gravity) held over dt_outer; returns the work
+// of the contact forces [energy/length]. Called concurrently for different groups, as
+// ContactForces. Empty: every group takes the shared sub-step.
+// continues: the call follows the previous outer step of the same group within the fluid step;
+// diameter_rate: dD/dt of each body over the outer step (swelling; the members' entries).
+using ContactInnerLoop = std::function<double(std::vector<MassSpringBody>& bodies, const BodyMask& members,
+                                              double dt_outer, int n_inner,
+                                              const std::vector<std::vector<Vec2>>& frozen_force, bool continues,
+                                              const std::vector<double>& diameter_rate)>;
+
 // Sets every body's diameter (natural lengths) and masses (constant density) to D(time).
 void apply_swelling_schedules(const std::vector<SwellingSchedule>& swelling, double time,
                               std::vector<MassSpringBody>& bodies);
@@ -43,14 +55,20 @@ void apply_swelling_schedules(const std::vector<SwellingSchedule>& swelling, dou
 // group advance together), max_substep[g] the contact sub-step bound of group g (HUGE_VAL when it
 // cannot touch anything). Empty group_of: all bodies one group bounded by SolidStepInputs::max_substep
 // (the global sub-step of the first version, run.solid_substeps = "global").
+// With inner_loop set, a group that may touch something and holds only mass_spring bodies with
+// explicit springs takes its springs' sub-step (outer) and the contact sub-step only in the inner
+// loop over the points near a contact (multiple time stepping, contact_subcycle.hpp).
 struct SubstepGroups {
   std::vector<int> group_of;
   std::vector<double> max_substep;
+  ContactInnerLoop inner_loop;        // empty: the shared sub-step for every group
+  std::vector<int> group_inner_substeps;  // out: inner steps per outer sub-step of each group (0: shared)
   BodyMask members;  // scratch: the group being advanced
   std::vector<int> substeps_of_body;  // out: the sub-steps body b took in the latest step
   std::vector<char> implicit_of_body; // out: body b's springs took implicit steps in the latest step
   std::vector<int> group_substeps;    // scratch: sub-steps of each group in the latest step
   std::vector<double> group_work;     // scratch: contact work of each group
+  std::vector<double> diameter_rate;  // scratch: dD/dt of each body over its outer sub-step
   double contact_work = 0.0;          // out: work of all contact forces on all bodies in the latest step
                                       // [energy/length]; <= 0 for a dissipative contact law, walls at rest
 };

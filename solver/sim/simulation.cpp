@@ -113,6 +113,28 @@ Simulation::Simulation(const Scene& scene)
         last_contact_stats.include(stats);
       }
     };
+    if (scene.contact.time_stepping == "inner_loop") {
+      contact_inner_loop = [this](std::vector<MassSpringBody>& bodies, const BodyMask& members, double dt_outer,
+                                  int n_inner, const std::vector<std::vector<Vec2>>& frozen_force, bool continues,
+                                  const std::vector<double>& diameter_rate) {
+        thread_local ContactSubcycler subcycler;  // this thread's neighbour list and scratch
+        const auto start = std::chrono::steady_clock::now();
+        const ContactSubcycleResult result =
+            subcycler.advance(contact_model_, contact_box_, dt_outer, n_inner, frozen_force, members, bodies, continues,
+                              diameter_rate);
+        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+#if defined(_OPENMP)
+#pragma omp critical(ibms_contact_stats)
+#endif
+        {
+          timers_.add(Stage::contacts, seconds, 1);
+          total_pair_checks += result.stats.n_pair_checks;
+          total_contact_inner_steps += result.inner_steps;
+          last_contact_stats.include(result.stats);
+        }
+        return result.work;
+      };
+    }
   }
   // Variant K: I_T at t = 0 (region X^0, velocity u^0), the first "previous" value.
   if (inner_fluid_inertia == &kempe_inner_fluid_inertia)
@@ -166,6 +188,7 @@ SubstepGroups& Simulation::substep_groups(double dt) {
 }
 
 void Simulation::plan_substep_groups(double dt, SubstepGroups& groups) const {
+  if (static_cast<bool>(groups.inner_loop) != static_cast<bool>(contact_inner_loop)) groups.inner_loop = contact_inner_loop;
   if (scene_.run.solid_substeps == "global") {
     groups.group_of.clear();
     return;
@@ -251,7 +274,12 @@ std::vector<std::string> Simulation::stage_names() const {
                      (scene_.run.solid_substeps == "per_group" ? "; each group of bodies that may touch within the step "
                                                                  "at its own sub-step)"
                                                                : "; all bodies at the smallest sub-step)"));
-    if (has_contacts()) stages.push_back("  contacts (DEM spring-dashpots on CDS, every sub-step; walls)");
+    if (has_contacts())
+      stages.push_back(scene_.contact.time_stepping == "inner_loop"
+                           ? "  contacts (DEM spring-dashpots on CDS, walls; groups of explicit mass-spring bodies: "
+                             "inner loop at the contact sub-step over the points near a contact, springs and "
+                             "fluid held over outer steps of 1/16 of the springs' sub-step)"
+                           : "  contacts (DEM spring-dashpots on CDS, every sub-step; walls)");
     if (has_pair_search()) stages.push_back("  pair search (CDS: body-box broad phase, cell list in periodic boxes; every sub-step)");
   }
   stages.push_back("diagnostics");

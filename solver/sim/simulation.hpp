@@ -9,6 +9,7 @@
 
 #include "contact/contact_forces.hpp"
 #include "contact/contact_model.hpp"
+#include "contact/contact_subcycle.hpp"
 #include "core/grid.hpp"
 #include "fluid/fluid_solver.hpp"
 #include "ibm/delta_kernel.hpp"
@@ -61,6 +62,9 @@ class Simulation {
 
   InnerFluidInertia inner_fluid_inertia = nullptr;  // variant K or A, from ibm.inner_fluid_inertia
   ContactForces contact_forces = no_contact_forces; // the contact seam (solver/contact wires in here)
+  // The contacts' inner loop (contact.time_stepping = "inner_loop"; empty: shared sub-steps).
+  ContactInnerLoop contact_inner_loop;
+  long total_contact_inner_steps = 0;  // inner contact steps over the run, summed over groups [-]
 
   // DEM contacts (solver/contact), active when contact.stiffness > 0.
   bool has_contacts() const { return contact_model_.enabled(); }

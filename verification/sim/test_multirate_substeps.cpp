@@ -10,6 +10,9 @@
 //    bodies) drops by the far wheel's share;
 //  - the pair starts in two groups (sub-stepped at its springs' rate) and is one group, with the
 //    contact sub-step, in the step in which the contact begins.
+// These runs take the shared sub-step (contact.time_stepping = "shared"). The contacts' inner loop
+// (contact/contact_subcycle.hpp), in the same per-group runs with the fluid, against them: the
+// deepest overlap within 2 % and the colliding wheels' paths within 1e-3 D.
 #define BOOST_TEST_MODULE multirate_substeps
 #include <boost/test/unit_test.hpp>
 
@@ -22,7 +25,7 @@ using namespace ibms;
 
 namespace {
 
-Scene collision_scene(const char* substeps) {
+Scene collision_scene(const char* substeps, const char* time_stepping) {
   Scene scene;
   scene.source_file = "(test scene)";
   scene.domain = {2.0, 1.0, 64, 32, false, false};
@@ -47,20 +50,22 @@ Scene collision_scene(const char* substeps) {
   scene.contact.stiffness = 2.0e5;
   scene.contact.restitution_coefficient = 0.8;
   scene.contact.cds_radius_fraction = 0.05;
+  scene.contact.time_stepping = time_stepping;
   return scene;
 }
 
 struct Outcome {
   double max_overlap = 0.0;
   long body_substeps = 0;
+  long inner_steps = 0;                // inner contact steps (contact.time_stepping = "inner_loop")
   std::vector<Vec2> centre;            // of each body at the end
   int first_contact_step = -1;         // step in which an overlap first appeared
   bool pair_apart_at_start = false;    // step 0: the pair in different groups
   bool pair_joined_at_contact = false; // the step of the first overlap: the pair in one group
 };
 
-Outcome run(const char* substeps) {
-  Simulation sim(collision_scene(substeps));
+Outcome run(const char* substeps, const char* time_stepping = "shared") {
+  Simulation sim(collision_scene(substeps, time_stepping));
   Outcome out;
   constexpr double dt = 0.004;
   constexpr int n_steps = 80;
@@ -75,6 +80,7 @@ Outcome run(const char* substeps) {
     if (out.first_contact_step == n) out.pair_joined_at_contact = !apart;
   }
   out.body_substeps = sim.total_body_substeps;
+  out.inner_steps = sim.total_contact_inner_steps;
   for (const MassSpringBody& body : sim.bodies()) out.centre.push_back(centre_of_mass(body));
   return out;
 }
@@ -100,4 +106,22 @@ BOOST_AUTO_TEST_CASE(per_group_substeps_catch_a_contact_beginning_inside_a_step)
   BOOST_TEST(grouped.centre[1][0] - grouped.centre[0][0] > diameter);
   // The far wheel skipped the contact sub-steps: at most 2/3 of the global work plus its springs' share.
   BOOST_TEST(grouped.body_substeps < global.body_substeps);
+}
+
+BOOST_AUTO_TEST_CASE(inner_loop_matches_the_shared_substep_with_the_fluid) {
+  const Outcome shared = run("per_group", "shared");
+  const Outcome inner = run("per_group", "inner_loop");
+  constexpr double diameter = 0.2;
+  double largest_shift = 0.0;
+  for (int b = 0; b < 2; ++b)
+    for (int d = 0; d < 2; ++d) largest_shift = std::max(largest_shift, std::abs(inner.centre[b][d] - shared.centre[b][d]));
+  BOOST_TEST_MESSAGE("max overlap: shared " << shared.max_overlap << ", inner loop " << inner.max_overlap
+                     << "; largest centre difference " << largest_shift / diameter << " D; body sub-steps "
+                     << shared.body_substeps << " / " << inner.body_substeps << ", inner contact steps "
+                     << inner.inner_steps);
+  BOOST_TEST_REQUIRE(shared.max_overlap > 0.0);
+  BOOST_TEST(inner.inner_steps > 0);  // the inner loop ran
+  BOOST_TEST(inner.max_overlap <= 1.02 * shared.max_overlap);
+  BOOST_TEST(inner.max_overlap >= 0.98 * shared.max_overlap);
+  BOOST_TEST(largest_shift <= 1e-3 * diameter);
 }

@@ -1,0 +1,153 @@
+// Multiple time stepping of the DEM contacts (Tuckerman, Berne & Martyna 1992, r-RESPA, with the
+// slow force held constant over the outer step instead of applied as impulses): the contact law
+// of contact_forces.hpp, unchanged (linear spring-dashpot on the CDS at k_Dn, dashpot from e_D,
+// shared among parallel pairs), advanced in an inner loop of short steps over the points near a
+// contact only, while the slow forces on every point (springs and their dashpots; the frozen
+// fluid reaction, inner-fluid term and buoyant gravity) are evaluated once per outer step.
+//
+// One outer step of length dt = n dt_i from x^k, U^k, with a = F_slow(x^k, U^k) / m per point
+// (plus r t, r the rate of change of F_slow / m between the previous outer step's start and this
+// one's within the fluid step, 0 in its first: the slow force is continuous across outer steps to
+// second order, so it sets no undamped resting contact ringing; left out of the formulas below):
+//   1. neighbour list: the CDS pairs of different bodies (and the CDS-wall pairs) closer than a
+//      skin s = 3 (V T + A T^2 / 2), T the time left, V and A the largest point speed and slow
+//      acceleration of the members (s >= a tenth of the smallest CDS radius); their points are
+//      the candidates;
+//   2. n inner steps, on the candidates only: F_c at the current x, U; U += dt_i (a + F_c / m);
+//      x += dt_i (U - dt_i a / 2) (symplectic Euler for the contact, the held slow force exact);
+//   3. every other point moves as a candidate would without contact, in closed form:
+//      x += dt U^k + dt^2 a / 2, U += dt a;
+//   4. the springs again at the new x and the predicted U: U += dt (F_s^{k+1} - F_s^k) / (2 m)
+//      (less dt^2 r / 2: the velocity change over the step is dt (F^k + F^{k+1}) / (2 m)).
+// The CDS radii of swelling bodies grow linearly over the inner steps (a step in the radius per
+// outer step, about a third of the static overlap in the swelling cavity at k_Dn = 1e4, set its
+// e_D = 1 resting contacts ringing: 34 instead of 45 touching CDS pairs on average).
+//      Without contact, 3. and 4. are velocity Verlet for the slow forces: symplectic, second
+//      order, stable for omega dt < 2 as symplectic Euler.
+// The slow force acts on a contact as a steady force, not as an impulse dt F / m per outer step:
+// an impulse method bounces a resting point by dt F / sqrt(m k_Dn), dt omega_c times the static
+// overlap F / k_Dn (measured on soft wheels pressed together: largest overlaps up to 30 % above the
+// shared sub-step's with impulses, test_contact_inner_loop).
+// A point off the list meets no contact force, so the list stays valid while twice the largest
+// displacement since it was built (candidates measured, the others bounded by V t + A t (t + dt_i) / 2)
+// is below s; otherwise every point is brought to the current inner step and the list is rebuilt:
+// no contact is missed, whatever the rebound speeds.
+// Only mass_spring bodies with explicit springs take part (the caller's choice: a rigid or
+// prescribed body moves all its points at once, implicit springs are not slow).
+#pragma once
+#include <array>
+#include <vector>
+
+#include "contact/cds_pair_search.hpp"
+#include "contact/contact_forces.hpp"
+#include "contact/contact_model.hpp"
+#include "solid/mass_spring_body.hpp"
+
+namespace ibms {
+
+// The outer step of a group in the inner loop is at most this fraction of its springs' stable
+// sub-step (safety 0.5 already in it, so omega_max dt <= 0.0625): an impact excites the fastest
+// spring modes of the rim, which the held slow force must resolve, and the springs' dashpots act
+// on a rebounding point only from the next outer step. Measured on soft wheels (k_s = 100,
+// k_Dn = 1e4 and 1e7, e_D = 1, test_contact_inner_loop's set-up): the mechanical energy after a
+// wheel-wall or wheel-wheel impact changes by 1.0-1.1 % at the full stable sub-step, 0.2-1.1 % at
+// a half, <= 0.23 % at a quarter, <= 0.03 % at an eighth; the wheel's centre-of-mass rebound from
+// the wall at k_Dn = 1e7 is 0.274 at a quarter and 0.1280-0.1282 at an eighth and below, as with
+// the shared sub-step (0.1281). With the fluid (test_multirate_substeps: damped wheels, e_D = 0.8)
+// the largest overlap lies 2.35 % below the shared sub-step's at an eighth, 1.07 % at a sixteenth.
+inline constexpr double inner_loop_outer_fraction = 0.0625;
+
+struct ContactSubcycleResult {
+  ContactStats stats;      // merged over the inner steps, as over shared sub-steps
+  double work = 0.0;       // sum over inner steps of F_c . U dt_inner, all points [energy/length]
+  long inner_steps = 0;    // inner steps taken (0: no point was near a contact in the step) [-]
+  int list_builds = 0;     // neighbour lists built (1 + rebuilds) [-]
+};
+
+// Scratch and neighbour list of the inner loop: kept by the caller (one per thread), so that no
+// allocation happens once its vectors have grown.
+class ContactSubcycler {
+ public:
+  // Advances the points of the member bodies (members; empty = all) over dt_outer in n_inner inner
+  // steps as described above. external_force: the frozen force on every point other than springs
+  // and contacts, one vector of n_points per body (only members read) [force/length].
+  // continues: this step follows the previous call's step for the same members within one fluid
+  // step; the slow force then varies linearly over the step at the rate between the two steps'
+  // starts (continuous across outer steps to second order; held when false).
+  // diameter_rate: dD/dt of each body (empty: none): the CDS radii grow continuously over the
+  // inner steps (a swelling step in the radius would set an undamped resting contact ringing).
+  ContactSubcycleResult advance(const ContactModel& model, const WallBox& box, double dt_outer, int n_inner,
+                                const std::vector<std::vector<std::array<double, 2>>>& external_force,
+                                const BodyMask& members, std::vector<MassSpringBody>& bodies, bool continues = false,
+                                const std::vector<double>& diameter_rate = {});
+
+ private:
+  using Vec = std::array<double, 2>;
+  struct Point {     // a candidate point, its state copied here for the inner loop
+    int body = 0, point = 0;
+    double inverse_mass = 0.0;
+    Vec position{}, velocity{}, force{}, anchor{};  // anchor: position when the list was built
+    Vec slow_acceleration{};                        // a = F_slow / m at the step's start [length/time^2]
+    Vec slow_rate{};                                // its rate of change over the step [length/time^3]
+  };
+  struct Pair {      // two candidate points of different bodies
+    int a = 0, b = 0;
+    Vec shift{};              // periodic image: x_b - x_a + shift is the separation
+    double radius_sum = 0.0;  // r_a + r_b at the list's inner time [length]
+    double radius_rate = 0.0; // d(r_a + r_b)/dt [length/time]
+    double damping = 0.0;     // 2 zeta sqrt(m_eff k_Dn): the dashpot of one pair, before sharing
+    int share = 0;            // the pairs of one body pair (or body and wall) share a dashpot
+  };
+  struct Wall {      // a candidate point and one wall
+    int a = 0, axis = 0, side = 0;
+    double radius = 0.0, coordinate = 0.0, damping = 0.0;
+    double radius_rate = 0.0;  // dr/dt [length/time]
+    int share = 0;
+  };
+  struct Share {     // S = sum (n_p . N)^2 over the active pairs of one body pair (contact_forces.hpp)
+    int body_a = 0, partner = 0;  // partner: a body, or -1 - wall
+    Vec normal_sum{};
+    int n_active = 0;
+    double inverse_sqrt_s = 1.0;
+  };
+  struct Active {    // one touching pair or wall in the current inner step
+    int index = 0;   // into pairs_ (wall = false) or walls_ (wall = true)
+    bool wall = false;
+    double overlap = 0.0;
+    Vec normal{};
+  };
+
+  void build_list(const ContactModel& model, const WallBox& box, double skin, const BodyMask& members,
+                  const std::vector<MassSpringBody>& bodies, double time);
+  void release_list(std::vector<MassSpringBody>& bodies);  // candidates' state back into the bodies
+  int candidate(int body, int point, const std::vector<MassSpringBody>& bodies);
+  int share_of(int body_a, int partner);
+  void contact_forces(const ContactModel& model, double time, ContactStats& stats);
+  void kick_and_drift(double dt, double time, double& work);
+  // Off-list points from inner step `from` to `to` in closed form (step 3 above).
+  void move_off_list(const BodyMask& members, std::vector<MassSpringBody>& bodies, double dt_inner, int from, int to);
+  // Largest speed and slow acceleration of the members' points (off_list_only: of the points off the list).
+  std::array<double, 2> fastest(const BodyMask& members, const std::vector<MassSpringBody>& bodies,
+                                bool off_list_only) const;
+
+  std::vector<Point> points_;
+  std::vector<Pair> pairs_;
+  std::vector<Wall> walls_;
+  std::vector<Share> shares_;
+  std::vector<Active> active_;
+  std::vector<int> slot_;         // per body and point (offset_[b] + p): candidate index or -1
+  std::vector<int> offset_;
+  std::vector<double> projection_;  // scratch of the sharing sums
+  std::vector<std::vector<Vec>> slow_;    // per body and point: F_slow = external + springs at x^k, U^k
+  std::vector<std::vector<Vec>> spring_;  // per body and point: springs at x^{k+1}, predicted U
+  std::vector<std::vector<Vec>> rate_;    // per body and point: dF_slow/dt over the step (0: held)
+  std::vector<std::vector<Vec>> previous_slow_;  // F_slow at the previous call's start
+  double previous_dt_ = 0.0;
+  std::vector<double> radius_rate_;  // per body: dr_cds/dt over this step [length/time]
+  double time_built_ = 0.0;          // inner time of the list: radii in the list belong to it
+  ContactSpheres spheres_;
+  PairSearchResult search_;
+  long pair_checks_ = 0;
+};
+
+}  // namespace ibms
