@@ -1,6 +1,6 @@
 // RAII ownership of HDF5 identifiers and HDF5 failures turned into exceptions. HDF5's automatic
-// printing of its error stack is switched off; the innermost message of the stack goes into
-// the InputError instead, together with the file path and what we were doing.
+// printing of its error stack is switched off; the exception carries the file path, what we were
+// doing and the reason: an OutputError when a write failed, else an InputError.
 #pragma once
 #include <hdf5.h>
 
@@ -32,7 +32,9 @@ class Hdf5Handle {
 // Switches off HDF5's printing of error stacks to stderr (idempotent).
 void silence_hdf5_errors();
 
-// Throws InputError "<file>: <what>: <innermost HDF5 message>" and clears the HDF5 error stack.
+// Throws and clears the HDF5 error stack: OutputError "<file>: <what>: <system's reason>" when a
+// write to the file failed (the stack holds a write, flush or file-space error), else InputError
+// "<file>: <what>: <innermost HDF5 message>".
 [[noreturn]] void throw_hdf5_error(const std::string& file, const std::string& what);
 
 // `id` wrapped with `closer`; throws (as above) when `id` < 0.

@@ -2,7 +2,8 @@
 # Claims: (1) `ibms run` on bad input exits with code 2, prints exactly one line naming the scene
 # file and the key, and creates no output file; (2) a run that blows up exits with code 3, the
 # message names step, time and place, and the HDF5 output written so far is readable; (3) a failed
-# write of the output exits with code 5 and the system's reason.
+# write of the output exits with code 5 and the system's reason, whether it fails at a flush or
+# inside an HDF5 dataset write. Every run passes its thread count (--threads 1).
 set -u
 ibms=$1; good_scene=$2; body_scene=${3:-}
 work=$(mktemp -d); trap 'rm -rf "$work"' EXIT
@@ -11,7 +12,7 @@ failures=0
 check_bad() {  # name, expected key, ibms arguments...
   local name=$1 key=$2; shift 2
   rm -f out.h5 out.xmf out_*.csv
-  "$ibms" run "$@" -o out.h5 --quiet 2> err.txt; local code=$?
+  "$ibms" run "$@" -o out.h5 --quiet --threads 1 2> err.txt; local code=$?
   local lines; lines=$(wc -l < err.txt)
   local written; written=$(ls out.h5 out.xmf out_*.csv 2>/dev/null)  # no partial output of any kind
   if [[ $code -ne 2 || $lines -ne 1 || -n $written ]] || ! grep -q -- "$key" err.txt; then
@@ -57,7 +58,7 @@ fi
 # Blow-up: a fixed time step far beyond the CFL limit on a coarse cavity.
 rm -f blow.h5
 "$ibms" run good.toml --set domain.cells_x=16 --set domain.cells_y=16 --set run.time_step=5.0 \
-  --set run.end_time=100 -o blow.h5 --quiet 2> err.txt; code=$?
+  --set run.end_time=100 -o blow.h5 --quiet --threads 1 2> err.txt; code=$?
 if [[ $code -ne 3 ]] || ! grep -q "step" err.txt || ! grep -q "cell (" err.txt; then
   echo "FAIL blow-up: exit $code:"; cat err.txt; failures=$((failures + 1))
 elif ! /usr/bin/python3 -c "import h5py,sys; f=h5py.File('blow.h5','r'); assert 'grid' in f and 'scene' in f.attrs" 2>/dev/null; then
@@ -66,17 +67,24 @@ else
   echo "ok   blow-up: $(cat err.txt)"
 fi
 
-# Output failure: writes past a 40 kB file-size limit fail with EFBIG, as on a full
-# disk; the run exits with code 5 (not 2: the input was good), one line naming the file and the
-# system's reason, no crash (HDF5's exit handler is skipped), no stray XDMF temporary.
-rm -f full.*
-( trap '' XFSZ; ulimit -f 40
-  "$ibms" run good.toml --set domain.cells_x=32 --set domain.cells_y=32 --set run.end_time=0.5 -o full.h5 --quiet ) \
-  2> err.txt; code=$?
-if [[ $code -ne 5 ]] || ! grep -q "full.h5.*File too large" err.txt || [[ $(wc -l < err.txt) -ne 1 ]] || ls full.xmf.tmp 2>/dev/null; then
-  echo "FAIL output failure: exit $code:"; cat err.txt; failures=$((failures + 1))
-else
-  echo "ok   output failure: $(cat err.txt)"
-fi
+# Output failure: writes past a file-size limit fail with EFBIG, as on a full disk; the run exits
+# with code 5 (not 2: the input was good), one line naming the file and the system's reason, no
+# crash (HDF5's exit handler is skipped), no stray XDMF temporary. 32^2 fields (8 kB) stay in
+# HDF5's buffers until a flush meets the 40 kB limit; a 128^2 field (128 kB, beyond HDF5's 64 kB
+# sieve buffer) goes to the file inside its dataset write, which meets the 100 kB limit.
+check_full() {  # name, expected message, ulimit -f in kB, ibms arguments...
+  local name=$1 message=$2 limit=$3; shift 3
+  rm -f full.*
+  ( trap '' XFSZ; ulimit -f "$limit"; "$ibms" run good.toml "$@" -o full.h5 --quiet --threads 1 ) 2> err.txt; local code=$?
+  if [[ $code -ne 5 ]] || ! grep -q "$message" err.txt || [[ $(wc -l < err.txt) -ne 1 ]] || ls full.xmf.tmp 2>/dev/null; then
+    echo "FAIL $name: exit $code:"; cat err.txt; failures=$((failures + 1))
+  else
+    echo "ok   $name: $(cat err.txt)"
+  fi
+}
+check_full "output failure at a flush" "full.h5: cannot flush the HDF5 output: File too large" 40 \
+  --set domain.cells_x=32 --set domain.cells_y=32 --set run.end_time=0.5
+check_full "output failure inside a dataset write" "full.h5: cannot write dataset 'u': File too large" 100 \
+  --set domain.cells_x=128 --set domain.cells_y=128 --set run.end_time=0.05 --set output.snapshot_interval=0.01
 echo "$failures failure(s)"
 exit $((failures > 0))
