@@ -21,12 +21,6 @@
 #include "sim/simulation_checkpoint.hpp"
 #include "sim/simulation.hpp"
 
-#ifndef IBMS_VERSION
-#define IBMS_VERSION "unknown"
-#endif
-#ifndef IBMS_GIT_COMMIT
-#define IBMS_GIT_COMMIT "unknown"
-#endif
 
 namespace {
 
@@ -81,7 +75,7 @@ int run_command(const std::string& scene_path, const std::vector<std::string>& o
 
 int main(int argc, char** argv) {
   CLI::App app{"ibms: 2D incompressible flow with immersed deformable, swelling bodies"};
-  app.set_version_flag("--version", std::string("ibms ") + IBMS_VERSION + " (commit " + IBMS_GIT_COMMIT + ")");
+  app.set_version_flag("--version", std::string("ibms ") + ibms::ibms_version() + " (commit " + ibms::ibms_git_commit() + ")");
   app.require_subcommand(1);
   std::string scene_path, output, restart;
   std::vector<std::string> overrides;

@@ -18,9 +18,15 @@ struct MappedStencil {
   std::array<int, 6> ghost_side{};  // 0: interior or periodic image; -1: beyond the low wall; +1: high
 };
 
-// Marker coordinate -> stencil over cells 0..n_cells-1 in one direction.
+// The nodes a stencil maps onto in one direction: the cell centres 0..n-1 (centre m at
+// origin + (m + 1/2) spacing) or the faces 0..n normal to it (face m at origin + m spacing).
+enum class Nodes { centres, faces };
+
+// Marker coordinate -> stencil over the nodes of one direction. Beyond a wall, centre ghost -1-m
+// mirrors centre m and n+m mirrors n-1-m; face -k mirrors face k and n+k mirrors n-k (ghost_side
+// -1 / +1: the linear part of the ghost rule is odd about the wall). Periodic nodes wrap to 0..n-1.
 MappedStencil map_stencil(KernelKind kernel, double coordinate, double origin, double spacing,
-                          int n_cells, bool periodic, const char* axis) {
+                          int n_cells, bool periodic, const char* axis, Nodes nodes = Nodes::centres) {
   const double length = spacing * n_cells;
   if (!std::isfinite(coordinate))
     throw std::invalid_argument(std::string("IB marker has a non-finite ") + axis + " coordinate");
@@ -29,8 +35,9 @@ MappedStencil map_stencil(KernelKind kernel, double coordinate, double origin, d
                                 std::to_string(coordinate));
   if (!periodic && n_cells < kernel_support(kernel))
     throw std::invalid_argument(std::string("fewer cells than the kernel support in ") + axis);
-  // Cell centre m sits at xi = m.
-  const double xi = (coordinate - origin) / spacing - 0.5;
+  // Node m sits at xi = m; a centre's mirror index is one lower than a face's.
+  const int shift = nodes == Nodes::centres ? 1 : 0;
+  const double xi = (coordinate - origin) / spacing - 0.5 * shift;
   const KernelStencil stencil = kernel_stencil(kernel, xi);
   MappedStencil mapped;
   mapped.n_nodes = stencil.n_nodes;
@@ -40,37 +47,10 @@ MappedStencil map_stencil(KernelKind kernel, double coordinate, double origin, d
     if (periodic) {
       node = ((node % n_cells) + n_cells) % n_cells;
     } else if (node < 0) {
-      node = -1 - node;  // ghost -1-m mirrors interior m
+      node = -shift - node;
       side = -1;
-    } else if (node >= n_cells) {
-      node = 2*n_cells - 1 - node;  // ghost n+m mirrors interior n-1-m
-      side = +1;
-    }
-    mapped.cell[k] = node;
-    mapped.weight[k] = stencil.weight[k];
-    mapped.ghost_side[k] = side;
-  }
-  return mapped;
-}
-
-// Marker coordinate -> stencil over the faces 0..n_cells normal to one direction (face m at
-// origin + m spacing). Beyond a wall, face -k mirrors face k and face n + k mirrors face n - k
-// (ghost_side -1 / +1: the normal component is odd about the wall); periodic faces wrap to 0..n-1.
-MappedStencil map_face_stencil(KernelKind kernel, double coordinate, double origin, double spacing, int n_cells,
-                               bool periodic) {
-  const KernelStencil stencil = kernel_stencil(kernel, (coordinate - origin) / spacing);
-  MappedStencil mapped;
-  mapped.n_nodes = stencil.n_nodes;
-  for (int k = 0; k < stencil.n_nodes; ++k) {
-    int node = stencil.first + k;
-    int side = 0;
-    if (periodic) {
-      node = ((node % n_cells) + n_cells) % n_cells;
-    } else if (node < 0) {
-      node = -node;
-      side = -1;
-    } else if (node > n_cells) {
-      node = 2 * n_cells - node;
+    } else if (node > n_cells - shift) {
+      node = 2*n_cells - shift - node;
       side = +1;
     }
     mapped.cell[k] = node;
@@ -163,11 +143,12 @@ void spread_to_faces(const Grid& grid, KernelKind kernel, const std::vector<std:
     throw std::invalid_argument("spread_to_faces: markers, forces and volumes differ in length");
   const double inverse_cell_area = 1.0 / (grid.dx() * grid.dy());
   for (std::size_t l = 0; l < markers.size(); ++l) {
-    // Cell-centre stencils check the marker lies in the box; the face stencils reuse its position.
     const MappedStencil cx = map_stencil(kernel, markers[l][0], grid.origin_x, grid.dx(), grid.nx, grid.periodic_x, "x");
     const MappedStencil cy = map_stencil(kernel, markers[l][1], grid.origin_y, grid.dy(), grid.ny, grid.periodic_y, "y");
-    const MappedStencil fx = map_face_stencil(kernel, markers[l][0], grid.origin_x, grid.dx(), grid.nx, grid.periodic_x);
-    const MappedStencil fy = map_face_stencil(kernel, markers[l][1], grid.origin_y, grid.dy(), grid.ny, grid.periodic_y);
+    const MappedStencil fx =
+        map_stencil(kernel, markers[l][0], grid.origin_x, grid.dx(), grid.nx, grid.periodic_x, "x", Nodes::faces);
+    const MappedStencil fy =
+        map_stencil(kernel, markers[l][1], grid.origin_y, grid.dy(), grid.ny, grid.periodic_y, "y", Nodes::faces);
     const double ax = marker_force[l][0] * marker_volume[l] * inverse_cell_area;
     const double ay = marker_force[l][1] * marker_volume[l] * inverse_cell_area;
     // Each reflection is a factor -1, as for the cell centres: the normal component is odd about

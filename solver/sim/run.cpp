@@ -267,6 +267,9 @@ void write_timing(OutputFile& out, const Simulation& sim, double wall_seconds) {
 
 }  // namespace
 
+const char* ibms_version() { return IBMS_VERSION; }
+const char* ibms_git_commit() { return IBMS_GIT_COMMIT; }
+
 std::string stage_timing_table(const Simulation& sim, double wall_seconds) {
   std::string text = fmt::format("{:<14} {:>10} {:>7} {:>10}\n", "stage", "seconds", "share", "calls");
   for (int s = 0; s < static_cast<int>(Stage::count); ++s) {
@@ -309,7 +312,7 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& options) {
                        "being restarted from; give another output file with -o");
     next_snapshot = restore_simulation(read_checkpoint(options.restart_file), options.restart_file, sim);
   }
-  OutputFile out(summary.output_path, scene.resolved_text, sim.grid(), IBMS_VERSION, IBMS_GIT_COMMIT);
+  OutputFile out(summary.output_path, scene.resolved_text, sim.grid(), ibms_version(), ibms_git_commit());
 
   const auto start = clock::now();
   auto last_progress = start;

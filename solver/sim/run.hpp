@@ -31,6 +31,10 @@ struct RunSummary {
 
 RunSummary run_simulation(Simulation& sim, const RunOptions& options);
 
+// The version and git commit this library was built from (what the output file records).
+const char* ibms_version();
+const char* ibms_git_commit();
+
 // The /timing figures as a table (stage, seconds, share of the wall time, calls; the solid
 // sub-step totals): what `ibms run` prints at the end unless --quiet.
 std::string stage_timing_table(const Simulation& sim, double wall_seconds);
