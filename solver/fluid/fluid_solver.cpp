@@ -376,6 +376,15 @@ void FluidSolver::homogeneous_projection(double dt, CellField& increment_x, Cell
   poisson_->solve(/*a=*/0.0, /*b=*/1.0, buffer_.data(), buffer_.data());
   phi_.copy_interior_from(buffer_.data());
   fill_correction_ghosts(grid_, boundaries_, phi_);
+  // The face increment, divergence-free: U_g - dt G_f phi on the corrected faces.
+  const double inv_dx = 1.0 / grid_.dx(), inv_dy = 1.0 / grid_.dy();
+  IBMS_PARALLEL_ROWS
+  for (int j = 0; j < grid_.ny; ++j)
+    for (int i = faces.x_first; i <= faces.x_last; ++i) star_face_x_(i, j) -= dt * (phi_(i, j) - phi_(i - 1, j)) * inv_dx;
+  IBMS_PARALLEL_ROWS
+  for (int j = faces.y_first; j <= faces.y_last; ++j)
+    for (int i = 0; i < grid_.nx; ++i) star_face_y_(i, j) -= dt * (phi_(i, j) - phi_(i, j - 1)) * inv_dy;
+  sync_periodic_faces(grid_, star_face_x_, star_face_y_);
   centre_gradient(grid_, phi_, grad_x_, grad_y_);
   IBMS_PARALLEL_ROWS
   for (int j = 0; j < grid_.ny; ++j)
@@ -388,16 +397,13 @@ void FluidSolver::homogeneous_projection(double dt, CellField& increment_x, Cell
 double FluidSolver::project_increment(FluidState& state, double dt, CellField& increment_x, CellField& increment_y,
                                       const FaceField* face_increment_x, const FaceField* face_increment_y) {
   homogeneous_projection(dt, increment_x, increment_y, face_increment_x, face_increment_y);
-  const double inv_dx = 1.0 / grid_.dx(), inv_dy = 1.0 / grid_.dy();
   const FaceRange faces = corrected_faces();
   IBMS_PARALLEL_ROWS
   for (int j = 0; j < grid_.ny; ++j)
-    for (int i = faces.x_first; i <= faces.x_last; ++i)
-      state.velocity_face_x(i, j) += star_face_x_(i, j) - dt * (phi_(i, j) - phi_(i - 1, j)) * inv_dx;
+    for (int i = faces.x_first; i <= faces.x_last; ++i) state.velocity_face_x(i, j) += star_face_x_(i, j);
   IBMS_PARALLEL_ROWS
   for (int j = faces.y_first; j <= faces.y_last; ++j)
-    for (int i = 0; i < grid_.nx; ++i)
-      state.velocity_face_y(i, j) += star_face_y_(i, j) - dt * (phi_(i, j) - phi_(i, j - 1)) * inv_dy;
+    for (int i = 0; i < grid_.nx; ++i) state.velocity_face_y(i, j) += star_face_y_(i, j);
   sync_periodic_faces(grid_, state.velocity_face_x, state.velocity_face_y);
   double max_change = 0.0;
 #if defined(_OPENMP)

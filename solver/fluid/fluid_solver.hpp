@@ -117,6 +117,9 @@ class FluidSolver {
   // Writes the fields of level n+1 into `state`; its clock stays at t^n until end_step.
   // forcing: a force in u* that the faces take in the balanced form (FaceForcing), or null.
   ProjectionStats project(FluidState& state, double dt, const FaceForcing* forcing = nullptr);
+  // The face increment of the last homogeneous_projection (divergence-free; zero on the faces with a given flux).
+  const FaceField& projected_face_increment_x() const { return star_face_x_; }
+  const FaceField& projected_face_increment_y() const { return star_face_y_; }
   // P_0 g in place: the homogeneous projection of a cell increment g (no flux through the faces
   // with a given flux): g -= dt G_c phi with L phi = D mean(g) / dt. The face increment
   // mean(g) - dt G_f phi and phi stay in the solver's work fields until the next call.

@@ -60,6 +60,17 @@ MappedStencil map_stencil(KernelKind kernel, double coordinate, double origin, d
   return mapped;
 }
 
+// The stencils of a marker for the face components: over the cell centres (cx, cy) and the faces
+// (fx, fy) of each direction; u lives on (fx, cy), v on (cx, fy).
+struct FaceStencils { MappedStencil cx, cy, fx, fy; };
+
+FaceStencils face_stencils(const Grid& grid, KernelKind kernel, const std::array<double, 2>& marker) {
+  return {map_stencil(kernel, marker[0], grid.origin_x, grid.dx(), grid.nx, grid.periodic_x, "x"),
+          map_stencil(kernel, marker[1], grid.origin_y, grid.dy(), grid.ny, grid.periodic_y, "y"),
+          map_stencil(kernel, marker[0], grid.origin_x, grid.dx(), grid.nx, grid.periodic_x, "x", Nodes::faces),
+          map_stencil(kernel, marker[1], grid.origin_y, grid.dy(), grid.ny, grid.periodic_y, "y", Nodes::faces)};
+}
+
 void check_field(const Grid& grid, const CellField& field, const char* name) {
   if (field.nx() != grid.nx || field.ny() != grid.ny)
     throw std::invalid_argument(std::string(name) + " does not match the grid");
@@ -143,12 +154,7 @@ void spread_to_faces(const Grid& grid, KernelKind kernel, const std::vector<std:
     throw std::invalid_argument("spread_to_faces: markers, forces and volumes differ in length");
   const double inverse_cell_area = 1.0 / (grid.dx() * grid.dy());
   for (std::size_t l = 0; l < markers.size(); ++l) {
-    const MappedStencil cx = map_stencil(kernel, markers[l][0], grid.origin_x, grid.dx(), grid.nx, grid.periodic_x, "x");
-    const MappedStencil cy = map_stencil(kernel, markers[l][1], grid.origin_y, grid.dy(), grid.ny, grid.periodic_y, "y");
-    const MappedStencil fx =
-        map_stencil(kernel, markers[l][0], grid.origin_x, grid.dx(), grid.nx, grid.periodic_x, "x", Nodes::faces);
-    const MappedStencil fy =
-        map_stencil(kernel, markers[l][1], grid.origin_y, grid.dy(), grid.ny, grid.periodic_y, "y", Nodes::faces);
+    const auto [cx, cy, fx, fy] = face_stencils(grid, kernel, markers[l]);
     const double ax = marker_force[l][0] * marker_volume[l] * inverse_cell_area;
     const double ay = marker_force[l][1] * marker_volume[l] * inverse_cell_area;
     // Each reflection is a factor -1, as for the cell centres: the normal component is odd about
@@ -168,6 +174,39 @@ void spread_to_faces(const Grid& grid, KernelKind kernel, const std::vector<std:
     for (int j = 0; j < grid.ny; ++j) face_x(grid.nx, j) = face_x(0, j);
   if (grid.periodic_y)
     for (int i = 0; i < grid.nx; ++i) face_y(i, grid.ny) = face_y(i, 0);
+}
+
+void interpolate_faces(const Grid& grid, KernelKind kernel, const WallVelocities& walls, const FaceField& face_x,
+                       const FaceField& face_y, const std::vector<std::array<double, 2>>& markers,
+                       std::vector<std::array<double, 2>>& velocity_out) {
+  if (face_x.ni() != grid.nx + 1 || face_x.nj() != grid.ny || face_y.ni() != grid.nx || face_y.nj() != grid.ny + 1)
+    throw std::invalid_argument("interpolate_faces: face fields do not match the grid");
+  velocity_out.resize(markers.size());
+  for (std::size_t l = 0; l < markers.size(); ++l) {
+    const auto [cx, cy, fx, fy] = face_stencils(grid, kernel, markers[l]);
+    // The transpose of spread_to_faces, plus the affine part of the tangential ghost rule
+    // u_g = 2 u_wall - u_mirror (the normal component is odd about a wall).
+    double u_sum = 0.0, v_sum = 0.0;
+    for (int ky = 0; ky < cy.n_nodes; ++ky) {
+      const bool ghost_y = cy.ghost_side[ky] != 0;
+      const double u_wall = cy.ghost_side[ky] < 0 ? walls.bottom : walls.top;
+      for (int kx = 0; kx < fx.n_nodes; ++kx) {
+        const double s_x = fx.ghost_side[kx] != 0 ? -1.0 : 1.0;
+        const double value = ghost_y ? 2.0 * u_wall - face_x(fx.cell[kx], cy.cell[ky]) : face_x(fx.cell[kx], cy.cell[ky]);
+        u_sum += fx.weight[kx] * cy.weight[ky] * s_x * value;
+      }
+    }
+    for (int ky = 0; ky < fy.n_nodes; ++ky) {
+      const double s_y = fy.ghost_side[ky] != 0 ? -1.0 : 1.0;
+      for (int kx = 0; kx < cx.n_nodes; ++kx) {
+        const bool ghost_x = cx.ghost_side[kx] != 0;
+        const double v_wall = cx.ghost_side[kx] < 0 ? walls.left : walls.right;
+        const double value = ghost_x ? 2.0 * v_wall - face_y(cx.cell[kx], fy.cell[ky]) : face_y(cx.cell[kx], fy.cell[ky]);
+        v_sum += cx.weight[kx] * fy.weight[ky] * s_y * value;
+      }
+    }
+    velocity_out[l] = {u_sum, v_sum};
+  }
 }
 
 }  // namespace ibms

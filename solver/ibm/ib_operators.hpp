@@ -45,4 +45,12 @@ void spread_to_faces(const Grid& grid, KernelKind kernel, const std::vector<std:
                      const std::vector<std::array<double, 2>>& marker_force, const std::vector<double>& marker_volume,
                      FaceField& face_x, FaceField& face_y);
 
+// (J_f U)(X_l): the face-normal components interpolated from their own faces, u from the x-faces
+// and v from the y-faces, the kernel centred at the faces: the transpose of spread_to_faces with
+// the tangential wall speeds' affine part, so <S_f F, U>_{dx dy} = <F, J_f U>_{dV} with walls at
+// rest. The faces carry the divergence-free velocity of the projection (fluid/fluid_solver.hpp).
+void interpolate_faces(const Grid& grid, KernelKind kernel, const WallVelocities& walls, const FaceField& face_x,
+                       const FaceField& face_y, const std::vector<std::array<double, 2>>& markers,
+                       std::vector<std::array<double, 2>>& velocity_out);
+
 }  // namespace ibms

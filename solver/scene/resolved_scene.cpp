@@ -142,6 +142,7 @@ std::string resolved_scene_toml(const Scene& scene) {
   out += fmt::format("coupling = {}\n", toml_string(ibm.coupling));
   out += fmt::format("slip_tolerance = {}\n", toml_float(ibm.slip_tolerance));
   out += fmt::format("max_coupling_iterations = {}\n", ibm.max_coupling_iterations);
+  out += fmt::format("constrained_velocity = {}\n", toml_string(ibm.constrained_velocity));
 
   for (const BodySpec& body : scene.bodies) append_body(out, body);
 

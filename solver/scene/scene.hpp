@@ -92,6 +92,13 @@ struct IbmSpec {
   std::string coupling = "uhlmann";
   double slip_tolerance = 1.0e-3;    // no_slip: largest slip left at the end of the step / U_ref [-]
   int max_coupling_iterations = 100; // no_slip: GMRES products (one Poisson solve each) per step at most [-]
+  // no_slip: the velocity the constraint holds (docs/method.md §3.7):
+  //  "cells"  J u^{n+1}, the cell-centred velocity of the momentum equation;
+  //  "faces"  J_f U_f^{n+1}, the divergence-free face velocity that carries mass and momentum
+  //           (interpolated from the faces, as on a staggered grid). It removes the flux through
+  //           the body that the momentum interpolation's dt (mean(G_c) - G_f) p leaves under
+  //           "cells"; validated on fixed bodies (validation/dfg_cylinder_2d2/README.md).
+  std::string constrained_velocity = "cells";
 };
 
 struct SwellingSpec {

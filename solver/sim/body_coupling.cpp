@@ -173,11 +173,13 @@ bool spread_previous_forces(const Grid& grid, KernelKind kernel, double dt, std:
   return true;
 }
 
-double measure_slip(const Grid& grid, KernelKind kernel, const WallVelocities& walls, const CellField& velocity_x,
-                    const CellField& velocity_y, std::vector<BodyCoupling>& coupling) {
+namespace {
+
+// The slip of each body from its interpolated_velocity, max and RMS over the markers / U_ref, into
+// (slip_max, slip_rms) or (face_slip_max, face_slip_rms); pass_increment = U_target - J u.
+double slip_of_interpolated(std::vector<BodyCoupling>& coupling, bool faces) {
   double largest = 0.0;
   for (BodyCoupling& c : coupling) {
-    interpolate(grid, kernel, walls, velocity_x, velocity_y, c.marker, c.interpolated_velocity);
     double max2 = 0.0, sum2 = 0.0;
     for (std::size_t l = 0; l < c.marker.size(); ++l) {
       for (int d = 0; d < 2; ++d) c.pass_increment[l][d] = c.target_velocity[l][d] - c.interpolated_velocity[l][d];
@@ -185,11 +187,27 @@ double measure_slip(const Grid& grid, KernelKind kernel, const WallVelocities& w
       max2 = std::max(max2, r2);
       sum2 += r2;
     }
-    c.slip_max = std::sqrt(max2) / c.slip_reference_speed;
-    c.slip_rms = c.marker.empty() ? 0.0 : std::sqrt(sum2 / static_cast<double>(c.marker.size())) / c.slip_reference_speed;
-    largest = std::max(largest, c.slip_max);
+    const double largest_here = std::sqrt(max2) / c.slip_reference_speed;
+    const double rms = c.marker.empty() ? 0.0 : std::sqrt(sum2 / static_cast<double>(c.marker.size())) / c.slip_reference_speed;
+    (faces ? c.face_slip_max : c.slip_max) = largest_here;
+    (faces ? c.face_slip_rms : c.slip_rms) = rms;
+    largest = std::max(largest, largest_here);
   }
   return largest;
+}
+
+}  // namespace
+
+double measure_slip(const Grid& grid, KernelKind kernel, const WallVelocities& walls, const CellField& velocity_x,
+                    const CellField& velocity_y, std::vector<BodyCoupling>& coupling) {
+  for (BodyCoupling& c : coupling) interpolate(grid, kernel, walls, velocity_x, velocity_y, c.marker, c.interpolated_velocity);
+  return slip_of_interpolated(coupling, false);
+}
+
+double measure_face_slip(const Grid& grid, KernelKind kernel, const WallVelocities& walls, const FaceField& face_x,
+                         const FaceField& face_y, std::vector<BodyCoupling>& coupling) {
+  for (BodyCoupling& c : coupling) interpolate_faces(grid, kernel, walls, face_x, face_y, c.marker, c.interpolated_velocity);
+  return slip_of_interpolated(coupling, true);
 }
 
 void spread_slip_correction(const Grid& grid, KernelKind kernel, double dt, std::vector<BodyCoupling>& coupling,

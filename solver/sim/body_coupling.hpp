@@ -63,6 +63,10 @@ struct BodyCoupling {
   // driving speed (slip_reference_speed).
   double slip_max = 0.0;
   double slip_rms = 0.0;
+  // The same of the face velocities, |J_f U_f^{n+1} - U_target_l| / U_ref: the divergence-free
+  // velocity that carries mass and momentum, the one ibm.coupling = "no_slip" constrains (§3.7).
+  double face_slip_max = 0.0;
+  double face_slip_rms = 0.0;
   double slip_reference_speed = 1.0;       // [length/time]
   // ibm.coupling = "no_slip": the forces F_l of the latest step, the predictor of the next one while
   // the marker count stays the same (previous_force.size() == marker.size(); empty before the first step).
@@ -107,6 +111,10 @@ bool spread_previous_forces(const Grid& grid, KernelKind kernel, double dt, std:
 // pass_increment), slip_max and slip_rms of every body; returns the largest slip_max.
 double measure_slip(const Grid& grid, KernelKind kernel, const WallVelocities& walls, const CellField& velocity_x,
                     const CellField& velocity_y, std::vector<BodyCoupling>& coupling);
+// The same with J_f on the face velocities (ibm/ib_operators.hpp interpolate_faces): face_slip_max,
+// face_slip_rms; returns the largest face_slip_max.
+double measure_face_slip(const Grid& grid, KernelKind kernel, const WallVelocities& walls, const FaceField& face_x,
+                         const FaceField& face_y, std::vector<BodyCoupling>& coupling);
 
 // One correction of the no-slip iteration after measure_slip: dF_l = r_l / dt is added to
 // forcing_sum, and dt S dF = S r is added to (increment_x, increment_y).

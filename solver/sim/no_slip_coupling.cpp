@@ -51,7 +51,7 @@ double dot(const double* a, const double* b, std::size_t n) {
 }  // namespace
 
 NoSlipResult hold_no_slip(const Grid& grid, KernelKind kernel, const WallVelocities& walls, double dt,
-                          double tolerance, int max_products, FluidSolver& solver, FluidState& state,
+                          double tolerance, bool on_faces, int max_products, FluidSolver& solver, FluidState& state,
                           std::vector<BodyCoupling>& coupling, CellField& increment_x, CellField& increment_y,
                           FaceField& face_increment_x, FaceField& face_increment_y, NoSlipWorkspace& work) {
   NoSlipResult result;
@@ -69,14 +69,18 @@ NoSlipResult hold_no_slip(const Grid& grid, KernelKind kernel, const WallVelocit
       spread_to_faces(grid, kernel, c.marker, c.pass_increment, c.marker_volume, face_increment_x, face_increment_y);
     }
   };
-  // y = J P_0 S (U_ref x) / U_ref.
+  // y = J P_0 S (U_ref x) / U_ref: the cell or face part of the projected increment at the markers.
   const auto apply = [&](const double* x, double* y) {
     scatter(x, coupling);
     spread_increment();
     solver.homogeneous_projection(dt, increment_x, increment_y, &face_increment_x, &face_increment_y);
     std::size_t k = 0;
     for (BodyCoupling& c : coupling) {
-      interpolate(grid, kernel, at_rest, increment_x, increment_y, c.marker, c.interpolated_velocity);
+      if (on_faces)
+        interpolate_faces(grid, kernel, at_rest, solver.projected_face_increment_x(), solver.projected_face_increment_y(),
+                          c.marker, c.interpolated_velocity);
+      else
+        interpolate(grid, kernel, at_rest, increment_x, increment_y, c.marker, c.interpolated_velocity);
       for (const auto& u : c.interpolated_velocity)
         for (int d = 0; d < 2; ++d) y[k++] = u[d] / c.slip_reference_speed;
     }
@@ -84,9 +88,10 @@ NoSlipResult hold_no_slip(const Grid& grid, KernelKind kernel, const WallVelocit
   };
 
   for (;;) {
-    // The slip of the present u^{n+1}: r = (U_target - J u) / U_ref (measure_slip leaves U_target - J u
-    // in pass_increment).
-    const double slip = measure_slip(grid, kernel, walls, state.velocity_x, state.velocity_y, coupling);
+    // The slip of the constrained velocity, r = (U_target - J u) / U_ref of u^{n+1} or J_f U_f^{n+1}
+    // (measure_slip / measure_face_slip leave U_target - J u in pass_increment).
+    const double slip = on_faces ? measure_face_slip(grid, kernel, walls, state.velocity_face_x, state.velocity_face_y, coupling)
+                                 : measure_slip(grid, kernel, walls, state.velocity_x, state.velocity_y, coupling);
     if (slip <= tolerance || result.products >= max_products) break;
     work.rhs.resize(n);
     work.solution.assign(n, 0.0);

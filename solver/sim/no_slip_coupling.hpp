@@ -1,11 +1,15 @@
 // The no_slip coupling (docs/method.md §3.7): the immersed-boundary forces as the Lagrange
-// multipliers of the no-slip constraint at the end of the step. After the projection, the marker
-// force corrections dF solve
+// multipliers of the no-slip constraint at the end of the step (Taira & Colonius 2007). After the
+// projection, the marker force corrections dF solve
 //     J P_0 S (dt dF) = U_target - J u^{n+1},
-// J interpolation, S spreading (onto the cells, and onto the faces for the face velocities: the
-// balanced momentum interpolation of FaceForcing), P_0 the homogeneous projection, so that the velocity
-// u^{n+1} + P_0 S (dt dF) holds J u = U_target at every marker; the pressure takes the gradient
-// part of the force. The system is small (two unknowns per marker) and solved by GMRES with
+// S spreading onto the cells and the faces (the balanced momentum interpolation of FaceForcing), P_0
+// the homogeneous projection, and J either the interpolation of the cell velocities u^{n+1}
+// (ibm.constrained_velocity = "cells") or J_f of the face velocities U_f^{n+1} ("faces":
+// interpolate_faces, the discretely divergence-free field that carries mass and momentum; on a
+// staggered grid, as in Taira & Colonius, it is the velocity itself). The two differ by the
+// momentum interpolation's dt (mean(G_c) - G_f) p (§2.3): the other one's slip is measured, not
+// held. The pressure takes the gradient part of the force. The system is
+// small (two unknowns per marker) and solved by GMRES with
 // restarts (Saad & Schultz 1986), one Poisson solve per product; the unknowns of each body are
 // scaled by its reference speed, and the iteration stops when the largest slip of any marker is
 // below the tolerance (a maximum norm, checked on the true residual of the marker system).
@@ -40,9 +44,9 @@ struct NoSlipResult {
 
 // Corrects forcing_sum and the level n+1 fields of `state` until the slip of every body is at most
 // tolerance (in units of its slip_reference_speed) or max_products products were spent; leaves
-// slip_max and slip_rms of the final state. walls: the wall speeds at t^{n+1}.
+// the slip of the constrained velocity (slip_max, slip_rms or face_slip_max, face_slip_rms). walls: the wall speeds at t^{n+1}.
 NoSlipResult hold_no_slip(const Grid& grid, KernelKind kernel, const WallVelocities& walls, double dt,
-                          double tolerance, int max_products, FluidSolver& solver, FluidState& state,
+                          double tolerance, bool on_faces, int max_products, FluidSolver& solver, FluidState& state,
                           std::vector<BodyCoupling>& coupling, CellField& increment_x, CellField& increment_y,
                           FaceField& face_increment_x, FaceField& face_increment_y, NoSlipWorkspace& work);
 

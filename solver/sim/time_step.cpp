@@ -76,15 +76,23 @@ void hold_no_slip(Simulation& sim, double time_n, double dt) {
   FluidState& fluid = sim.fluid();
   const WallVelocities walls = wall_velocities_at(sim.boundaries(), time_n + dt);
   if (!sim.enforces_no_slip()) {
+    measure_face_slip(sim.grid(), sim.kernel(), walls, fluid.velocity_face_x, fluid.velocity_face_y, sim.coupling());
     measure_slip(sim.grid(), sim.kernel(), walls, fluid.velocity_x, fluid.velocity_y, sim.coupling());
     return;
   }
   const IbmSpec& ibm = sim.scene().ibm;
   const NoSlipResult result =
-      hold_no_slip(sim.grid(), sim.kernel(), walls, dt, ibm.slip_tolerance, ibm.max_coupling_iterations,
+      hold_no_slip(sim.grid(), sim.kernel(), walls, dt, ibm.slip_tolerance, ibm.constrained_velocity == "faces",
+                   ibm.max_coupling_iterations,
                    sim.fluid_solver(), fluid, sim.coupling(), sim.slip_increment_x, sim.slip_increment_y,
                    sim.force_face_x, sim.force_face_y, sim.no_slip_work);
   keep_forces(sim.coupling());
+  // The slip of the velocity not constrained, for the series: cells and faces differ by the
+  // momentum interpolation's dt (mean(G_c) - G_f) p (§2.3).
+  if (ibm.constrained_velocity == "faces")
+    measure_slip(sim.grid(), sim.kernel(), walls, fluid.velocity_x, fluid.velocity_y, sim.coupling());
+  else
+    measure_face_slip(sim.grid(), sim.kernel(), walls, fluid.velocity_face_x, fluid.velocity_face_y, sim.coupling());
   sim.last_coupling_iterations = result.products;
   sim.total_coupling_iterations += result.products;
   if (result.products > 0) {

@@ -91,4 +91,8 @@ BOOST_AUTO_TEST_CASE(no_slip_coupling_steps_without_allocating) {
   // fields on cells and faces are made once, the previous forces keep their capacity.
   const std::vector<std::string> no_slip{"ibm.coupling=\"no_slip\"", "ibm.slip_tolerance=1e-4"};
   BOOST_TEST(allocations_in_steps(IBMS_SCENE_RIGID, 60, 140, no_slip) == 0);
+  // The constraint on the face velocities (interpolate_faces fills the markers' velocity in place).
+  const std::vector<std::string> on_faces{"ibm.coupling=\"no_slip\"", "ibm.slip_tolerance=1e-3",
+                                          "ibm.constrained_velocity=\"faces\""};
+  BOOST_TEST(allocations_in_steps(IBMS_SCENE_FIXED_CYLINDER, 60, 140, on_faces) == 0);
 }
