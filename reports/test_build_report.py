@@ -224,7 +224,7 @@ if stage == "tex":
         fail("the time study's order 0.777 is not shown against formal order 2 and band [1.8, inf] as FAIL")
     if "time step $\\Delta t$" not in tex:
         fail("the time study's figure caption does not name the time step")
-    if "Known limitations" not in tex or "boundary layer" not in tex:
+    if "Known limitations" not in tex or "momentum interpolation" not in tex:
         fail("the Known limitations section does not list the miss with its cause")
     # A case without a source mark (no README with a Compared-with line) stops the build.
     bad = os.path.join(work, "unmarked")
