@@ -104,3 +104,14 @@ BOOST_AUTO_TEST_CASE(constrained_face_velocities_keep_no_slip_at_the_end_of_ever
   BOOST_TEST(cells.largest > 10 * 1e-3);
   BOOST_TEST(papers.largest > 10 * 1e-3);
 }
+
+BOOST_AUTO_TEST_CASE(moving_bodies_under_the_face_constraint_are_refused_naming_the_key) {
+  try {
+    ibms::read_scene_file(IBMS_SCENE_RIGID, {"ibm.coupling=\"no_slip\"", "ibm.constrained_velocity=\"faces\""});
+    BOOST_FAIL("moving bodies with ibm.constrained_velocity = \"faces\" were accepted");
+  } catch (const std::exception& e) {
+    const std::string message = e.what();
+    BOOST_TEST_MESSAGE(message);
+    BOOST_TEST(message.find("ibm.constrained_velocity") != std::string::npos);
+  }
+}
