@@ -149,8 +149,8 @@ void check_coupling(const Scene& scene, const SceneDiagnostics& diagnostics) {
                        body.angular_velocity == 0.0 && body.oscillation_period == 0.0 && !body.swelling.enabled;
     if (!fixed)
       diagnostics.fail("ibm.constrained_velocity",
-                       fmt::format("\"faces\" holds fixed bodies only (prescribed, at rest, not swelling); body {} "
-                                   "moves or is {}: use \"cells\"", b, body.kind));
+                       fmt::format("\"faces\" holds fixed bodies only (prescribed, at rest, not swelling); body {} {}: "
+                                   "use \"cells\"", b, body.kind == "prescribed" ? "moves or swells" : "is " + body.kind));
   }
 }
 

@@ -64,7 +64,8 @@ struct BodyCoupling {
   double slip_max = 0.0;
   double slip_rms = 0.0;
   // The same of the face velocities, |J_f U_f^{n+1} - U_target_l| / U_ref: the divergence-free
-  // velocity that carries mass and momentum, the one ibm.coupling = "no_slip" constrains (§3.7).
+  // velocity that carries mass and momentum, the one "no_slip" holds under
+  // ibm.constrained_velocity = "faces" (§3.7).
   double face_slip_max = 0.0;
   double face_slip_rms = 0.0;
   double slip_reference_speed = 1.0;       // [length/time]

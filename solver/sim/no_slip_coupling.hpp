@@ -8,9 +8,8 @@
 // interpolate_faces, the discretely divergence-free field that carries mass and momentum; on a
 // staggered grid, as in Taira & Colonius, it is the velocity itself). The two differ by the
 // momentum interpolation's dt (mean(G_c) - G_f) p (§2.3): the other one's slip is measured, not
-// held. The pressure takes the gradient part of the force. The system is
-// small (two unknowns per marker) and solved by GMRES with
-// restarts (Saad & Schultz 1986), one Poisson solve per product; the unknowns of each body are
+// held. The pressure takes the gradient part of the force. The system is small (two unknowns per
+// marker) and solved by GMRES with restarts (Saad & Schultz 1986), one Poisson solve per product; the unknowns of each body are
 // scaled by its reference speed, and the iteration stops when the largest slip of any marker is
 // below the tolerance (a maximum norm, checked on the true residual of the marker system).
 #pragma once
@@ -44,7 +43,8 @@ struct NoSlipResult {
 
 // Corrects forcing_sum and the level n+1 fields of `state` until the slip of every body is at most
 // tolerance (in units of its slip_reference_speed) or max_products products were spent; leaves
-// the slip of the constrained velocity (slip_max, slip_rms or face_slip_max, face_slip_rms). walls: the wall speeds at t^{n+1}.
+// the slip of the constrained velocity (slip_max, slip_rms or face_slip_max, face_slip_rms).
+// on_faces: constrain J_f U_f^{n+1} instead of J u^{n+1}. walls: the wall speeds at t^{n+1}.
 NoSlipResult hold_no_slip(const Grid& grid, KernelKind kernel, const WallVelocities& walls, double dt,
                           double tolerance, bool on_faces, int max_products, FluidSolver& solver, FluidState& state,
                           std::vector<BodyCoupling>& coupling, CellField& increment_x, CellField& increment_y,

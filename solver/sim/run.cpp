@@ -172,7 +172,8 @@ std::vector<SeriesValue> body_series(const Simulation& sim, const ControlVolumeM
     // |J u^{n+1} - U_target| / U_ref (BodyCoupling::slip_max, slip_rms).
     row.push_back({name + "/slip_max", "-", coupling.slip_max});
     row.push_back({name + "/slip_rms", "-", coupling.slip_rms});
-    // The same of the face velocities, |J_f U_f^{n+1} - U_target| / U_ref: what "no_slip" holds.
+    // The same of the face velocities, |J_f U_f^{n+1} - U_target| / U_ref: what "no_slip" holds
+    // under ibm.constrained_velocity = "faces".
     row.push_back({name + "/face_slip_max", "-", coupling.face_slip_max});
     row.push_back({name + "/face_slip_rms", "-", coupling.face_slip_rms});
     row.push_back({name + "/diameter", "length", body.diameter});

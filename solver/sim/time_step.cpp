@@ -81,15 +81,15 @@ void hold_no_slip(Simulation& sim, double time_n, double dt) {
     return;
   }
   const IbmSpec& ibm = sim.scene().ibm;
+  const bool on_faces = ibm.constrained_velocity == "faces";
   const NoSlipResult result =
-      hold_no_slip(sim.grid(), sim.kernel(), walls, dt, ibm.slip_tolerance, ibm.constrained_velocity == "faces",
-                   ibm.max_coupling_iterations,
+      hold_no_slip(sim.grid(), sim.kernel(), walls, dt, ibm.slip_tolerance, on_faces, ibm.max_coupling_iterations,
                    sim.fluid_solver(), fluid, sim.coupling(), sim.slip_increment_x, sim.slip_increment_y,
                    sim.force_face_x, sim.force_face_y, sim.no_slip_work);
   keep_forces(sim.coupling());
   // The slip of the velocity not constrained, for the series: cells and faces differ by the
   // momentum interpolation's dt (mean(G_c) - G_f) p (§2.3).
-  if (ibm.constrained_velocity == "faces")
+  if (on_faces)
     measure_slip(sim.grid(), sim.kernel(), walls, fluid.velocity_x, fluid.velocity_y, sim.coupling());
   else
     measure_face_slip(sim.grid(), sim.kernel(), walls, fluid.velocity_face_x, fluid.velocity_face_y, sim.coupling());
