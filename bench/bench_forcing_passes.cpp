@@ -10,7 +10,8 @@
 //        bench_forcing_passes radius   the effective radius of the forced cylinders on the Couette
 //        flow (CouetteResult: fitted A r + B / r) for 1 and 3 passes and marker retractions 0, 0.3,
 //        0.5 h, with the errors: how much larger the immersed body looks than its rim, in cells;
-//        then the same for ibm.coupling = "no_slip" (radius_no_slip: that part only).
+//        then the same for ibm.coupling = "no_slip" on the cells and on the faces (radius_no_slip:
+//        that part only).
 // Writes <build>/bench/forcing_passes.csv.
 #include <chrono>
 #include <cstdio>
@@ -71,15 +72,15 @@ Row settling(int n_x, int passes) {
 
 int radius_study(bool no_slip_only) {
   std::printf("circular Couette: effective radius growth (R1e - R1)/h, (R2 - R2e)/h from the fitted profile\n");
-  std::printf("  coupling passes retraction  D1/h  inner growth  outer growth   L2 error   max error\n");
-  struct Setting { const char* coupling; int passes; };
-  std::vector<Setting> settings{{"no_slip", 1}};
+  std::printf("  coupling constrained passes retraction  D1/h  inner growth  outer growth   L2 error   max error\n");
+  struct Setting { const char* coupling; int passes; const char* constrained = "cells"; };
+  std::vector<Setting> settings{{"no_slip", 1, "cells"}, {"no_slip", 1, "faces"}};
   if (!no_slip_only) settings.insert(settings.begin(), {{"uhlmann", 1}, {"uhlmann", 3}});
   for (const Setting& s : settings)
     for (double retraction : {0.0, 0.3, 0.5})
       for (int n : {32, 64, 128}) {
-        const test::CouetteResult r = test::run_circular_couette(n, s.passes, retraction, s.coupling);
-        std::printf("  %8s %6d %10.2f %5.1f  %12.3f  %12.3f  %9.3e  %9.3e\n", s.coupling, s.passes, retraction,
+        const test::CouetteResult r = test::run_circular_couette(n, s.passes, retraction, s.coupling, s.constrained);
+        std::printf("  %8s %5s %6d %10.2f %5.1f  %12.3f  %12.3f  %9.3e  %9.3e\n", s.coupling, s.constrained, s.passes, retraction,
                     2 * test::CircularCouette::inner_radius * n, r.inner_growth_cells, r.outer_growth_cells, r.l2,
                     r.max);
         std::fflush(stdout);

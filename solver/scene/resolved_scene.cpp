@@ -143,6 +143,7 @@ std::string resolved_scene_toml(const Scene& scene) {
   out += fmt::format("slip_tolerance = {}\n", toml_float(ibm.slip_tolerance));
   out += fmt::format("max_coupling_iterations = {}\n", ibm.max_coupling_iterations);
   out += fmt::format("constrained_velocity = {}\n", toml_string(ibm.constrained_velocity));
+  out += fmt::format("virtual_mass_coefficient = {}\n", toml_float(ibm.virtual_mass_coefficient));
 
   for (const BodySpec& body : scene.bodies) append_body(out, body);
 

@@ -95,10 +95,16 @@ struct IbmSpec {
   // no_slip: the velocity the constraint holds (docs/method.md §3.7):
   //  "cells"  J u^{n+1}, the cell-centred velocity of the momentum equation;
   //  "faces"  J_f U_f^{n+1}, the divergence-free face velocity that carries mass and momentum
-  //           (interpolated from the faces, as on a staggered grid). It removes the flux through
-  //           the body that the momentum interpolation's dt (mean(G_c) - G_f) p leaves under
-  //           "cells"; validated on fixed bodies (validation/dfg_cylinder_2d2/README.md).
+  //           (interpolated from the faces, as on a staggered grid), the cells taking the force as
+  //           the mean of its face values like the pressure gradient. It removes the flux through
+  //           the body that the momentum interpolation leaves under "cells", whose size is
+  //           proportional to dt (validation/dfg_cylinder_2d2/README.md).
   std::string constrained_velocity = "cells";
+  // no_slip: a rigid body moves with a virtual mass C_V rho_f V on both sides of Newton-Euler, the
+  // right-hand one times the previous step's acceleration (Schwarz, Kempe & Froehlich 2015), so that
+  // the fluid's added mass, which the constraint force carries one step late, does not set off the
+  // explicit coupling's step-to-step oscillation; 0 leaves Newton-Euler as it is [-].
+  double virtual_mass_coefficient = 1.0;
 };
 
 struct SwellingSpec {

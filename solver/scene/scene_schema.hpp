@@ -40,7 +40,7 @@ std::span<const std::string_view> keys_of_side_kind(std::string_view kind);
 inline constexpr std::string_view ibm_keys[] = {"kernel", "forcing_passes", "forcing_stage",
                                                 "inner_fluid_inertia", "sub_markers", "marker_retraction",
                                                 "coupling", "slip_tolerance", "max_coupling_iterations",
-                                                "constrained_velocity"};
+                                                "constrained_velocity", "virtual_mass_coefficient"};
 inline constexpr std::string_view coupling_choices[] = {"uhlmann", "no_slip"};
 inline constexpr std::string_view constrained_velocity_choices[] = {"cells", "faces"};
 inline constexpr std::string_view forcing_stage_choices[] = {"explicit_estimate", "implicit_prediction"};

@@ -233,6 +233,29 @@ void spread_step_forces(const Grid& grid, KernelKind kernel, double dt, std::vec
   }
 }
 
+void average_faces_to_cells(const Grid& grid, const FaceField& face_x, const FaceField& face_y, CellField& cell_x,
+                            CellField& cell_y) {
+  for (int j = 0; j < grid.ny; ++j)
+    for (int i = 0; i < grid.nx; ++i) {
+      cell_x(i, j) = 0.5 * (face_x(i, j) + face_x(i + 1, j));
+      cell_y(i, j) = 0.5 * (face_y(i, j) + face_y(i, j + 1));
+    }
+}
+
+void cell_forces_from_faces(const Grid& grid, const FaceField& force_face_x, const FaceField& force_face_y,
+                            CellField& force_cell_x, CellField& force_cell_y, CellField& velocity_star_x,
+                            CellField& velocity_star_y) {
+  for (int j = 0; j < grid.ny; ++j)
+    for (int i = 0; i < grid.nx; ++i) {
+      const double fx = 0.5 * (force_face_x(i, j) + force_face_x(i + 1, j));
+      const double fy = 0.5 * (force_face_y(i, j) + force_face_y(i, j + 1));
+      velocity_star_x(i, j) += fx - force_cell_x(i, j);
+      velocity_star_y(i, j) += fy - force_cell_y(i, j);
+      force_cell_x(i, j) = fx;
+      force_cell_y(i, j) = fy;
+    }
+}
+
 void keep_forces(std::vector<BodyCoupling>& coupling) {
   for (BodyCoupling& c : coupling) c.previous_force.assign(c.forcing_sum.begin(), c.forcing_sum.end());
 }

@@ -122,6 +122,17 @@ double measure_face_slip(const Grid& grid, KernelKind kernel, const WallVelociti
 void spread_slip_correction(const Grid& grid, KernelKind kernel, double dt, std::vector<BodyCoupling>& coupling,
                             CellField& increment_x, CellField& increment_y);
 
+// (cell_x, cell_y) = the mean of each cell's two faces of (face_x, face_y), as G_c p is the mean of
+// the two face gradients G_f p (overwrites the interior).
+void average_faces_to_cells(const Grid& grid, const FaceField& face_x, const FaceField& face_y, CellField& cell_x,
+                            CellField& cell_y);
+
+// The cells take the step's force as the mean of its face values, A S_f F, in place of the kernel
+// spread S F already in u~ and force_cell: u~ += A(force_face) - force_cell; force_cell = A(force_face).
+void cell_forces_from_faces(const Grid& grid, const FaceField& force_face_x, const FaceField& force_face_y,
+                            CellField& force_cell_x, CellField& force_cell_y, CellField& velocity_star_x,
+                            CellField& velocity_star_y);
+
 // force_cell = dt S F and force_face = dt S_f F of forcing_sum F of every body (overwritten).
 void spread_step_forces(const Grid& grid, KernelKind kernel, double dt, std::vector<BodyCoupling>& coupling,
                         CellField& force_cell_x, CellField& force_cell_y, FaceField& force_face_x, FaceField& force_face_y);

@@ -51,7 +51,7 @@ double dot(const double* a, const double* b, std::size_t n) {
 }  // namespace
 
 NoSlipResult hold_no_slip(const Grid& grid, KernelKind kernel, const WallVelocities& walls, double dt,
-                          double tolerance, bool on_faces, int max_products, FluidSolver& solver, FluidState& state,
+                          double tolerance, bool on_faces, bool cells_from_faces, int max_products, FluidSolver& solver, FluidState& state,
                           std::vector<BodyCoupling>& coupling, CellField& increment_x, CellField& increment_y,
                           FaceField& face_increment_x, FaceField& face_increment_y, NoSlipWorkspace& work) {
   NoSlipResult result;
@@ -65,9 +65,10 @@ NoSlipResult hold_no_slip(const Grid& grid, KernelKind kernel, const WallVelocit
     face_increment_x.fill(0.0);
     face_increment_y.fill(0.0);
     for (BodyCoupling& c : coupling) {
-      spread(grid, kernel, c.marker, c.pass_increment, c.marker_volume, increment_x, increment_y);
+      if (!cells_from_faces) spread(grid, kernel, c.marker, c.pass_increment, c.marker_volume, increment_x, increment_y);
       spread_to_faces(grid, kernel, c.marker, c.pass_increment, c.marker_volume, face_increment_x, face_increment_y);
     }
+    if (cells_from_faces) average_faces_to_cells(grid, face_increment_x, face_increment_y, increment_x, increment_y);
   };
   // y = J P_0 S (U_ref x) / U_ref: the cell or face part of the projected increment at the markers.
   const auto apply = [&](const double* x, double* y) {
@@ -87,12 +88,17 @@ NoSlipResult hold_no_slip(const Grid& grid, KernelKind kernel, const WallVelocit
     ++result.products;
   };
 
+  double previous_slip = HUGE_VAL;
   for (;;) {
     // The slip of the constrained velocity, r = (U_target - J u) / U_ref of u^{n+1} or J_f U_f^{n+1}
     // (measure_slip / measure_face_slip leave U_target - J u in pass_increment).
     const double slip = on_faces ? measure_face_slip(grid, kernel, walls, state.velocity_face_x, state.velocity_face_y, coupling)
                                  : measure_slip(grid, kernel, walls, state.velocity_x, state.velocity_y, coupling);
     if (slip <= tolerance || result.products >= max_products) break;
+    // A cycle that did not halve the slip has met the floor of the marker system (a part of the
+    // target that the constrained velocity cannot take, §3.7): further products would not lower it.
+    if (slip > 0.5 * previous_slip) break;
+    previous_slip = slip;
     work.rhs.resize(n);
     work.solution.assign(n, 0.0);
     work.residual.resize(n);
@@ -123,7 +129,8 @@ NoSlipResult hold_no_slip(const Grid& grid, KernelKind kernel, const WallVelocit
         for (std::size_t k = 0; k < n; ++k) w[k] -= h(i, j) * V[i * n + k];
       }
       h(j + 1, j) = std::sqrt(dot(w, w, n));
-      if (h(j + 1, j) > 0.0)
+      const bool breakdown = !(h(j + 1, j) > 0.0);  // the Krylov space holds the solution
+      if (!breakdown)
         for (std::size_t k = 0; k < n; ++k) w[k] /= h(j + 1, j);
       for (int i = 0; i < j; ++i) {  // the previous rotations on the new column
         const double a = h(i, j), b = h(i + 1, j);
@@ -147,7 +154,7 @@ NoSlipResult hold_no_slip(const Grid& grid, KernelKind kernel, const WallVelocit
       std::copy(work.rhs.begin(), work.rhs.end(), work.residual.begin());
       for (int i = 0; i < m; ++i)
         for (std::size_t k = 0; k < n; ++k) work.residual[k] -= work.coefficients[i] * W[i * n + k];
-      if (max_marker_norm(work.residual.data(), n) <= 0.5 * tolerance || !(h(j + 1, j) > 0.0)) break;
+      if (max_marker_norm(work.residual.data(), n) <= 0.5 * tolerance || breakdown) break;
     }
     for (int i = 0; i < m; ++i)
       for (std::size_t k = 0; k < n; ++k) work.solution[k] += work.coefficients[i] * V[i * n + k];

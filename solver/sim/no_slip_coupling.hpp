@@ -11,7 +11,10 @@
 // held. The pressure takes the gradient part of the force. The system is small (two unknowns per
 // marker) and solved by GMRES with restarts (Saad & Schultz 1986), one Poisson solve per product; the unknowns of each body are
 // scaled by its reference speed, and the iteration stops when the largest slip of any marker is
-// below the tolerance (a maximum norm, checked on the true residual of the marker system).
+// below the tolerance (a maximum norm, checked on the true residual of the marker system), or when
+// a restart cycle has not halved it (the floor of the marker system, docs/method.md §3.7).
+// cells_from_faces: the cells take the mean of the face increments (A S_f, under "faces") in place
+// of the kernel spread S.
 #pragma once
 #include <cstddef>
 #include <vector>
@@ -42,11 +45,11 @@ struct NoSlipResult {
 };
 
 // Corrects forcing_sum and the level n+1 fields of `state` until the slip of every body is at most
-// tolerance (in units of its slip_reference_speed) or max_products products were spent; leaves
+// tolerance (in units of its slip_reference_speed), a cycle stagnates or max_products products were spent; leaves
 // the slip of the constrained velocity (slip_max, slip_rms or face_slip_max, face_slip_rms).
 // on_faces: constrain J_f U_f^{n+1} instead of J u^{n+1}. walls: the wall speeds at t^{n+1}.
 NoSlipResult hold_no_slip(const Grid& grid, KernelKind kernel, const WallVelocities& walls, double dt,
-                          double tolerance, bool on_faces, int max_products, FluidSolver& solver, FluidState& state,
+                          double tolerance, bool on_faces, bool cells_from_faces, int max_products, FluidSolver& solver, FluidState& state,
                           std::vector<BodyCoupling>& coupling, CellField& increment_x, CellField& increment_y,
                           FaceField& face_increment_x, FaceField& face_increment_y, NoSlipWorkspace& work);
 

@@ -66,6 +66,11 @@ Simulation::Simulation(const Scene& scene)
     bodies_.push_back(build_body(spec, scene.fluid.density));
     rigid_.push_back(spec.kind == "mass_spring" ? RigidBody{} : rigid_body_from_spec(spec, bodies_.back()));
     if (spec.kind != "mass_spring") place_points(rigid_.back(), bodies_.back());
+    if (spec.kind == "rigid" && scene.ibm.coupling == "no_slip") {  // docs/method.md §3.7
+      RigidBody& r = rigid_.back();
+      r.virtual_mass = scene.ibm.virtual_mass_coefficient * scene.fluid.density * bodies_.back().solid_area();
+      r.virtual_inertia = r.virtual_mass * spec.diameter * spec.diameter / 8.0;
+    }
     swelling_.emplace_back(spec.swelling, spec.diameter);
     const double largest = spec.swelling.enabled ? std::max(spec.diameter, spec.swelling.max_diameter) : spec.diameter;
     coupling_.emplace_back(bodies_.back(), scene.ibm.sub_markers

@@ -44,6 +44,9 @@ class Simulation {
   bool forces_explicit_estimate() const { return scene_.ibm.forcing_stage == "explicit_estimate"; }
   // ibm.coupling = "no_slip": the forces are corrected until no-slip holds at t^{n+1}.
   bool enforces_no_slip() const { return has_bodies() && scene_.ibm.coupling == "no_slip"; }
+  // Under the face constraint the cells take the force as the mean of its face values, as they take
+  // the pressure gradient (docs/method.md §3.7).
+  bool cell_forces_from_faces() const { return enforces_no_slip() && scene_.ibm.constrained_velocity == "faces"; }
   // Names of the pipeline stages this scene runs, in order (`ibms info` prints them).
   std::vector<std::string> stage_names() const;
 

@@ -156,6 +156,11 @@ void write_simulation_checkpoint(OutputFile& out, const Simulation& sim, double 
       const RigidState& r = sim.rigid()[b].state;
       arrays[prefix + "rigid_state"] = {r.centre[0], r.centre[1], r.angle, r.velocity[0], r.velocity[1],
                                         r.angular_velocity};
+      // The virtual mass's right-hand side: the previous fluid step's acceleration.
+      if (sim.rigid()[b].virtual_mass > 0.0) {
+        const auto& a = sim.rigid()[b].previous_acceleration;
+        arrays[prefix + "rigid_acceleration"] = {a[0], a[1], a[2]};
+      }
     }
   }
   // The FFTW planner state, one character code per value (optional on reading).
@@ -231,6 +236,10 @@ double restore_simulation(const Checkpoint& checkpoint, const std::string& path,
     if (body.kind != BodyKind::mass_spring) {
       const std::vector<double> r = read.array(prefix + "rigid_state", 6);
       sim.rigid()[b].state = {{r[0], r[1]}, r[2], {r[3], r[4]}, r[5]};
+      if (sim.rigid()[b].virtual_mass > 0.0) {
+        const std::vector<double> a = read.array(prefix + "rigid_acceleration", 3);
+        sim.rigid()[b].previous_acceleration = {a[0], a[1], a[2]};
+      }
     }
   }
   return next_snapshot_time;

@@ -54,6 +54,9 @@ void predict(Simulation& sim, double time_n, double dt) {
       auto t = sim.timers().time(Stage::ib_forcing);
       spread_step_forces(sim.grid(), sim.kernel(), dt, sim.coupling(), sim.force_cell_x, sim.force_cell_y,
                          sim.force_face_x, sim.force_face_y);  // dt S F, dt S_f F for the faces
+      if (sim.cell_forces_from_faces())
+        cell_forces_from_faces(sim.grid(), sim.force_face_x, sim.force_face_y, sim.force_cell_x, sim.force_cell_y,
+                               solver.velocity_star_x(), solver.velocity_star_y());  // dt A S_f F
     }
     { auto t = sim.timers().time(Stage::predictor); solver.complete_prediction(fluid, dt); }  // u~ with f
   } else {
@@ -83,7 +86,8 @@ void hold_no_slip(Simulation& sim, double time_n, double dt) {
   const IbmSpec& ibm = sim.scene().ibm;
   const bool on_faces = ibm.constrained_velocity == "faces";
   const NoSlipResult result =
-      hold_no_slip(sim.grid(), sim.kernel(), walls, dt, ibm.slip_tolerance, on_faces, ibm.max_coupling_iterations,
+      hold_no_slip(sim.grid(), sim.kernel(), walls, dt, ibm.slip_tolerance, on_faces, sim.cell_forces_from_faces(),
+                   ibm.max_coupling_iterations,
                    sim.fluid_solver(), fluid, sim.coupling(), sim.slip_increment_x, sim.slip_increment_y,
                    sim.force_face_x, sim.force_face_y, sim.no_slip_work);
   keep_forces(sim.coupling());
@@ -118,11 +122,13 @@ void advance_body_stage(Simulation& sim, double time_n, double dt) {
   // only for a group that may touch something.
   SubstepGroups& groups = sim.substep_groups(dt);
   const double global_limit = groups.group_of.empty() ? sim.global_contact_limit(dt) : HUGE_VAL;
+  for (RigidBody& r : sim.rigid()) start_fluid_step(r);
   const SolidStepCount count =
       advance_bodies({time_n, dt, sim.fluid_density(), sim.scene().fluid.gravity, global_limit,
                       sim.fixed_solid_substeps, &sim.spectral_workspace, &sim.implicit_systems},
                      sim.swelling(), sim.contact_forces, groups, sim.coupling(), sim.contact_work(), sim.rigid(),
                      sim.bodies());
+  for (RigidBody& r : sim.rigid()) end_fluid_step(dt, r);
   sim.last_n_substeps = count.max_substeps;
   sim.last_body_substeps = count.body_substeps;
   sim.total_substeps += count.max_substeps;

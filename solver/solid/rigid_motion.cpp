@@ -55,10 +55,20 @@ void place_points(const RigidBody& rigid, MassSpringBody& body) {
 
 void advance_newton_euler(double dt, const std::array<double, 2>& force, double torque, RigidBody& rigid) {
   RigidState& s = rigid.state;
-  for (int d = 0; d < 2; ++d) s.velocity[d] += dt * force[d] / rigid.mass;
-  s.angular_velocity += dt * torque / rigid.moment_of_inertia;
+  const std::array<double, 3>& a = rigid.previous_acceleration;
+  for (int d = 0; d < 2; ++d) s.velocity[d] += dt * (force[d] + rigid.virtual_mass * a[d]) / (rigid.mass + rigid.virtual_mass);
+  s.angular_velocity += dt * (torque + rigid.virtual_inertia * a[2]) / (rigid.moment_of_inertia + rigid.virtual_inertia);
   for (int d = 0; d < 2; ++d) s.centre[d] += dt * s.velocity[d];
   s.angle += dt * s.angular_velocity;
+}
+
+void start_fluid_step(RigidBody& rigid) {
+  rigid.step_start = {rigid.state.velocity[0], rigid.state.velocity[1], rigid.state.angular_velocity};
+}
+
+void end_fluid_step(double dt, RigidBody& rigid) {
+  const std::array<double, 3> now{rigid.state.velocity[0], rigid.state.velocity[1], rigid.state.angular_velocity};
+  for (int k = 0; k < 3; ++k) rigid.previous_acceleration[k] = (now[k] - rigid.step_start[k]) / dt;
 }
 
 }  // namespace ibms

@@ -41,6 +41,13 @@ struct RigidBody {
   double mass = 0.0;                           // m [mass/length]
   double moment_of_inertia = 0.0;              // I about X_c [mass length]
   PrescribedMotion prescribed;                 // used by kind prescribed only
+  // Virtual mass and moment of inertia C_V rho_f (V, V D^2 / 8) (Schwarz, Kempe & Froehlich 2015),
+  // on both sides of Newton-Euler: (m + m_v) dV/dt = F + m_v a_prev, a_prev the mean acceleration of
+  // the previous fluid step (start_step / end_step); 0 without.
+  double virtual_mass = 0.0;                   // [mass/length]
+  double virtual_inertia = 0.0;                // [mass length]
+  std::array<double, 3> previous_acceleration{0.0, 0.0, 0.0};  // dV/dt, dOmega/dt [length/time^2, 1/time^2]
+  std::array<double, 3> step_start{0.0, 0.0, 0.0};             // V, Omega at t^n
 };
 
 // The kinematic description of `spec` (kind rigid or prescribed) with the point set `body` built
@@ -50,7 +57,13 @@ RigidBody rigid_body_from_spec(const BodySpec& spec, const MassSpringBody& body)
 // Positions and velocities of the rim points and the centre point from the rigid state.
 void place_points(const RigidBody& rigid, MassSpringBody& body);
 
-// One symplectic Euler step of Newton-Euler: V += dt F/m, Omega += dt T/I, X_c += dt V, theta += dt Omega.
+// One symplectic Euler step of Newton-Euler with the virtual mass: V += dt (F + m_v a_prev)/(m + m_v),
+// Omega += dt (T + I_v alpha_prev)/(I + I_v), X_c += dt V, theta += dt Omega.
 void advance_newton_euler(double dt, const std::array<double, 2>& force, double torque, RigidBody& rigid);
+
+// The fluid step's velocities at its start, and at its end the mean acceleration over it (a_prev of
+// the next step's virtual mass).
+void start_fluid_step(RigidBody& rigid);
+void end_fluid_step(double dt, RigidBody& rigid);
 
 }  // namespace ibms

@@ -48,7 +48,8 @@ struct CouetteResult {
 // the exact solution, run to end_time: the distance to the discrete steady state decays like
 // exp(-nu pi^2 t / (R2 - R1)^2), so t = 0.4 leaves e^-9.9 of it.
 inline CouetteResult run_circular_couette(int n, int forcing_passes, double marker_retraction = 0.0,
-                                          const std::string& coupling = "uhlmann") {
+                                          const std::string& coupling = "uhlmann",
+                                          const std::string& constrained_velocity = "cells") {
   using C = CircularCouette;
   Scene scene;
   scene.source_file = "(circular Couette)";
@@ -58,6 +59,7 @@ inline CouetteResult run_circular_couette(int n, int forcing_passes, double mark
   scene.ibm.marker_retraction = marker_retraction;
   scene.ibm.coupling = coupling;
   scene.ibm.slip_tolerance = 1e-4;
+  scene.ibm.constrained_velocity = constrained_velocity;
   // Prescribed bodies move as given: the inner-fluid term would only enter their reported force,
   // and its fan-triangle overlaps of the large outer cylinder would cost 4x the whole run.
   scene.ibm.inner_fluid_inertia = "none";
