@@ -318,11 +318,11 @@ TARGET_RULES = [
 # on the metric, cause). A miss without an entry points to the case README.
 CAUSES = [
     ("dfg_cylinder_2d2", r"drag_coefficient_max",
-     "The papers' coupling leaves a slip at the end of the step, and on the collocated grid the momentum "
-     "interpolation's face term $\\Delta t(\\overline{G_c}-G_f)p$ is a flux through the body where $p$ jumps across "
-     "the rim; it is proportional to $\\Delta t$ and does not fall with $h$ at a fixed CFL number. Holding no-slip on "
-     "the face velocities (\\texttt{ibm.coupling = \"no\\_slip\"}, \\texttt{constrained\\_velocity = \"faces\"}) "
-     "gives max $c_D$ $-2.0$\\,\\% at $D/h=20$, but still $+1.9$\\,\\% between CFL 0.5 and 0.125 (README)."),
+     "Under the papers' coupling the slip left at the end of the step and, on the collocated grid, the momentum "
+     "interpolation's flux through the body, proportional to $\\Delta t$, raise max $c_D$ by 11--12\\,\\% on every "
+     "grid. The shipped scene holds no-slip on the face velocities with the cells forced by the face mean "
+     "(\\texttt{ibm.coupling = \"no\\_slip\"}, \\texttt{constrained\\_velocity = \"faces\"}): max $c_D$ $-1.6$\\,\\% "
+     "at $D/h=20$, moving by $-0.17$\\,\\% from CFL 0.5 to 0.125 (README)."),
     ("dfg_cylinder_2d1", r"^drag_coefficient at",
      "First-order convergence of the diffuse interface: $c_D$ reaches 1\\,\\% of the reference only on finer grids "
      "(the `slow' label's finest); keeping $\\nu\\Delta t/h^2$ fixed makes the cost grow like $(D/h)^4$ (README)."),
