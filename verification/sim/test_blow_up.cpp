@@ -57,7 +57,7 @@ ibms::Scene scene() {
   return ibms::read_scene_string(wall_shot_scene(), "wall_shot.toml");
 }
 
-std::string blow_up_message(const ibms::Simulation& sim, double dt) {
+std::string blow_up_message(ibms::Simulation& sim, double dt) {
   try {
     ibms::check_for_blow_up(sim, dt, ibms::scan_velocity(sim.grid(), sim.fluid()));
   } catch (const ibms::BlowUpError& error) {
