@@ -66,6 +66,9 @@ int run_command(const std::string& scene_path, const std::vector<std::string>& o
   if (!quiet) {
     std::fprintf(stderr, "ibms: %ld steps to t = %.6g (%s) in %.2f s; output %s\n", summary.steps, summary.time,
                  summary.stop_reason.c_str(), summary.wall_seconds, summary.output_path.c_str());
+    std::fprintf(stderr, "ibms: fluid guard: largest speed %.3g V_f (V_f = %.4g; stops above %g V_f), largest "
+                 "kinetic energy %.3g of its budget (stops above 1)\n", sim.fluid_guard.largest_speed_ratio,
+                 sim.fluid_guard.speed_scale, ibms::FluidGuard::speed_factor, sim.fluid_guard.largest_energy_ratio);
     std::fprintf(stderr, "%s", ibms::stage_timing_table(sim, summary.wall_seconds).c_str());
   }
   return 0;

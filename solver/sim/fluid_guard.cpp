@@ -89,6 +89,7 @@ void start_fluid_guard(Simulation& sim) {
   guard.boundary_power = boundary_power(sim);
   const double area = sim.grid().length_x * sim.grid().length_y;
   guard.energy_floor = FluidGuard::floor_fraction * 0.5 * guard.speed_scale * guard.speed_scale * area;
+  guard.largest_speed_ratio = guard.largest_energy_ratio = 0.0;
 }
 
 void account_fluid_input(Simulation& sim, double dt) {
@@ -103,10 +104,12 @@ void account_fluid_input(Simulation& sim, double dt) {
 }
 
 void check_fluid_guard(Simulation& sim, const VelocityScan& scan) {
-  const FluidGuard& guard = sim.fluid_guard;
+  FluidGuard& guard = sim.fluid_guard;
   const Grid& g = sim.grid();
   const double rho = sim.fluid_density();  // the message speaks the series' units: energy per unit depth
   const double budget = guard.energy_budget();
+  guard.largest_speed_ratio = std::max(guard.largest_speed_ratio, scan.max_speed / guard.speed_scale);
+  guard.largest_energy_ratio = std::max(guard.largest_energy_ratio, scan.kinetic_energy / budget);
   if (scan.kinetic_energy > budget)
     report_fluid_instability(sim, fmt::format(
         "fluid kinetic energy {:.4g} exceeds its budget {:.4g} = {} E_0 + {} W + floor (E_0 = {:.4g} at the start, "

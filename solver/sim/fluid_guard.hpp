@@ -28,6 +28,8 @@ struct FluidGuard {
   double boundary_power = 0.0;  // P_b of the latest state [length^4/time^3]
   double energy_floor = 0.0;    // floor_fraction E_V [length^4/time^2]
   bool warned = false;          // run.on_fluid_instability = "warn": said once
+  // The largest max |u| / V_f and E / budget checked since the guard started (`ibms run` prints them) [-].
+  double largest_speed_ratio = 0.0, largest_energy_ratio = 0.0;
 
   double energy_budget() const {
     return (1.0 + initial_margin) * initial_energy + (1.0 + work_margin) * input_work + energy_floor;
