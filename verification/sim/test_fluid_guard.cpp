@@ -2,7 +2,7 @@
 // adaptive step, which the CFL guard cannot see, stops with the blow-up error naming step, time and
 // quantity; a field that gains energy nothing feeds stops at the energy budget, or is reported once
 // with run.on_fluid_instability = "warn"; stable runs are not stopped. The flow is the double shear
-// layer of bench_fluid_stability (docs/fluid-stability.md §2) on 64^2 cells.
+// layer of bench_fluid_stability (docs/fluid-stability.md §2) on 64^2 cells. A restart keeps the budget.
 #define BOOST_TEST_MODULE fluid_guard
 #include <boost/test/unit_test.hpp>
 
@@ -12,10 +12,12 @@
 #include <string>
 
 #include "core/errors.hpp"
+#include "io/checkpoint.hpp"
 #include "scene/scene_reader.hpp"
 #include "sim/diagnostics.hpp"
 #include "sim/run.hpp"
 #include "sim/simulation.hpp"
+#include "sim/simulation_checkpoint.hpp"
 
 using namespace ibms;
 
@@ -168,4 +170,23 @@ BOOST_AUTO_TEST_CASE(driven_cavity_stays_within_the_wall_work) {
   BOOST_TEST(sim.fluid_guard.speed_scale == 1.0);  // the lid
   BOOST_TEST(sim.fluid_guard.input_work > scan.kinetic_energy);  // the lid has done more work than E holds
   BOOST_TEST(sim.fluid_guard.largest_energy_ratio < 1.0);
+}
+
+// The budget is part of the checkpoint: a run restarted from it goes on with the same V_f, E_0 and
+// work W, not with a budget restarted from the restored field.
+BOOST_AUTO_TEST_CASE(restart_keeps_the_budget) {
+  std::filesystem::create_directories(work_dir);
+  const std::string file = (work_dir / "cavity_restart.h5").string();
+  const Scene scene = read_scene_file(IBMS_CAVITY_SCENE, {"domain.cells_x=16", "domain.cells_y=16", "run.end_time=1",
+                                                          "run.steady_tolerance=0", "output.progress=false",
+                                                          "output.file=\"" + file + "\""});
+  Simulation sim(scene);
+  run_simulation(sim, {file, /*quiet=*/true});
+  Simulation restarted(scene);
+  restore_simulation(read_checkpoint(file), file, restarted);
+  BOOST_TEST(sim.fluid_guard.input_work > 0.0);
+  BOOST_TEST(restarted.fluid_guard.input_work == sim.fluid_guard.input_work);
+  BOOST_TEST(restarted.fluid_guard.initial_energy == sim.fluid_guard.initial_energy);  // 0: from rest
+  BOOST_TEST(restarted.fluid_guard.speed_scale == sim.fluid_guard.speed_scale);
+  BOOST_TEST(restarted.fluid_guard.boundary_power == sim.fluid_guard.boundary_power);
 }
