@@ -9,8 +9,9 @@
 // in the cavity; the map "<case>_adaptive"). Default N = 64, T = 10.
 // Each point is stepped with advance_one_step and the solver's blow-up check (check_for_blow_up) as
 // run_simulation does, and gives two outcomes (the check only reads the state, so one run serves both):
-//   default_guard  the shipped run.max_cfl (RunSpec default) and the non-finite check;
-//   no_cfl_guard   only the non-finite check (the run goes on after the CFL guard fired).
+//   default_guard  the shipped run.max_cfl (RunSpec default), the fluid guard (energy budget and
+//                  speed bound, sim/fluid_guard.hpp) and the non-finite check;
+//   no_cfl_guard   only the non-finite check (the run goes on after a guard fired).
 // Outcome "stable": finite to the end, no velocity component above 2 U, and the kinetic energy
 // E = 0.5 sum |u|^2 dx dy never above its bound: cavity 0.5 U^2 L^2 (the whole box moving at the lid
 // speed); shear layer 1.01 E(0) (the central convection in divergence form with divergence-free face
@@ -21,7 +22,8 @@
 // stopped it (message kept; a bound crossed before it is named first).
 // Writes <out>/stability_fluid_<case>[_adaptive][_<N>][_t<T>].csv (mode,cfl,cell_reynolds,
 // viscous_number,dt,nu,theory_max_g,steps,outcome,max_cfl_measured,max_energy_ratio,end_energy_ratio,
-// late_energy_ratio,max_speed,first_above_cfl_1,first_above_cfl_2,first_above_bound,message) and
+// late_energy_ratio,max_speed,first_above_cfl_1,first_above_cfl_2,first_above_bound,max_speed_over_scale,
+// max_energy_over_budget,message) and
 // prints each map beside the von Neumann limit (fluid/time_scheme_stability.hpp).
 // usage: bench_fluid_stability [out_dir] [--cells N] [--flow-times T] [cavity] [shear_layer]
 #include <algorithm>
@@ -39,6 +41,7 @@
 #include "fluid/time_scheme_stability.hpp"
 #include "scene/scene_reader.hpp"
 #include "sim/diagnostics.hpp"
+#include "sim/fluid_guard.hpp"
 #include "sim/simulation.hpp"
 
 #include "bench_paths.hpp"
@@ -70,6 +73,9 @@ struct Outcome {
   // run.max_cfl would stop), and the first step above the energy or speed bound; -1: never.
   long first_above_cfl_1 = -1, first_above_cfl_2 = -1, first_above_bound = -1;
   double mean_dt = 0.0;            // end time reached / steps (the adaptive step varies)
+  // The fluid guard's figures over the run (sim/fluid_guard.hpp): the largest max |u| / V_f and
+  // E / budget (the guard stops at speed_factor and 1).
+  double max_speed_over_scale = 0.0, max_energy_over_budget = 0.0;
 };
 
 struct MapCase {
@@ -86,6 +92,7 @@ struct MapCase {
 Outcome run_point(const MapCase& c, const Scene& scene, bool adaptive) {
   Simulation sim(scene);
   if (c.initial_state) c.initial_state(sim);
+  start_fluid_guard(sim);  // as run_simulation does: the field set here is the initial one
   const Grid& g = sim.grid();
   const FluidSolver& solver = sim.fluid_solver();
   const double area = g.length_x * g.length_y;
@@ -116,6 +123,8 @@ Outcome run_point(const MapCase& c, const Scene& scene, bool adaptive) {
         break;
       }
     }
+    out.max_speed_over_scale = std::max(out.max_speed_over_scale, scan.max_speed / sim.fluid_guard.speed_scale);
+    out.max_energy_over_budget = std::max(out.max_energy_over_budget, scan.kinetic_energy / sim.fluid_guard.energy_budget());
     const double cfl = dt * scan.max_rate;
     out.max_cfl_measured = std::max(out.max_cfl_measured, cfl);
     if (cfl > 1.0 && out.first_above_cfl_1 < 0) out.first_above_cfl_1 = step;
@@ -229,13 +238,13 @@ int main(int argc, char** argv) {
                        : "CFL number U dt / h, fixed dt,")
           << " against cell Reynolds number U h / nu; " << c.description << "; " << cells << "^2 cells, to t = "
           << flow_times << " L/U" << (adaptive ? "; dt and viscous_number: mean over the run" : "") << "\n";
-      csv << "# mode default_guard = run.max_cfl " << default_max_cfl << " (the default) and the non-finite check; "
+      csv << "# mode default_guard = run.max_cfl " << default_max_cfl << " (the default), the fluid guard and the non-finite check; "
           << "no_cfl_guard = the non-finite check only; energy bound " << c.bound_text
           << " and a velocity component at most 2 U; first_above_*: first step with CFL number > 1, > 2, "
              "energy or speed above its bound (-1 never)\n";
       csv << "mode,cfl,cell_reynolds,viscous_number,dt,nu,theory_max_g,steps,outcome,max_cfl_measured,"
              "max_energy_ratio,end_energy_ratio,late_energy_ratio,max_speed,first_above_cfl_1,first_above_cfl_2,"
-             "first_above_bound,message\n";
+             "first_above_bound,max_speed_over_scale,max_energy_over_budget,message\n";
       const double h = 1.0 / cells, speed = 1.0;
       std::map<std::pair<std::size_t, std::size_t>, Outcome> map;
       for (std::size_t ir = 0; ir < cell_reynolds.size(); ++ir)
@@ -254,11 +263,12 @@ int main(int argc, char** argv) {
             std::string message = mode == 0 ? o.guarded_message : o.unguarded_message;
             std::replace(message.begin(), message.end(), '"', '\'');
             char line[512];
-            std::snprintf(line, sizeof line, "%s,%.6g,%.6g,%.6g,%.6g,%.6g,%.8f,%ld,%s,%.4g,%.4g,%.4g,%.4g,%.4g,%ld,%ld,%ld,",
+            std::snprintf(line, sizeof line, "%s,%.6g,%.6g,%.6g,%.6g,%.6g,%.8f,%ld,%s,%.4g,%.4g,%.4g,%.4g,%.4g,%ld,%ld,%ld,%.4g,%.4g,",
                           mode == 0 ? "default_guard" : "no_cfl_guard", cfls[ic], cell_reynolds[ir], viscous_number,
                           dt, nu, theory, o.steps, (mode == 0 ? o.guarded : o.unguarded).c_str(), o.max_cfl_measured,
                           o.max_energy_ratio, o.end_energy_ratio, o.late_energy_ratio, o.max_speed,
-                          o.first_above_cfl_1, o.first_above_cfl_2, o.first_above_bound);
+                          o.first_above_cfl_1, o.first_above_cfl_2, o.first_above_bound, o.max_speed_over_scale,
+                          o.max_energy_over_budget);
             csv << line << "\"" << message << "\"\n";
           }
           csv.flush();

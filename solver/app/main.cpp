@@ -42,6 +42,14 @@ void install_stop_handlers() {
   sigaction(SIGTERM, &action, nullptr);
 }
 
+// The fluid guard's largest ratios over the run (sim/fluid_guard.hpp): how close it came to a stop.
+void print_fluid_guard(const ibms::Simulation& sim) {
+  const ibms::FluidGuard& guard = sim.fluid_guard;
+  std::fprintf(stderr, "ibms: fluid guard: largest speed %.3g V_f (V_f = %.4g; stops above %g V_f), largest kinetic "
+               "energy %.3g of its budget (stops above 1)\n", guard.largest_speed_ratio, guard.speed_scale,
+               ibms::FluidGuard::speed_factor, guard.largest_energy_ratio);
+}
+
 int run_command(const std::string& scene_path, const std::vector<std::string>& overrides,
                 const std::string& output, const std::string& restart, bool quiet) {
   install_stop_handlers();  // first: a signal while the scene is read stops the run at step 0
@@ -56,7 +64,14 @@ int run_command(const std::string& scene_path, const std::vector<std::string>& o
     }
   }
   ibms::Simulation sim(scene);
-  const ibms::RunSummary summary = ibms::run_simulation(sim, {scene.output.file, quiet, restart, &stop_signal});
+  ibms::RunSummary summary;
+  try {
+    summary = ibms::run_simulation(sim, {scene.output.file, quiet, restart, &stop_signal});
+  } catch (const ibms::BlowUpError&) {
+    if (!quiet) print_fluid_guard(sim);
+    throw;
+  }
+  if (!quiet) print_fluid_guard(sim);
   if (summary.interrupted) {
     std::fprintf(stderr, "ibms: %s at step %ld, t = %.6g; checkpoint written to %s (continue with --restart %s)\n",
                  summary.stop_reason.c_str(), summary.steps, summary.time, summary.output_path.c_str(),

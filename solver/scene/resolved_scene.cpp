@@ -95,6 +95,7 @@ std::string resolved_scene_toml(const Scene& scene) {
   out += fmt::format("max_viscous_number = {}\n", toml_float(run.max_viscous_number));
   out += fmt::format("solid_substeps = {}\n", toml_string(run.solid_substeps));
   out += fmt::format("on_body_instability = {}\n", toml_string(run.on_body_instability));
+  out += fmt::format("on_fluid_instability = {}\n", toml_string(run.on_fluid_instability));
 
   const DomainSpec& domain = scene.domain;
   out += "\n[domain]\n";

@@ -30,6 +30,10 @@ struct RunSpec {
   // an unstable spring or contact) stops the run with the blow-up message ("stop") or is reported
   // once on stderr ("warn").
   std::string on_body_instability = "stop";
+  // A fluid whose kinetic energy exceeds its budget (what the walls, open sides and bodies can feed
+  // it) or whose largest speed exceeds FluidGuard::speed_factor times the scene's speed scale
+  // (sim/fluid_guard.hpp, docs/method.md §7) stops the run ("stop") or is reported once ("warn").
+  std::string on_fluid_instability = "stop";
 };
 
 struct DomainSpec {

@@ -36,6 +36,7 @@ void read_run(const TomlTableReader& table, RunSpec& run) {
   table.read_real("max_viscous_number", run.max_viscous_number, Need::optional, non_negative);
   table.read_choice("solid_substeps", run.solid_substeps, schema::solid_substeps_choices);
   table.read_choice("on_body_instability", run.on_body_instability, schema::on_body_instability_choices);
+  table.read_choice("on_fluid_instability", run.on_fluid_instability, schema::on_fluid_instability_choices);
 }
 
 void read_domain(const TomlTableReader& table, DomainSpec& domain) {

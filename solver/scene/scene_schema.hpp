@@ -14,8 +14,10 @@ inline constexpr std::string_view section_names[] = {"run",    "domain", "fluid"
 inline constexpr std::string_view run_keys[] = {"end_time",         "time_step", "cfl",
                                                 "max_time_step",    "steady_tolerance",
                                                 "max_steps",        "max_cfl",
-                                                "max_viscous_number", "solid_substeps", "on_body_instability"};
+                                                "max_viscous_number", "solid_substeps", "on_body_instability",
+                                                "on_fluid_instability"};
 inline constexpr std::string_view on_body_instability_choices[] = {"stop", "warn"};
+inline constexpr std::string_view on_fluid_instability_choices[] = {"stop", "warn"};
 inline constexpr std::string_view solid_substeps_choices[] = {"per_group", "global"};
 inline constexpr std::string_view domain_keys[] = {"length_x", "length_y",   "cells_x",
                                                    "cells_y",  "periodic_x", "periodic_y"};

@@ -8,6 +8,7 @@
 #include <cstdio>
 
 #include "core/errors.hpp"
+#include "sim/fluid_guard.hpp"
 #include "solid/spring_forces.hpp"
 
 namespace ibms {
@@ -15,14 +16,21 @@ namespace ibms {
 VelocityScan scan_velocity(const Grid& grid, const FluidState& fluid) {
   VelocityScan scan;
   const double inv_dx = 1.0 / grid.dx(), inv_dy = 1.0 / grid.dy();
+  double sum_squares = 0.0, max_square = 0.0;
   for (int j = 0; j < grid.ny; ++j)
     for (int i = 0; i < grid.nx; ++i) {
-      const double rate = std::abs(fluid.velocity_x(i, j)) * inv_dx + std::abs(fluid.velocity_y(i, j)) * inv_dy;
+      const double u = fluid.velocity_x(i, j), v = fluid.velocity_y(i, j);
+      const double rate = std::abs(u) * inv_dx + std::abs(v) * inv_dy;
       if (!std::isfinite(rate) || !std::isfinite(fluid.pressure(i, j))) {
-        return {HUGE_VAL, i, j, false};
+        return {HUGE_VAL, i, j, false, HUGE_VAL, i, j, HUGE_VAL};
       }
-      if (rate > scan.max_rate) scan = {rate, i, j, true};
+      if (rate > scan.max_rate) { scan.max_rate = rate; scan.i = i; scan.j = j; }
+      const double square = u*u + v*v;
+      sum_squares += square;
+      if (square > max_square) { max_square = square; scan.speed_i = i; scan.speed_j = j; }
     }
+  scan.max_speed = std::sqrt(max_square);
+  scan.kinetic_energy = 0.5 * sum_squares * grid.cell_area();
   return scan;
 }
 
@@ -112,7 +120,8 @@ void check_bodies_for_blow_up(const Simulation& sim) {
 
 }  // namespace
 
-void check_for_blow_up(const Simulation& sim, double dt, const VelocityScan& scan) {
+void check_for_blow_up(Simulation& sim, double dt, const VelocityScan& scan) {
+  account_fluid_input(sim, dt);  // before any stop: the budget counts every step
   if (sim.has_bodies()) check_bodies_for_blow_up(sim);
   const Grid& g = sim.grid();
   const FluidState& f = sim.fluid();
@@ -128,6 +137,7 @@ void check_for_blow_up(const Simulation& sim, double dt, const VelocityScan& sca
         "(|u| = {:.3g}, |v| = {:.3g}); reduce run.time_step or run.cfl",
         f.step, f.time, cfl, sim.scene().run.max_cfl, place, f.velocity_x(scan.i, scan.j),
         f.velocity_y(scan.i, scan.j)));
+  check_fluid_guard(sim, scan);
 }
 
 // The last steps before end_time share the time left equally, so that the last step is not much

@@ -9,11 +9,15 @@
 namespace ibms {
 
 // Largest advective rate max(|u|/dx + |v|/dy) over cells, with its cell; a non-finite value is
-// reported as found (value = inf) at its first cell.
+// reported as found (value = inf) at its first cell. The same sweep gives the fluid guard its
+// figures (sim/fluid_guard.hpp): the largest speed |u| with its cell, and the kinetic energy.
 struct VelocityScan {
   double max_rate = 0.0;      // [1/time]
   int i = 0, j = 0;           // cell of the maximum (or of the first non-finite value)
   bool finite = true;
+  double max_speed = 0.0;     // max |u| over cells [length/time]
+  int speed_i = 0, speed_j = 0;  // its cell
+  double kinetic_energy = 0.0;   // E = sum |u|^2 dx dy / 2 [length^4/time^2 per unit density and depth]
 };
 VelocityScan scan_velocity(const Grid& grid, const FluidState& fluid);
 
@@ -22,8 +26,10 @@ double max_body_point_speed(const Simulation& sim);
 
 // Throws BlowUpError naming step, time, quantity and place if the state is non-finite or the
 // CFL number dt * max_rate exceeds run.max_cfl; with bodies also if a body point is non-finite
-// or has left the box in a wall direction (naming body, point and position).
-void check_for_blow_up(const Simulation& sim, double dt, const VelocityScan& scan);
+// or has left the box in a wall direction (naming body, point and position). Then the fluid
+// guard: it first adds the step's input work to the energy budget, so call it once per step of
+// length dt, after the step (sim/fluid_guard.hpp).
+void check_for_blow_up(Simulation& sim, double dt, const VelocityScan& scan);
 
 // The time step for the next step: fixed, or cfl / max rate (with moving walls counted) and,
 // with bodies, marker travel <= 0.5 h per step (docs/method.md §7 step 7), capped by

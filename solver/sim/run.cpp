@@ -17,6 +17,7 @@
 #include "io/output_file.hpp"
 #include "sim/control_volume_monitor.hpp"
 #include "sim/diagnostics.hpp"
+#include "sim/fluid_guard.hpp"
 #include "sim/simulation_checkpoint.hpp"
 #include "solid/body_geometry.hpp"
 #include "solid/spring_forces.hpp"
@@ -315,6 +316,8 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& options) {
       throw InputError(options.restart_file + ": --restart: the output file would overwrite the checkpoint "
                        "being restarted from; give another output file with -o");
     next_snapshot = restore_simulation(read_checkpoint(options.restart_file), options.restart_file, sim);
+  } else {
+    start_fluid_guard(sim);  // from the field the run starts with (one set from C++ counts as initial)
   }
   OutputFile out(summary.output_path, scene.resolved_text, sim.grid(), ibms_version(), ibms_git_commit());
 

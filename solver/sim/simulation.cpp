@@ -57,7 +57,11 @@ Simulation::Simulation(const Scene& scene)
       kernel_(kernel_from_name(scene.ibm.kernel)) {
   inner_fluid_inertia = inner_fluid_inertia_from_name(scene.ibm.inner_fluid_inertia);
   fluid_solver_.initialise_faces(fluid_);  // fluid at rest: faces 0, projection is a no-op
-  if (!has_bodies()) return;
+  if (!has_bodies()) {
+    set_instability_bounds();  // the driving speed: the fluid guard's speed scale
+    start_fluid_guard(*this);
+    return;
+  }
   // dV_l = h s_l (docs/method.md §3.6) and the kernel assume square cells.
   if (std::abs(grid_.dx() - grid_.dy()) > 1e-12 * grid_.dx())
     throw InputError(scene.source_file + ": domain: bodies need square cells (dx = dy), got dx = " +
@@ -144,6 +148,7 @@ Simulation::Simulation(const Scene& scene)
   // Variant K: I_T at t = 0 (region X^0, velocity u^0), the first "previous" value.
   if (inner_fluid_inertia == &kempe_inner_fluid_inertia)
     sample_inner_fluid_momentum(grid_, fluid_, bodies_, coupling_);
+  start_fluid_guard(*this);
 }
 
 void Simulation::set_instability_bounds() {

@@ -16,6 +16,7 @@
 #include "scene/scene.hpp"
 #include "sim/body_coupling.hpp"
 #include "sim/body_update.hpp"
+#include "sim/fluid_guard.hpp"
 #include "sim/inner_fluid_inertia.hpp"
 #include "sim/no_slip_coupling.hpp"
 #include "sim/stage_timers.hpp"
@@ -89,6 +90,9 @@ class Simulation {
   // dissipative spring-dashpot law with walls at rest, apart from the integration error; a contact
   // that returns more energy than it received makes it grow (the guard in sim/diagnostics.cpp).
   double total_contact_work = 0.0;
+  // The fluid's energy budget and speed bound (sim/fluid_guard.hpp), started from the state the
+  // Simulation is built with and again by run_simulation.
+  FluidGuard fluid_guard;
   // How the bodies sub-step in the next step of length dt (sim/body_update.hpp): the contact groups
   // with the contact sub-step bound of each group that may touch something; with
   // run.solid_substeps = "global", no groups (one group, bound global_contact_limit(dt)).

@@ -131,6 +131,10 @@ void write_simulation_checkpoint(OutputFile& out, const Simulation& sim, double 
       {"has_convection_prev", f.has_convection_prev ? 1.0 : 0.0},
       {"next_snapshot_time", next_snapshot_time},
       {"total_contact_work", sim.total_contact_work},
+      {"fluid_guard_speed_scale", sim.fluid_guard.speed_scale},
+      {"fluid_guard_initial_energy", sim.fluid_guard.initial_energy},
+      {"fluid_guard_input_work", sim.fluid_guard.input_work},
+      {"fluid_guard_boundary_power", sim.fluid_guard.boundary_power},
       {"nx", static_cast<double>(sim.grid().nx)},
       {"ny", static_cast<double>(sim.grid().ny)},
       {"n_bodies", static_cast<double>(sim.bodies().size())},
@@ -211,6 +215,18 @@ double restore_simulation(const Checkpoint& checkpoint, const std::string& path,
   read.into("fluid_convection_y_prev", f.convection_y_prev);
   read.into("fluid_velocity_face_x", f.velocity_face_x);
   read.into("fluid_velocity_face_y", f.velocity_face_y);
+  // The fluid guard's budget goes on as it was; a checkpoint without it (older ibms) starts it from
+  // the restored field.
+  start_fluid_guard(sim);
+  if (checkpoint.scalars.count("fluid_guard_input_work") != 0) {
+    FluidGuard& guard = sim.fluid_guard;
+    guard.speed_scale = read.non_negative("fluid_guard_speed_scale");
+    guard.initial_energy = read.non_negative("fluid_guard_initial_energy");
+    guard.input_work = read.non_negative("fluid_guard_input_work");
+    guard.boundary_power = read.scalar("fluid_guard_boundary_power");
+    guard.energy_floor = FluidGuard::floor_fraction * 0.5 * guard.speed_scale * guard.speed_scale *
+                         sim.grid().length_x * sim.grid().length_y;
+  }
   for (std::size_t b = 0; b < sim.bodies().size(); ++b) {
     MassSpringBody& body = sim.bodies()[b];
     const std::string prefix = body_prefix(b);

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Claims: (1) `ibms run` on bad input exits with code 2, prints exactly one line naming the scene
 # file and the key, and creates no output file; (2) a run that blows up exits with code 3, the
-# message names step, time and place, and the HDF5 output written so far is readable; (3) a failed
+# message names step, time and place, and the HDF5 output written so far is readable, also when the
+# fluid guard stops it (sim/fluid_guard.hpp); (3) a failed
 # write of the output exits with code 5 and the system's reason, whether it fails at a flush or
 # inside an HDF5 dataset write. Every run passes its thread count (--threads 1).
 set -u
@@ -65,6 +66,19 @@ elif ! /usr/bin/python3 -c "import h5py,sys; f=h5py.File('blow.h5','r'); assert 
   echo "FAIL blow-up: blow.h5 is not readable"; failures=$((failures + 1))
 else
   echo "ok   blow-up: $(cat err.txt)"
+fi
+
+# Fluid guard: the same cavity at CFL 1.6 with the CFL guard out of the way (run.max_cfl = 1000)
+# grows slowly until its largest speed passes 1.75 times the lid speed.
+rm -f guard.h5
+"$ibms" run good.toml --set domain.cells_x=16 --set domain.cells_y=16 --set run.time_step=0.1 \
+  --set run.max_cfl=1000 --set run.end_time=100 -o guard.h5 --quiet --threads 1 2> err.txt; code=$?
+if [[ $code -ne 3 || $(wc -l < err.txt) -ne 1 ]] || ! grep -q "at step .*, t = .*: fluid speed .* in cell (" err.txt; then
+  echo "FAIL fluid guard: exit $code:"; cat err.txt; failures=$((failures + 1))
+elif ! /usr/bin/python3 -c "import h5py,sys; f=h5py.File('guard.h5','r'); assert f['series/time'].shape[0] > 0" 2>/dev/null; then
+  echo "FAIL fluid guard: guard.h5 is not readable"; failures=$((failures + 1))
+else
+  echo "ok   fluid guard: $(cat err.txt)"
 fi
 
 # Output failure: writes past a file-size limit fail with EFBIG, as on a full disk; the run exits
