@@ -1,6 +1,7 @@
 // Parameters of the DEM contacts between contact-detection spheres (CDS), docs/method.md §1.9 and A8:
 // one CDS (circle) per surface mass point, radius absolute or a fraction of the current body
-// diameter; linear normal spring k_Dn with a dashpot from the restitution coefficient e_D;
+// diameter; linear normal spring k_Dn (or, collision_time, k per contact from a collision time,
+// §5.5) with a dashpot from the restitution coefficient e_D;
 // no tangential force. Also the walls the CDS touch and the sub-step bound t_c / 20 (A8).
 // 2D, per unit depth: stiffness [force/length^2], masses [mass/length]. Knows nothing of the grid.
 #pragma once
