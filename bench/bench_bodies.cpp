@@ -10,13 +10,14 @@
 // "inner_loop": the whole inner loop, its neighbour lists and point updates); other = schedules,
 // diagnostics and output. Ratios are against the fluid stage of the same run.
 // Usage: bench_bodies SETTLING_SCENE [--cells 100,150,200] [--until 0.3] [--set k=v]... [--substep-modes]
-//                     [--contact-modes] [EXTRA_SCENE...]
+//                     [--contact-modes] [--model-modes] [EXTRA_SCENE...]
 //   (--set applies to the extra scenes, e.g. --set contact.stiffness=1e7 for the paper's DEM stiffness;
 //    --substep-modes runs each extra scene with run.solid_substeps = per_group and = global and prints
 //    the ratio of their wall times; --contact-modes runs each extra scene also with
 //    contact.time_stepping = shared, every point of a group in contact at the contact sub-step,
-//    and prints the ratio of the wall times and contact stages to the inner loop's; --cells ""
-//    skips the settling runs)
+//    and prints the ratio of the wall times and contact stages to the inner loop's; --model-modes
+//    runs each extra scene also with contact.model = collision_time and with contacts off, and prints
+//    the ratio of each wall time to the run without contacts; --cells "" skips the settling runs)
 #include <unistd.h>
 
 #include <cstdio>
@@ -105,7 +106,7 @@ int main(int argc, char** argv) {
   std::vector<int> cells{100, 150, 200};
   std::string until = "0.3";
   std::vector<std::string> extra, extra_sets;
-  bool substep_modes = false, contact_modes = false;
+  bool substep_modes = false, contact_modes = false, model_modes = false;
   for (int a = 2; a < argc; ++a) {
     const std::string arg = argv[a];
     if (arg == "--cells" && a + 1 < argc) cells = parse_list(argv[++a]);
@@ -113,6 +114,7 @@ int main(int argc, char** argv) {
     else if (arg == "--set" && a + 1 < argc) extra_sets.push_back(argv[++a]);
     else if (arg == "--substep-modes") substep_modes = true;
     else if (arg == "--contact-modes") contact_modes = true;
+    else if (arg == "--model-modes") model_modes = true;
     else extra.push_back(arg);
   }
   try {
@@ -143,6 +145,18 @@ int main(int argc, char** argv) {
         print_row(name.substr(0, 21) + " shared", s);
         std::printf("   %-28s wall %.1f s; shared / inner loop: wall %.2f, contact stage %.2f\n", "", s.wall,
                     s.wall / f.wall, s.contacts / f.contacts);
+      }
+      if (model_modes) {
+        // The collision-time law (k per contact, T_c = collision_steps dt) and no contacts at all.
+        std::vector<std::string> collision_sets = extra_sets, off_sets = extra_sets;
+        collision_sets.insert(collision_sets.end(), {"contact.model=collision_time", "contact.stiffness=0"});
+        off_sets.insert(off_sets.end(), {"contact.model=linear", "contact.stiffness=0"});
+        const Figures c = run_and_time(path, collision_sets);
+        print_row(name.substr(0, 21) + " coll_t", c);
+        const Figures o = run_and_time(path, off_sets);
+        print_row(name.substr(0, 21) + " off", o);
+        std::printf("   %-28s wall %.1f s (collision_time), %.1f s (off); / off: collision_time %.2f, %s %.2f\n", "",
+                    c.wall, o.wall, c.wall / o.wall, "scene's law", f.wall / o.wall);
       }
       if (!substep_modes) continue;
       std::vector<std::string> global_sets = extra_sets;

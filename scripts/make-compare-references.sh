@@ -153,7 +153,7 @@ for variant in nonswelling swelling; do
   { generated cavity_swelling_particles
     echo "# ibms reference for 'ibms compare cavity_swelling_particles' (docs/compare.md): particle centroids"
     echo "# (rim-polygon area centroid) and diameters of ibms's own $variant run of"
-    echo "# validation/cavity_swelling_particles/scene_$variant.toml (100 x 100, DEM stiffness 1e4, as ctest runs it),"
+    echo "# validation/cavity_swelling_particles/scene_$variant.toml (100 x 100, DEM stiffness 1e7, as ctest runs it),"
     echo "# 10 <= t <= 20, one output time in ${stride}. ibms commit $made_by; written by"
     echo "# scripts/make-compare-references.sh at commit $commit."
     echo "time [-],particle [-],x [-],y [-],diameter [-]"

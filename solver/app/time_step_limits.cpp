@@ -79,13 +79,22 @@ std::vector<TimeStepLimit> time_step_limits(const Scene& scene, const Simulation
                       true, "4 / (gamma + sqrt(gamma^2 + 4 omega^2))"});
   }
   if (sim.has_contacts()) {
-    const ContactModel& model = sim.contact_model();
+    const ContactModel model = sim.contact_model().for_fluid_step(planned_time_step(scene));
     const double lightest = lightest_cds_point_mass(sim.bodies());  // as contact_substep
     const double m_eff = sim.bodies().size() > 1 ? 0.5 * lightest : lightest;  // as contact_substep (A8)
-    const double duration = contact_duration(m_eff, model.active_pairs_safety * model.stiffness, /*damping=*/0.0);
+    double heaviest = 0.0;  // as contact_substep: the stiffest collision-time pair
+    for (const MassSpringBody& body : sim.bodies())
+      if (body.kind != BodyKind::prescribed) heaviest = std::max(heaviest, body.total_mass());
+    const bool collision_time = model.law == ContactLawKind::collision_time;
+    const double pair_k = model.pair_stiffness(heaviest);
+    const double duration = contact_duration(m_eff, model.active_pairs_safety * pair_k, /*damping=*/0.0);
     limits.push_back({"contact duration t_c (DEM)", duration, 1.0 / model.steps_per_contact, true,
-                      fmt::format("lightest CDS point, {} x k_Dn; the sub-step is also kept below half the dashpot "
-                                  "limit: {:.4g}", model.active_pairs_safety, contact_substep(model, sim.bodies()))});
+                      fmt::format("lightest CDS point, {} x {}; the sub-step is also kept below half the dashpot "
+                                  "limit: {:.4g}", model.active_pairs_safety,
+                                  collision_time ? fmt::format("k = {:.4g} (collision_time: heaviest body, T_c = {:.4g} "
+                                                               "at the first step)", pair_k, model.collision_time)
+                                                 : std::string("k_Dn"),
+                                  contact_substep(model, sim.bodies()))});
   }
   return limits;
 }
@@ -130,7 +139,9 @@ std::string describe_time_step_limits(const Scene& scene, const Simulation& sim)
   if (sim.has_bodies()) {
     double solid_substep = HUGE_VAL;
     for (const MassSpringBody& body : sim.bodies()) solid_substep = std::min(solid_substep, stable_substep(body, 0.5));
-    const double contact_limit = sim.has_contacts() ? contact_substep(sim.contact_model(), sim.bodies()) : HUGE_VAL;
+    const double contact_limit =
+        sim.has_contacts() && std::isfinite(dt) ? contact_substep(sim.contact_model().for_fluid_step(dt), sim.bodies())
+                                                : HUGE_VAL;
     text += fmt::format("solid sub-step: springs {:.4g}{}\n", solid_substep,
                         sim.has_contacts() ? fmt::format(", contacts {:.4g} (only while a contact is possible within "
                                                          "the step)", contact_limit)

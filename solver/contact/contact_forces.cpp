@@ -186,11 +186,12 @@ ContactStats add_contact_forces(const ContactModel& model, const std::vector<Mas
     stats.max_overlap = std::max(stats.max_overlap, contact.overlap);
     // The pairs of one group act in parallel, S of them along their mean normal (stiffness S k):
     // the dashpot of k / S for each keeps the damping ratio of e_D for the group (ContactModel).
+    // k is k_Dn, or chosen from this pair's m_eff so that it lasts T_c (collision_time).
     const double sharing = model.share_damping_among_active_pairs ? parallel_pairs[k] : 1.0;
-    const ContactLaw law{model.stiffness,
-                         damping_from_restitution(model.restitution_coefficient,
-                                                  effective_mass(model, bodies, contact),
-                                                  model.stiffness / sharing)};
+    const double m_eff = effective_mass(model, bodies, contact);
+    const double stiffness = model.pair_stiffness(m_eff);
+    const ContactLaw law{stiffness,
+                         damping_from_restitution(model.restitution_coefficient, m_eff, stiffness / sharing)};
     const auto& velocity_a = bodies[contact.body_a].velocity[contact.point_a];
     std::array<double, 2> velocity_b{0.0, 0.0};  // walls do not move normal to themselves
     if (contact.body_b != wall_partner) velocity_b = bodies[contact.body_b].velocity[contact.point_b];

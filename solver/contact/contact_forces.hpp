@@ -1,7 +1,8 @@
 // DEM contact forces on the surface mass points of a set of bodies, docs/method.md §1.9 and A8:
 // CDS-CDS pairs of different bodies (cell-list search, skipped when there is one body) and CDS-wall
 // contacts on the non-periodic walls of the box, each a linear normal spring-dashpot
-// (normal_contact_law.hpp) with k_Dn and c from e_D and m_eff (A8, see ContactEffectiveMass).
+// (normal_contact_law.hpp) with k_Dn (or the collision-time k, ContactModel::pair_stiffness) and c
+// from e_D and m_eff (A8, see ContactEffectiveMass).
 // Forces per unit depth [force/length], at the current positions and velocities (one time level).
 #pragma once
 #include <array>

@@ -16,7 +16,12 @@ ContactModel::ContactModel(const ContactSpec& spec)
       cds_radius(spec.cds_radius),
       cds_radius_fraction(spec.cds_radius_fraction),
       walls(spec.walls) {
+  if (spec.model == "collision_time") law = ContactLawKind::collision_time;
+  else if (spec.model != "linear") throw std::invalid_argument("contact: model must be linear or collision_time");
+  collision_steps = spec.collision_steps;
   if (!(stiffness >= 0.0)) throw std::invalid_argument("contact: stiffness must be >= 0");
+  if (law == ContactLawKind::collision_time && (stiffness > 0.0 || !(collision_steps >= 1.0)))
+    throw std::invalid_argument("contact: collision_time takes no stiffness and collision_steps >= 1");
   if (!(restitution_coefficient > 0.0 && restitution_coefficient <= 1.0))
     throw std::invalid_argument("contact: restitution_coefficient must be in (0, 1]");
   if (!(steps_per_contact >= 1.0) || !(active_pairs_safety >= 1.0))
@@ -25,6 +30,19 @@ ContactModel::ContactModel(const ContactSpec& spec)
     throw std::invalid_argument("contact: cds_radius and cds_radius_fraction must be >= 0");
   if (enabled() && cds_radius == 0.0 && cds_radius_fraction == 0.0)
     throw std::invalid_argument("contact: stiffness > 0 needs cds_radius or cds_radius_fraction");
+}
+
+ContactModel ContactModel::for_fluid_step(double dt) const {
+  ContactModel model = *this;
+  if (law == ContactLawKind::collision_time) model.collision_time = collision_steps * dt;
+  return model;
+}
+
+double ContactModel::pair_stiffness(double pair_mass) const {
+  if (law == ContactLawKind::linear) return stiffness;
+  // t_c = sqrt(m_eff / k) sqrt(pi^2 + ln^2 e) = T_c (A8) solved for k.
+  const double log_e = std::log(restitution_coefficient);
+  return pair_mass * (M_PI*M_PI + log_e*log_e) / (collision_time * collision_time);
 }
 
 double ContactModel::cds_radius_of(const MassSpringBody& body) const {
@@ -49,24 +67,30 @@ double contact_substep(const ContactModel& model, const std::vector<MassSpringBo
   constexpr double dashpot_safety = 0.5;      // docs/method.md §5.3 safety factor on a stability limit
   if (!model.enabled() || bodies.empty()) return std::numeric_limits<double>::infinity();
   const double lightest_point = lightest_cds_point_mass(bodies, members);
-  double heaviest_body = 0.0;
+  double heaviest_body = 0.0, heaviest_point = 0.0;
   std::size_t n_members = 0;
   for (std::size_t b = 0; b < bodies.size(); ++b) {
     if (!selected(members, b)) continue;
     ++n_members;
-    if (bodies[b].kind != BodyKind::prescribed) heaviest_body = std::max(heaviest_body, bodies[b].total_mass());
+    if (bodies[b].kind == BodyKind::prescribed) continue;
+    heaviest_body = std::max(heaviest_body, bodies[b].total_mass());
+    for (int k = 0; k < bodies[b].n_surface; ++k) heaviest_point = std::max(heaviest_point, cds_point_mass(bodies[b], k));
   }
   if (!std::isfinite(lightest_point)) return std::numeric_limits<double>::infinity();  // prescribed only
   // Two equal lightest points in a pair have m_eff = m_p / 2; against a wall m_eff = m_p.
   const double m_eff = n_members > 1 ? 0.5 * lightest_point : lightest_point;
   const double n_active = model.active_pairs_safety;
-  const double stiffness = n_active * model.stiffness;
-  // Damping of n_active pairs as add_contact_forces builds it; the heaviest body pair gives the
-  // largest c in the body convention.
+  // The largest m_eff of a pair: the heaviest body (or point) against a wall or a prescribed body.
+  const bool whole_body = model.effective_mass == ContactEffectiveMass::body;
+  const double heaviest = whole_body ? heaviest_body : heaviest_point;
+  // Damping of n_active pairs as add_contact_forces builds it: the heaviest body pair gives the
+  // largest c in the body convention; with collision_time c grows like m_eff in both conventions.
   const double damping_mass =
-      model.effective_mass == ContactEffectiveMass::body ? heaviest_body : m_eff;
-  const double per_pair_stiffness =
-      model.share_damping_among_active_pairs ? model.stiffness / n_active : model.stiffness;
+      model.law == ContactLawKind::collision_time ? heaviest : (whole_body ? heaviest_body : m_eff);
+  // The stiffest pair: k_Dn, or for collision_time the heaviest (k grows like m_eff).
+  const double pair_k = model.pair_stiffness(heaviest);
+  const double stiffness = n_active * pair_k;
+  const double per_pair_stiffness = model.share_damping_among_active_pairs ? pair_k / n_active : pair_k;
   const double total_damping =
       n_active * damping_from_restitution(model.restitution_coefficient, damping_mass, per_pair_stiffness);
   // t_c = sqrt(m_eff / k) sqrt(pi^2 + ln^2 e) (A8), here from the undamped point oscillator

@@ -1,6 +1,7 @@
 // Parameters of the DEM contacts between contact-detection spheres (CDS), docs/method.md §1.9 and A8:
 // one CDS (circle) per surface mass point, radius absolute or a fraction of the current body
-// diameter; linear normal spring k_Dn with a dashpot from the restitution coefficient e_D;
+// diameter; linear normal spring k_Dn (or, collision_time, k per contact from a collision time,
+// §5.5) with a dashpot from the restitution coefficient e_D;
 // no tangential force. Also the walls the CDS touch and the sub-step bound t_c / 20 (A8).
 // 2D, per unit depth: stiffness [force/length^2], masses [mass/length]. Knows nothing of the grid.
 #pragma once
@@ -19,8 +20,18 @@ namespace ibms {
 //         with M the point mass); a stiff body then rebounds with far less damping than e_D says.
 enum class ContactEffectiveMass { body, point };
 
+// How k (and with it c) of a contact is chosen.
+//  linear:         k = k_Dn of the scene for every contact (docs/method.md §1.9, the papers' law);
+//  collision_time: k = m_eff (pi^2 + ln^2 e_D) / T_c^2 per contact, T_c = collision_steps fluid steps,
+//                  so that a single-pair contact lasts T_c whatever m_eff (docs/method.md §5.5; Kempe &
+//                  Froehlich 2012, Biegert, Vowinckel & Meiburg 2017). c follows from e_D as for linear.
+enum class ContactLawKind { linear, collision_time };
+
 struct ContactModel {
-  double stiffness = 0.0;                // k_Dn per CDS pair [force/length^2 per unit depth]; 0 = off
+  ContactLawKind law = ContactLawKind::linear;
+  double stiffness = 0.0;                // k_Dn per CDS pair (linear) [force/length^2 per unit depth]; 0 = off
+  double collision_steps = 10.0;         // T_c / dt (collision_time) [-]
+  double collision_time = 0.0;           // T_c (collision_time), set each fluid step by for_fluid_step [time]
   double restitution_coefficient = 1.0;  // e_D in (0, 1] [-]
   double cds_radius = 0.0;               // absolute CDS radius [length]; 0: use the fraction
   double cds_radius_fraction = 0.0;      // CDS radius / current body diameter [-]
@@ -42,7 +53,12 @@ struct ContactModel {
   ContactModel() = default;
   explicit ContactModel(const ContactSpec& spec);  // std::invalid_argument if inconsistent
 
-  bool enabled() const { return stiffness > 0.0; }
+  bool enabled() const { return stiffness > 0.0 || law == ContactLawKind::collision_time; }
+  // The model of a fluid step of length dt: T_c = collision_steps dt (collision_time; linear: unchanged).
+  ContactModel for_fluid_step(double dt) const;
+  // k of one CDS pair (or CDS and wall) whose effective mass is m_eff (contact_effective_mass)
+  // [force/length^2 per unit depth]: k_Dn, or m_eff (pi^2 + ln^2 e_D) / T_c^2.
+  double pair_stiffness(double pair_mass) const;
   // CDS radius of the points of this body [length]; follows the current (swollen) diameter.
   double cds_radius_of(const MassSpringBody& body) const;
 };

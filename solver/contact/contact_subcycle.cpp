@@ -83,9 +83,9 @@ void ContactSubcycler::build_list(const ContactModel& model, const WallBox& box,
       pair.shift = {d[0] - (xb[0] - xa[0]), d[1] - (xb[1] - xa[1])};
       pair.radius_sum = spheres_.radius[s] + spheres_.radius[t] - skin;
       pair.radius_rate = radius_rate_[body_s] + radius_rate_[body_t];
-      pair.damping = zeta_factor * std::sqrt(contact_effective_mass(model, bodies, body_s, spheres_.point[s], body_t,
-                                                                    spheres_.point[t]) *
-                                             model.stiffness);
+      const double m_eff = contact_effective_mass(model, bodies, body_s, spheres_.point[s], body_t, spheres_.point[t]);
+      pair.stiffness = model.pair_stiffness(m_eff);
+      pair.damping = zeta_factor * std::sqrt(m_eff * pair.stiffness);
       pair.share = share_of(std::min(body_s, body_t), std::max(body_s, body_t));
       pairs_.push_back(pair);
     }
@@ -111,7 +111,9 @@ void ContactSubcycler::build_list(const ContactModel& model, const WallBox& box,
             wall.radius = radius;
             wall.radius_rate = radius_rate_[b];
             wall.coordinate = wall_coordinate[side];
-            wall.damping = zeta_factor * std::sqrt(contact_effective_mass(model, bodies, b, k, -1, 0) * model.stiffness);
+            const double m_eff = contact_effective_mass(model, bodies, b, k, -1, 0);
+            wall.stiffness = model.pair_stiffness(m_eff);
+            wall.damping = zeta_factor * std::sqrt(m_eff * wall.stiffness);
             wall.share = share_of(b, -1 - (2*c + side));
             walls_.push_back(wall);
           }
@@ -197,21 +199,23 @@ void ContactSubcycler::contact_forces(const ContactModel& model, double time, Co
     Point& pa = points_[a.wall ? walls_[a.index].a : pairs_[a.index].a];
     Vec relative{-pa.velocity[0], -pa.velocity[1]};
     Point* pb = nullptr;
-    double damping = 0.0;
+    double stiffness = 0.0, damping = 0.0;
     int share = 0;
     if (a.wall) {
+      stiffness = walls_[a.index].stiffness;
       damping = walls_[a.index].damping;
       share = walls_[a.index].share;
     } else {
       pb = &points_[pairs_[a.index].b];
       relative[0] += pb->velocity[0];
       relative[1] += pb->velocity[1];
+      stiffness = pairs_[a.index].stiffness;
       damping = pairs_[a.index].damping;
       share = pairs_[a.index].share;
     }
     if (model.share_damping_among_active_pairs) damping *= shares_[share].inverse_sqrt_s;
     const double normal_rate = relative[0]*a.normal[0] + relative[1]*a.normal[1];
-    const double push = model.stiffness * a.overlap - damping * normal_rate;
+    const double push = stiffness * a.overlap - damping * normal_rate;
     pa.force[0] -= push * a.normal[0];
     pa.force[1] -= push * a.normal[1];
     if (pb != nullptr) {

@@ -95,12 +95,13 @@ class ContactSubcycler {
     Vec shift{};              // periodic image: x_b - x_a + shift is the separation
     double radius_sum = 0.0;  // r_a + r_b at the list's inner time [length]
     double radius_rate = 0.0; // d(r_a + r_b)/dt [length/time]
-    double damping = 0.0;     // 2 zeta sqrt(m_eff k_Dn): the dashpot of one pair, before sharing
+    double stiffness = 0.0;   // k of the pair (ContactModel::pair_stiffness) [force/length^2]
+    double damping = 0.0;     // 2 zeta sqrt(m_eff k): the dashpot of one pair, before sharing
     int share = 0;            // the pairs of one body pair (or body and wall) share a dashpot
   };
   struct Wall {      // a candidate point and one wall
     int a = 0, axis = 0, side = 0;
-    double radius = 0.0, coordinate = 0.0, damping = 0.0;
+    double radius = 0.0, coordinate = 0.0, stiffness = 0.0, damping = 0.0;
     double radius_rate = 0.0;  // dr/dt [length/time]
     int share = 0;
   };

@@ -156,6 +156,8 @@ std::string resolved_scene_toml(const Scene& scene) {
   out += fmt::format("cds_radius_fraction = {}\n", toml_float(contact.cds_radius_fraction));
   out += fmt::format("walls = {}\n", toml_bool(contact.walls));
   out += fmt::format("time_stepping = {}\n", toml_string(contact.time_stepping));
+  out += fmt::format("model = {}\n", toml_string(contact.model));
+  out += fmt::format("collision_steps = {}\n", toml_float(contact.collision_steps));
 
   const OutputSpec& output = scene.output;
   out += "\n[output]\n";

@@ -162,6 +162,13 @@ struct ContactSpec {
   // sub-step, the contact sub-step only in an inner loop over the points near a contact
   // (contact/contact_subcycle.hpp); "shared": every point of the group at the contact sub-step.
   std::string time_stepping = "inner_loop";
+  // "linear": the papers' law at k_Dn = stiffness. "collision_time": the same law with k and c
+  // chosen per contact from m_eff and e_D so that a single-pair contact lasts
+  // T_c = collision_steps fluid steps (docs/method.md §5.5); stiffness is then not given.
+  std::string model = "linear";
+  double collision_steps = 10.0;     // T_c / dt [-], collision_time only
+  // Contacts act: a linear law with k_Dn > 0, or the collision-time law.
+  bool enabled() const { return stiffness > 0.0 || model == "collision_time"; }
 };
 
 struct OutputSpec {

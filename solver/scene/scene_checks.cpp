@@ -143,12 +143,30 @@ void check_coupling(const Scene& scene, const SceneDiagnostics& diagnostics) {
 }
 
 void check_contact(const ContactSpec& contact, const SceneDiagnostics& diagnostics) {
-  if (contact.stiffness > 0.0 && contact.cds_radius <= 0.0 && contact.cds_radius_fraction <= 0.0) {
+  const bool collision_time = contact.model == "collision_time";
+  if (contact.enabled() && contact.cds_radius <= 0.0 && contact.cds_radius_fraction <= 0.0) {
+    if (collision_time)
+      diagnostics.fail("contact.model", "is \"collision_time\" (contacts on) but neither contact.cds_radius nor "
+                                        "contact.cds_radius_fraction is > 0");
     diagnostics.fail("contact.stiffness",
                      fmt::format("is {} (contacts on) but neither contact.cds_radius nor "
                                  "contact.cds_radius_fraction is > 0",
                                  contact.stiffness));
   }
+  if (!collision_time) return;
+  // The collision-time law sets k per contact (docs/method.md §5.5): a stiffness given beside it
+  // would be silently unused.
+  if (contact.stiffness > 0.0)
+    diagnostics.fail("contact.stiffness",
+                     fmt::format("is {} but contact.model = \"collision_time\" chooses the stiffness of each contact "
+                                 "from T_c = contact.collision_steps fluid steps; remove it, or use "
+                                 "contact.model = \"linear\"", contact.stiffness));
+  // The fluid reaction is updated once per fluid step: a contact shorter than one step is never
+  // seen by the fluid, and T_c below a step defeats the model (it only gets stiffer and slower).
+  if (contact.collision_steps < 1.0)
+    diagnostics.fail("contact.collision_steps",
+                     fmt::format("is {}; a collision must last at least one fluid step (T_c = collision_steps dt; "
+                                 "the published choice is 10)", contact.collision_steps));
 }
 
 // The run must not fail after hours because it cannot write; nothing is created here.

@@ -265,6 +265,9 @@ Scene scene_from_table(const toml::table& root, SceneDiagnostics& diagnostics) {
                     non_negative);
   contact.read_bool("walls", scene.contact.walls);
   contact.read_choice("time_stepping", scene.contact.time_stepping, schema::contact_time_stepping_choices);
+  contact.read_choice("model", scene.contact.model, schema::contact_model_choices);
+  // Finite and > 0 here; the lower bound of one fluid step, with its reason, in scene_checks.cpp.
+  contact.read_real("collision_steps", scene.contact.collision_steps, Need::optional, positive);
   TomlTableReader output = section("output");
   output.reject_unknown_keys(schema::output_keys);
   output.read_string("file", scene.output.file);

@@ -69,8 +69,9 @@ inline constexpr std::string_view prescribed_body_keys[] = {
 inline constexpr std::string_view swelling_keys[] = {"onset_time", "rate", "max_diameter"};
 inline constexpr std::string_view contact_keys[] = {"stiffness", "restitution_coefficient",
                                                     "cds_radius", "cds_radius_fraction", "walls",
-                                                    "time_stepping"};
+                                                    "time_stepping", "model", "collision_steps"};
 inline constexpr std::string_view contact_time_stepping_choices[] = {"inner_loop", "shared"};
+inline constexpr std::string_view contact_model_choices[] = {"linear", "collision_time"};
 inline constexpr std::string_view output_keys[] = {"file", "series_every", "snapshot_interval",
                                                    "centreline_profiles", "progress", "checkpoint_every",
                                                    "probes"};

@@ -203,6 +203,8 @@ std::vector<SeriesValue> body_series(const Simulation& sim, const ControlVolumeM
     row.push_back({"contact/n_active_pairs", "-", static_cast<double>(cs.n_active_pairs)});
     row.push_back({"contact/n_wall_contacts", "-", static_cast<double>(cs.n_wall_contacts)});
     row.push_back({"contact/max_overlap", "length", cs.max_overlap});
+    if (sim.contact_model().law == ContactLawKind::collision_time)
+      row.push_back({"contact/collision_time", "time", sim.contact_model().collision_time});
   }
   return row;
 }

@@ -97,7 +97,7 @@ Simulation::Simulation(const Scene& scene)
     for (const BodyCoupling& c : coupling_) unknowns += 2 * c.marker.capacity();
     no_slip_work.reserve(unknowns);
   }
-  if (scene.contact.stiffness > 0.0) {
+  if (scene.contact.enabled()) {
     contact_model_ = ContactModel(scene.contact);
     contact_box_ = WallBox{{grid_.origin_x, grid_.origin_y}, {grid_.length_x, grid_.length_y},
                            {grid_.periodic_x, grid_.periodic_y}};
@@ -189,10 +189,12 @@ bool Simulation::contact_possible(double dt) const {
 }
 
 double Simulation::global_contact_limit(double dt) const {
-  return contact_possible(dt) ? contact_substep(contact_model_, bodies_) : HUGE_VAL;
+  return contact_possible(dt) ? contact_substep(contact_model_.for_fluid_step(dt), bodies_) : HUGE_VAL;
 }
 
 SubstepGroups& Simulation::substep_groups(double dt) {
+  // The contact law of this step (collision_time: T_c = collision_steps dt), read by the seams.
+  contact_model_ = contact_model_.for_fluid_step(dt);
   plan_substep_groups(dt, substep_groups_);
   return substep_groups_;
 }
@@ -210,7 +212,7 @@ void Simulation::plan_substep_groups(double dt, SubstepGroups& groups) const {
     if (!contact_groups_.may_touch[g]) continue;
     groups.members.resize(bodies_.size());
     for (std::size_t b = 0; b < bodies_.size(); ++b) groups.members[b] = groups.group_of[b] == g ? 1 : 0;
-    groups.max_substep[g] = contact_substep(contact_model_, bodies_, groups.members);
+    groups.max_substep[g] = contact_substep(contact_model_.for_fluid_step(dt), bodies_, groups.members);
   }
 }
 
@@ -284,12 +286,17 @@ std::vector<std::string> Simulation::stage_names() const {
                      (scene_.run.solid_substeps == "per_group" ? "; each group of bodies that may touch within the step "
                                                                  "at its own sub-step)"
                                                                : "; all bodies at the smallest sub-step)"));
+    const std::string law = scene_.contact.model == "collision_time"
+                                ? fmt::format("collision-time law: k and c per contact from m_eff and e_D, T_c = {:g} "
+                                              "fluid steps", scene_.contact.collision_steps)
+                                : "linear law at k_Dn";
     if (has_contacts())
       stages.push_back(scene_.contact.time_stepping == "inner_loop"
-                           ? "  contacts (DEM spring-dashpots on CDS, walls; groups of explicit mass-spring bodies: "
-                             "inner loop at the contact sub-step over the points near a contact, springs and "
-                             "fluid held over outer steps of 1/16 of the springs' sub-step)"
-                           : "  contacts (DEM spring-dashpots on CDS, every sub-step; walls)");
+                           ? "  contacts (DEM spring-dashpots on CDS, " + law +
+                                 ", walls; groups of explicit mass-spring bodies: inner loop at the contact sub-step "
+                                 "over the points near a contact, springs and fluid held over outer steps of 1/16 of "
+                                 "the springs' sub-step)"
+                           : "  contacts (DEM spring-dashpots on CDS, " + law + ", every sub-step; walls)");
     if (has_pair_search()) stages.push_back("  pair search (CDS: body-box broad phase, cell list in periodic boxes; every sub-step)");
   }
   stages.push_back("diagnostics");

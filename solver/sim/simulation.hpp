@@ -70,8 +70,9 @@ class Simulation {
   ContactInnerLoop contact_inner_loop;
   long total_contact_inner_steps = 0;  // inner contact steps over the run, summed over groups [-]
 
-  // DEM contacts (solver/contact), active when contact.stiffness > 0.
+  // DEM contacts (solver/contact), active when contact.stiffness > 0 or contact.model = "collision_time".
   bool has_contacts() const { return contact_model_.enabled(); }
+  // The model of the latest step (collision_time: T_c of that step; for_fluid_step gives another dt's).
   const ContactModel& contact_model() const { return contact_model_; }
   // Whether a contact can be under way within the next step of length dt (contact/contact_model.hpp);
   // false without contacts. Only then does the contact sub-step bound apply.

@@ -77,6 +77,16 @@ BOOST_AUTO_TEST_CASE(implicit_springs_and_global_substeps_step_without_allocatin
   BOOST_TEST(allocations_in_steps(IBMS_SCENE_MASS_SPRING, 100, 150, {"run.solid_substeps=global"}) == 0);
 }
 
+BOOST_AUTO_TEST_CASE(collision_time_contacts_step_without_allocating) {
+  // The same scene with contact.model = "collision_time" (k per contact, docs/method.md §5.5), in
+  // the inner loop (the default) and with the shared sub-step.
+  const std::vector<std::string> collision_time{"contact.model=\"collision_time\"", "contact.stiffness=0"};
+  BOOST_TEST(allocations_in_steps(IBMS_SCENE_MASS_SPRING, 100, 150, collision_time) == 0);
+  std::vector<std::string> shared = collision_time;
+  shared.push_back("contact.time_stepping=\"shared\"");
+  BOOST_TEST(allocations_in_steps(IBMS_SCENE_MASS_SPRING, 100, 150, shared) == 0);
+}
+
 BOOST_AUTO_TEST_CASE(rigid_and_prescribed_bodies_with_contacts_step_without_allocating) {
   BOOST_TEST(allocations_in_steps(IBMS_SCENE_RIGID, /*warm_up=*/60, /*counted=*/140) == 0);
 }

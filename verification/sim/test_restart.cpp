@@ -205,6 +205,31 @@ BOOST_AUTO_TEST_CASE(restarted_run_with_adaptive_time_step_ends_bit_identical) {
   BOOST_TEST(n_different_values(dir.file("whole.h5"), dir.file("rest.h5")) == 0u);
 }
 
+// The collision-time contacts (docs/method.md §5.5) keep no per-contact state: k follows from the
+// restored masses and the step's T_c = collision_steps dt, so with the adaptive step (T_c varies)
+// the restarted run takes the same steps and ends in the same bits.
+BOOST_AUTO_TEST_CASE(restarted_run_with_collision_time_contacts_ends_bit_identical) {
+  const TempDir dir;
+  // The step capped at 0.01 (after the restart dt = 0.0051-0.0095): at CFL 0.1 alone it grows to ~0.02,
+  // T_c = 0.2, and the wheel falling at 0.8 overlaps the wall by ~v0 T_c / pi = 0.05, beyond its CDS
+  // radius (0.02), and leaves the box.
+  const std::vector<std::string> collision_time{"run.time_step=0", "run.cfl=0.03", "run.max_time_step=0.01",
+                                                "contact.model=\"collision_time\"", "contact.stiffness=0"};
+  const ibms::RunSummary whole = run(scene_for(dir.file("whole.h5"), collision_time));
+  std::vector<std::string> stopped = collision_time;
+  stopped.push_back("run.max_steps=" + std::to_string(whole.steps / 2));
+  run(scene_for(dir.file("first.h5"), stopped));
+  const ibms::RunSummary rest = run(scene_for(dir.file("rest.h5"), collision_time), dir.file("first.h5"));
+  BOOST_TEST(rest.steps == whole.steps);
+  // Contacts after the restart, with a T_c that varied.
+  BOOST_TEST(series_max(dir.file("rest.h5"), "contact/n_active_pairs") > 0.0);
+  BOOST_TEST(series_max(dir.file("rest.h5"), "contact/n_wall_contacts") > 0.0);
+  const std::vector<double> t_c = series(dir.file("rest.h5"), "contact/collision_time");
+  BOOST_TEST(*std::max_element(t_c.begin(), t_c.end()) > 1.2 * *std::min_element(t_c.begin(), t_c.end()));
+  BOOST_TEST(n_different_series_values(dir.file("whole.h5"), dir.file("rest.h5"), "contact/max_overlap") == 0u);
+  BOOST_TEST(n_different_values(dir.file("whole.h5"), dir.file("rest.h5")) == 0u);
+}
+
 BOOST_AUTO_TEST_CASE(checkpoint_carries_the_fftw_planner_wisdom) {
   // Plans are measured, so another process may choose other transforms (round-off differences);
   // the checkpoint stores this process's planner state for `ibms run --restart` to import first.
