@@ -37,11 +37,22 @@ PeriodicForces periodic_forces(const std::vector<double>& time, const std::vecto
     }
   if (n < 10) throw std::runtime_error("fewer than 10 rows after t = " + std::to_string(t_from));
   mean /= n;
-  std::vector<double> up;  // upward crossings of lift - mean, linearly interpolated
+  // Upward crossings of lift - mean, linearly interpolated, with hysteresis: after a crossing the
+  // next one counts only once the lift has gone below -band, a tenth of the amplitude, so that a
+  // step-to-step jitter near zero (a coupling's corrections) does not count as a period.
+  const double band = 0.1 * (out.lift_max - mean);
+  std::vector<double> up;
+  bool armed = false, first = true;
   for (std::size_t k = 1; k < rows; ++k) {
     if (time[k - 1] < t_from) continue;
     const double a = lift[k - 1] - mean, b = lift[k] - mean;
-    if (a < 0.0 && b >= 0.0) up.push_back(time[k - 1] + (time[k] - time[k - 1]) * (-a) / (b - a));
+    if (first) armed = a < 0.0;  // the window may open below zero, inside the band
+    first = false;
+    if (a < -band) armed = true;
+    if (armed && a < 0.0 && b >= 0.0) {
+      up.push_back(time[k - 1] + (time[k] - time[k - 1]) * (-a) / (b - a));
+      armed = false;
+    }
   }
   if (up.size() < 3) throw std::runtime_error("fewer than two lift periods after t = " + std::to_string(t_from));
   out.periods = static_cast<int>(up.size()) - 1;

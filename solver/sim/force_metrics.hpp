@@ -4,7 +4,7 @@
 //    normal, by the quadratic through them evaluated at the rim (the diffuse immersed boundary
 //    smears the pressure jump over ~3 cells, so the value at the rim itself is a mixture);
 //  - periodic_forces: maxima of c_D and c_L, the Strouhal number from the mean period between
-//    upward crossings of c_L - mean(c_L), and Delta p half a period after the last lift maximum.
+//    upward crossings of c_L - mean(c_L) (with a hysteresis of a tenth of the amplitude), and Delta p half a period after the last lift maximum.
 // (Richardson extrapolation over grids: metrics/grid_convergence.hpp.)
 #pragma once
 #include <array>
