@@ -41,6 +41,10 @@ double max_body_point_speed(const Simulation& sim) {
   return speed;
 }
 
+double speed_scale(const Simulation& sim) {
+  return std::max(boundary_speed_scale(sim.scene().walls), max_body_point_speed(sim));
+}
+
 namespace {
 
 // Stops the run (run.on_body_instability = "stop") or warns once ("warn").
@@ -175,6 +179,10 @@ double next_time_step(const Simulation& sim, const VelocityScan& scan) {
   const double h = std::min(sim.grid().dx(), sim.grid().dy());
   dt = std::min(dt, viscous_time_step_limit(run, h, sim.fluid_solver().kinematic_viscosity()));
   return share_time_left(std::min(dt, run.max_time_step), time_left);
+}
+
+double planned_time_step(const Simulation& sim) {
+  return next_time_step(sim, scan_velocity(sim.grid(), sim.fluid()));
 }
 
 double viscous_time_step_limit(const RunSpec& run, double h, double kinematic_viscosity) {

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "core/errors.hpp"
+#include "sim/diagnostics.hpp"
 #include "solid/spring_forces.hpp"
 
 namespace ibms {
@@ -152,13 +153,12 @@ Simulation::Simulation(const Scene& scene)
 }
 
 void Simulation::set_instability_bounds() {
-  double speed = boundary_speed_scale(scene_.walls);
+  double speed = speed_scale(*this);
   const double gravity = std::hypot(scene_.fluid.gravity[0], scene_.fluid.gravity[1]);
   const double diagonal = std::hypot(grid_.length_x, grid_.length_y);
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
     const BodySpec& spec = scene_.bodies[b];
     const MassSpringBody& body = bodies_[b];
-    for (const auto& u : body.velocity) speed = std::max(speed, std::hypot(u[0], u[1]));
     if (spec.swelling.enabled) speed = std::max(speed, spec.swelling.rate);
     if (body.kind == BodyKind::prescribed) {
       const double w_osc = spec.oscillation_period > 0 ? 2 * M_PI / spec.oscillation_period : 0.0;
