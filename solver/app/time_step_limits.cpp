@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/constants.hpp"
 #include "fluid/time_scheme_stability.hpp"
 #include "sim/body_update.hpp"
 #include "sim/diagnostics.hpp"
@@ -52,7 +53,7 @@ std::vector<TimeStepLimit> time_step_limits(const Scene& scene, const Simulation
     // pure dashpot dt <= 2 / gamma_max; together 4 / (gamma + sqrt(gamma^2 + 4 omega^2)), safety 0.5.
     limits.push_back({fmt::format("body {} spring period (2 / omega_max)", b), omega > 0 ? 2 / omega : HUGE_VAL, 0.5,
                       true, fmt::format("omega_max <= {:.4g} [1/time], period 2 pi / omega_max = {:.4g}", omega,
-                                        omega > 0 ? 2 * M_PI / omega : HUGE_VAL)});
+                                        omega > 0 ? 2 * pi / omega : HUGE_VAL)});
     limits.push_back({fmt::format("body {} damping (2 / gamma_max)", b), gamma > 0 ? 2 / gamma : HUGE_VAL, 0.5, true,
                       fmt::format("gamma_max <= {:.4g} [1/time]", gamma)});
     limits.push_back({fmt::format("body {} springs + dashpots together", b), stable_substep(body, /*safety=*/1.0), 0.5,

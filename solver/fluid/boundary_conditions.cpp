@@ -6,10 +6,10 @@
 #include <cmath>
 #include <utility>
 
+#include "core/constants.hpp"
+
 namespace ibms {
 namespace {
-
-constexpr double pi = 3.14159265358979323846;
 
 // How a scalar's ghost follows from the interior next to a side.
 enum class GhostRule { even, odd, quadratic };
