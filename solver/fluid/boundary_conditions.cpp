@@ -1,5 +1,5 @@
 // Ghost-cell fills for the collocated grid (docs/method.md §2.5; walls as CaNS src/bound.f90; open sides
-// issue 11). Rules in boundary_conditions.hpp.
+// docs/open-boundaries.md). Rules in boundary_conditions.hpp.
 #include "fluid/boundary_conditions.hpp"
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-// Boundary conditions of the fluid box (docs/method.md §2.5; open sides: issue 11). Each side of the
+// Boundary conditions of the fluid box (docs/method.md §2.5; open sides: docs/open-boundaries.md). Each side of the
 // box is one of
 //   wall      no-slip: normal velocity 0, tangential velocity prescribed (may change in time);
 //   inflow    both velocity components prescribed: the normal one from a profile (uniform or

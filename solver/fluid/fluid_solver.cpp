@@ -118,7 +118,7 @@ void FluidSolver::add_wall_closure(const CellField& u, const CellField& v, doubl
                                    CellField& out_y) const {
   // scale (u_g,quadratic - u_g,linear) / h^2 = scale (2 u_w - 3 u_1 + u_2) / (3 h^2) in each wall cell,
   // for the velocity component tangential to the wall only: applied to the normal one as well, it
-  // cost the pressure its order on the manufactured solution (max norm 1.21, L2 1.60; tangential
+  // costs the pressure its order on the manufactured solution (max norm 1.21, L2 1.60; tangential
   // only: 1.91, 1.98, with half the default's velocity and pressure errors).
   const auto closure = [](double wall, double first, double second) { return (2.0 * wall - 3.0 * first + second) / 3.0; };
   // Tangential component on every side where it is given (walls, inflows); an outflow has none.

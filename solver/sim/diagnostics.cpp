@@ -93,7 +93,7 @@ void check_bodies_for_blow_up(const Simulation& sim) {
           "blow-up at step {}, t = {:.6g}: body {} point {} {} at x = {:.6g}, y = {:.6g} (u = {:.3g}, v = {:.3g})",
           f.step, f.time, b, p, finite ? "left the box" : "is non-finite", x[0], x[1], u[0], u[1]));
     }
-    // Energy no driver of the scene can supply (issue 12 item 5): an unstable spring or contact
+    // Energy no driver of the scene can supply: an unstable spring or contact
     // that pumps energy into the body while its points stay finite and inside the box.
     if (body.kind == BodyKind::prescribed) continue;
     // Kinetic only: an unstable mode grows in its kinetic and its spring energy alike, while the
