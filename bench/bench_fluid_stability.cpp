@@ -37,6 +37,7 @@
 #include <string>
 #include <vector>
 
+#include "core/constants.hpp"
 #include "core/errors.hpp"
 #include "fluid/time_scheme_stability.hpp"
 #include "scene/scene_reader.hpp"
@@ -50,7 +51,6 @@ using namespace ibms;
 
 namespace {
 
-constexpr double pi = 3.14159265358979323846;
 constexpr double runaway_factor = 1e6;  // a run whose energy passes this many bounds is cut
 // A velocity component above this many U is unstable too: a grid-scale oscillation confined to a
 // few cells can grow far while the energy stays within its bound (the stable runs of the 64^2 maps

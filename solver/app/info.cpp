@@ -39,13 +39,13 @@ std::string describe_scene(const Scene& scene) {
   }
   text += "\n# stages per step\n";
   for (const std::string& s : sim.stage_names()) text += "  " + s + "\n";
+  const double dt = planned_time_step(sim);  // the run's first step
   if (sim.has_bodies()) {
     text += "\n# bodies (kind: what each step costs)\n";
     for (std::size_t b = 0; b < sim.bodies().size(); ++b) {
       const MassSpringBody& body = sim.bodies()[b];
       const BodySpec& spec = scene.bodies[b];
       std::string cost;
-      const double dt = planned_time_step(scene);
       const double spring_substep = stable_substep(body, /*safety=*/0.5);
       if (body.kind == BodyKind::mass_spring && std::isfinite(dt) && dt > 0 && uses_implicit_springs(body, dt, spring_substep))
         cost = fmt::format("{} points, {} springs, implicit spring steps (spring_integrator = {}; explicit would need "
@@ -65,7 +65,6 @@ std::string describe_scene(const Scene& scene) {
     }
   }
   text += "\n" + describe_time_step_limits(scene, sim);
-  const double dt = planned_time_step(scene);
   if (std::isfinite(dt) && dt > 0) {
     const double steps = std::ceil(scene.run.end_time / dt);
     text += fmt::format("estimated steps to end_time {:.6g}: {:.0f}{}\n", scene.run.end_time, steps,

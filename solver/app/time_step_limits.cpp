@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/constants.hpp"
 #include "fluid/time_scheme_stability.hpp"
 #include "sim/body_update.hpp"
 #include "sim/diagnostics.hpp"
@@ -19,35 +20,15 @@ double grid_spacing(const Scene& scene) {
   return std::min(scene.domain.length_x / scene.domain.cells_x, scene.domain.length_y / scene.domain.cells_y);
 }
 
-// Largest speed known before the run: moving walls and initial body velocities [length/time].
-double initial_speed_scale(const Scene& scene) {
-  double speed = boundary_speed_scale(scene.walls);
-  for (const BodySpec& b : scene.bodies) speed = std::max(speed, std::hypot(b.velocity[0], b.velocity[1]));
-  return speed;
-}
-
-double initial_body_speed(const Scene& scene) {
-  double speed = 0.0;
-  for (const BodySpec& b : scene.bodies) speed = std::max(speed, std::hypot(b.velocity[0], b.velocity[1]));
-  return speed;
-}
-
 }  // namespace
-
-double planned_time_step(const Scene& scene) {
-  if (scene.run.time_step > 0) return scene.run.time_step;
-  const double speed = initial_speed_scale(scene), h = grid_spacing(scene);
-  return std::min({speed > 0 ? scene.run.cfl * h / speed : HUGE_VAL, scene.run.max_time_step,
-                   viscous_time_step_limit(scene.run, h, scene.fluid.kinematic_viscosity)});
-}
 
 std::vector<TimeStepLimit> time_step_limits(const Scene& scene, const Simulation& sim) {
   std::vector<TimeStepLimit> limits;
-  const double h = grid_spacing(scene), speed = initial_speed_scale(scene);
+  const double h = grid_spacing(scene), speed = speed_scale(sim);
   // Advective: dt max(|u|/dx + |v|/dy) <= 1 is the run's blow-up guard (run.max_cfl); the adaptive
   // step targets run.cfl of it, docs/method.md §2.3.
   limits.push_back({"CFL (advective, |u| dt / h <= 1)", speed > 0 ? h / speed : HUGE_VAL, scene.run.cfl, false,
-                    speed > 0 ? fmt::format("h / U with U = {:.4g} (walls, inflows, initial bodies)", speed)
+                    speed > 0 ? fmt::format("h / U with U = {:.4g} (walls, inflows, body points at the start)", speed)
                               : "no velocity scale before the run (fluid at rest): checked every step"});
   const double nu = scene.fluid.kinematic_viscosity;
   if (scene.run.max_viscous_number > 0)
@@ -58,10 +39,10 @@ std::vector<TimeStepLimit> time_step_limits(const Scene& scene, const Simulation
                       sim.has_bodies() ? "not binding (Crank-Nicolson); with bodies consider run.max_viscous_number"
                                        : "not binding: Crank-Nicolson diffusion"});
   if (!sim.has_bodies()) return limits;
-  const double body_speed = initial_body_speed(scene);
+  const double body_speed = max_body_point_speed(sim);
   limits.push_back({"marker travel (h / max|U_body|)", body_speed > 0 ? h / body_speed : HUGE_VAL,
                     max_marker_travel_cells, false,
-                    body_speed > 0 ? fmt::format("initial body speed {:.4g}; adaptive runs check it every step", body_speed)
+                    body_speed > 0 ? fmt::format("fastest body point at the start {:.4g}; adaptive runs check it every step", body_speed)
                                    : "bodies start at rest: checked every step by the adaptive step"});
   for (std::size_t b = 0; b < sim.bodies().size(); ++b) {
     const MassSpringBody& body = sim.bodies()[b];
@@ -72,7 +53,7 @@ std::vector<TimeStepLimit> time_step_limits(const Scene& scene, const Simulation
     // pure dashpot dt <= 2 / gamma_max; together 4 / (gamma + sqrt(gamma^2 + 4 omega^2)), safety 0.5.
     limits.push_back({fmt::format("body {} spring period (2 / omega_max)", b), omega > 0 ? 2 / omega : HUGE_VAL, 0.5,
                       true, fmt::format("omega_max <= {:.4g} [1/time], period 2 pi / omega_max = {:.4g}", omega,
-                                        omega > 0 ? 2 * M_PI / omega : HUGE_VAL)});
+                                        omega > 0 ? 2 * pi / omega : HUGE_VAL)});
     limits.push_back({fmt::format("body {} damping (2 / gamma_max)", b), gamma > 0 ? 2 / gamma : HUGE_VAL, 0.5, true,
                       fmt::format("gamma_max <= {:.4g} [1/time]", gamma)});
     limits.push_back({fmt::format("body {} springs + dashpots together", b), stable_substep(body, /*safety=*/1.0), 0.5,
@@ -101,7 +82,7 @@ std::vector<TimeStepLimit> time_step_limits(const Scene& scene, const Simulation
 
 std::string describe_time_step_limits(const Scene& scene, const Simulation& sim) {
   const std::vector<TimeStepLimit> limits = time_step_limits(scene, sim);
-  const double dt = planned_time_step(scene);
+  const double dt = planned_time_step(sim);
   const bool fixed = scene.run.time_step > 0;
   std::string text = "# time-step limits [time] (stability bound; safe fraction the run keeps to)\n";
   for (const TimeStepLimit& l : limits) {
@@ -113,9 +94,11 @@ std::string describe_time_step_limits(const Scene& scene, const Simulation& sim)
   text += "\n# time step\n";
   if (fixed) text += fmt::format("fixed dt = {:.4g}\n", dt);
   else {
-    text += fmt::format("adaptive: dt = cfl / max(|u|/dx + |v|/dy), cfl = {:.3g}, capped at {:.4g}{}\n", scene.run.cfl,
-                        scene.run.max_time_step, sim.has_bodies() ? ", marker travel <= 0.5 h" : "");
-    if (std::isfinite(dt)) text += fmt::format("  first step estimate: dt = {:.4g}\n", dt);
+    text += fmt::format("adaptive: dt = cfl / max(|u|/dx + |v|/dy, U_walls / h), cfl = {:.3g}, "
+                        "capped at {:.4g}{}{}\n",
+                        scene.run.cfl, scene.run.max_time_step, sim.has_bodies() ? ", marker travel <= 0.5 h" : "",
+                        scene.run.max_viscous_number > 0 ? ", nu dt / h^2 <= run.max_viscous_number" : "");
+    if (std::isfinite(dt)) text += fmt::format("  first step (as the run takes it): dt = {:.4g}\n", dt);
   }
   const double h = grid_spacing(scene);
   if (std::isfinite(dt))
@@ -124,7 +107,7 @@ std::string describe_time_step_limits(const Scene& scene, const Simulation& sim)
   // AB2 convection is stable only with enough CN diffusion: the CFL limit of a uniform flow along a
   // grid axis at the scene's cell Reynolds number (docs/fluid-stability.md). A note, not a warning:
   // the measured cavity is stable far beyond it, a periodic shear layer to 1.0-1.4 times it.
-  const double speed = initial_speed_scale(scene);
+  const double speed = speed_scale(sim);
   if (speed > 0 && scene.fluid.kinematic_viscosity > 0) {
     const double cell_reynolds = speed * h / scene.fluid.kinematic_viscosity;
     const double cfl_limit = ab2_cn_cfl_limit(cell_reynolds);

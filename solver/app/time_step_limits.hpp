@@ -24,11 +24,8 @@ struct TimeStepLimit {
 // The limits at the initial state of `sim` (built from `scene`).
 std::vector<TimeStepLimit> time_step_limits(const Scene& scene, const Simulation& sim);
 
-// The fluid time step at the start: the fixed run.time_step, or the adaptive estimate with the
-// largest wall or initial body speed as velocity scale (inf when there is none).
-double planned_time_step(const Scene& scene);
-
-// The text block of `ibms info`: limits table, time step, sub-steps and warnings.
+// The text block of `ibms info`: limits table, time step (the run's first, sim/diagnostics.hpp
+// planned_time_step), sub-steps and warnings.
 std::string describe_time_step_limits(const Scene& scene, const Simulation& sim);
 
 }  // namespace ibms

@@ -1,15 +1,15 @@
 // Ghost-cell fills for the collocated grid (docs/method.md §2.5; walls as CaNS src/bound.f90; open sides
-// issue 11). Rules in boundary_conditions.hpp.
+// docs/open-boundaries.md). Rules in boundary_conditions.hpp.
 #include "fluid/boundary_conditions.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <utility>
 
+#include "core/constants.hpp"
+
 namespace ibms {
 namespace {
-
-constexpr double pi = 3.14159265358979323846;
 
 // How a scalar's ghost follows from the interior next to a side.
 enum class GhostRule { even, odd, quadratic };
@@ -53,6 +53,16 @@ void fill_scalar(const Grid& g, const FluidBoundaries& bc, CellField& q, RuleOf 
       q(i, ny) = ghost(high, q(i, ny - 1), q(i, ny - 2), q(i, ny - 3));
     }
   }
+}
+
+Side opposite_side(Side s) {
+  switch (s) {
+    case Side::left: return Side::right;
+    case Side::right: return Side::left;
+    case Side::bottom: return Side::top;
+    case Side::top: return Side::bottom;
+  }
+  return s;
 }
 
 }  // namespace
@@ -130,66 +140,50 @@ std::array<double, 2> FluidBoundaries::velocity_at(const Grid& grid, Side s, dou
 }
 
 bool FluidBoundaries::has_open_side(const Grid& grid) const {
-  for (Side s : {Side::left, Side::right, Side::bottom, Side::top}) {
+  for (const Side s : all_sides) {
     const SideKind k = kind(grid, s);
     if (k == SideKind::inflow || k == SideKind::outflow) return true;
   }
   return false;
 }
 
-void fill_velocity_ghosts(const Grid& g, const FluidBoundaries& bc, double time, CellField& u, CellField& v) {
-  const int nx = g.nx, ny = g.ny;
-  if (g.periodic_x) {
-    for (int j = 0; j < ny; ++j) {
-      u(-1, j) = u(nx - 1, j); u(nx, j) = u(0, j);
-      v(-1, j) = v(nx - 1, j); v(nx, j) = v(0, j);
-    }
-  } else {
-    const bool left_d = bc.left.is_dirichlet(), right_d = bc.right.is_dirichlet();
-    for (int j = 0; j < ny; ++j) {
-      const double y = g.y_centre(j);
-      if (left_d) {
-        const auto b = bc.velocity_at(g, Side::left, g.origin_x, y, time);
-        u(-1, j) = 2.0 * b[0] - u(0, j);
-        v(-1, j) = 2.0 * b[1] - v(0, j);
-      } else {
-        u(-1, j) = u(0, j);
-        v(-1, j) = v(0, j);
-      }
-      if (right_d) {
-        const auto b = bc.velocity_at(g, Side::right, g.origin_x + g.length_x, y, time);
-        u(nx, j) = 2.0 * b[0] - u(nx - 1, j);
-        v(nx, j) = 2.0 * b[1] - v(nx - 1, j);
-      } else {
-        u(nx, j) = u(nx - 1, j);
-        v(nx, j) = v(nx - 1, j);
-      }
-    }
+SideCells side_cells(const Grid& g, Side s) {
+  switch (s) {
+    case Side::left: return {true, g.ny, 0, 1, 0, g.origin_x, g.dx(), g.dy()};
+    case Side::right: return {true, g.ny, g.nx - 1, -1, g.nx, g.origin_x + g.length_x, g.dx(), g.dy()};
+    case Side::bottom: return {false, g.nx, 0, 1, 0, g.origin_y, g.dy(), g.dx()};
+    case Side::top: return {false, g.nx, g.ny - 1, -1, g.ny, g.origin_y + g.length_y, g.dy(), g.dx()};
   }
-  if (g.periodic_y) {
-    for (int i = -1; i <= nx; ++i) {
-      u(i, -1) = u(i, ny - 1); u(i, ny) = u(i, 0);
-      v(i, -1) = v(i, ny - 1); v(i, ny) = v(i, 0);
-    }
-  } else {
-    const bool bottom_d = bc.bottom.is_dirichlet(), top_d = bc.top.is_dirichlet();
-    for (int i = -1; i <= nx; ++i) {
-      const double x = std::clamp(g.x_centre(i), g.origin_x, g.origin_x + g.length_x);
-      if (bottom_d) {
-        const auto b = bc.velocity_at(g, Side::bottom, x, g.origin_y, time);
-        u(i, -1) = 2.0 * b[0] - u(i, 0);
-        v(i, -1) = 2.0 * b[1] - v(i, 0);
-      } else {
-        u(i, -1) = u(i, 0);
-        v(i, -1) = v(i, 0);
-      }
-      if (top_d) {
-        const auto b = bc.velocity_at(g, Side::top, x, g.origin_y + g.length_y, time);
-        u(i, ny) = 2.0 * b[0] - u(i, ny - 1);
-        v(i, ny) = 2.0 * b[1] - v(i, ny - 1);
-      } else {
-        u(i, ny) = u(i, ny - 1);
-        v(i, ny) = v(i, ny - 1);
+  return {};
+}
+
+std::array<double, 2> side_point(const Grid& g, Side s, int n) {
+  const SideCells c = side_cells(g, s);
+  if (c.normal_to_x) return {c.position, std::clamp(g.y_centre(n), g.origin_y, g.origin_y + g.length_y)};
+  return {std::clamp(g.x_centre(n), g.origin_x, g.origin_x + g.length_x), c.position};
+}
+
+void fill_velocity_ghosts(const Grid& g, const FluidBoundaries& bc, double time, CellField& u, CellField& v) {
+  // Left and right over the interior rows first, then bottom and top over the padded width, so
+  // that the corner ghosts follow from the left and right ghosts.
+  for (const Side s : all_sides) {
+    const SideCells c = side_cells(g, s);
+    const SideKind kind = bc.kind(g, s);
+    const SideCells opposite = side_cells(g, opposite_side(s));
+    const int first = c.normal_to_x ? 0 : -1, last = c.normal_to_x ? g.ny - 1 : g.nx;
+    for (int n = first; n <= last; ++n) {
+      const int gi = c.i(n, -1), gj = c.j(n, -1), i = c.i(n, 0), j = c.j(n, 0);
+      if (kind == SideKind::periodic) {  // the opposite side's interior cell
+        u(gi, gj) = u(opposite.i(n, 0), opposite.j(n, 0));
+        v(gi, gj) = v(opposite.i(n, 0), opposite.j(n, 0));
+      } else if (kind == SideKind::wall || kind == SideKind::inflow) {  // q_g = 2 q_b - q_int
+        const std::array<double, 2> at = side_point(g, s, n);
+        const std::array<double, 2> b = bc.velocity_at(g, s, at[0], at[1], time);
+        u(gi, gj) = 2.0 * b[0] - u(i, j);
+        v(gi, gj) = 2.0 * b[1] - v(i, j);
+      } else {  // outflow: q_g = q_int
+        u(gi, gj) = u(i, j);
+        v(gi, gj) = v(i, j);
       }
     }
   }
@@ -215,14 +209,11 @@ void sync_periodic_faces(const Grid& grid, FaceField& velocity_face_x, FaceField
 }
 
 double side_inflow(const Grid& g, Side s, const FaceField& fx, const FaceField& fy) {
+  const SideCells c = side_cells(g, s);
+  const FaceField& faces = c.normal_to_x ? fx : fy;
   double sum = 0.0;
-  switch (s) {
-    case Side::left: for (int j = 0; j < g.ny; ++j) sum += fx(0, j); return sum * g.dy();
-    case Side::right: for (int j = 0; j < g.ny; ++j) sum -= fx(g.nx, j); return sum * g.dy();
-    case Side::bottom: for (int i = 0; i < g.nx; ++i) sum += fy(i, 0); return sum * g.dx();
-    case Side::top: for (int i = 0; i < g.nx; ++i) sum -= fy(i, g.ny); return sum * g.dx();
-  }
-  return sum;
+  for (int n = 0; n < c.count; ++n) sum += c.inward * faces(c.face_i(n), c.face_j(n));  // into the box
+  return sum * c.tangential_spacing;
 }
 
 double net_inflow(const Grid& g, const FaceField& fx, const FaceField& fy) {

@@ -1,4 +1,4 @@
-// Boundary conditions of the fluid box (docs/method.md §2.5; open sides: issue 11). Each side of the
+// Boundary conditions of the fluid box (docs/method.md §2.5; open sides: docs/open-boundaries.md). Each side of the
 // box is one of
 //   wall      no-slip: normal velocity 0, tangential velocity prescribed (may change in time);
 //   inflow    both velocity components prescribed: the normal one from a profile (uniform or
@@ -57,6 +57,30 @@ struct InflowProfile {
 };
 
 enum class Side { left = 0, right = 1, bottom = 2, top = 3 };
+constexpr std::array<Side, 4> all_sides = {Side::left, Side::right, Side::bottom, Side::top};
+
+// One side of the box as index arithmetic, so that a boundary rule is written once for the four
+// sides. Position n runs along the side (j on left and right, i on bottom and top); depth 0 is the
+// interior cell beside the side, 1 the next one inward, -1 the ghost beyond it.
+struct SideCells {
+  bool normal_to_x;          // left and right
+  int count;                 // cells along the side: ny on left and right, nx on bottom and top
+  int first;                 // cell index across the side at depth 0: 0 on left and bottom, nx - 1 or ny - 1 opposite
+  int inward;                // +1 on left and bottom, -1 on right and top
+  int face;                  // index of the side's faces in the normal face field: 0, nx or ny
+  double position;           // x of a left or right side, y of a bottom or top side [length]
+  double normal_spacing;     // cell size across the side: dx on left and right, dy on bottom and top [length]
+  double tangential_spacing; // cell size along the side [length]
+
+  int i(int n, int depth) const { return normal_to_x ? first + depth * inward : n; }
+  int j(int n, int depth) const { return normal_to_x ? n : first + depth * inward; }
+  int face_i(int n) const { return normal_to_x ? face : n; }
+  int face_j(int n) const { return normal_to_x ? n : face; }
+};
+SideCells side_cells(const Grid& grid, Side s);
+// The point of side s at position n: the centre of its face there; a position beyond an end of
+// the side (a corner ghost) takes the end.
+std::array<double, 2> side_point(const Grid& grid, Side s, int n);
 
 struct BoundarySide : WallMotion {
   SideKind kind = SideKind::wall;

@@ -44,8 +44,8 @@ struct ProjectionStats {
   double max_velocity = 0.0;             // max |u^{n+1}| over both components [length/time]
 };
 
-// Spatial options (issue 13, scene keys fluid.convection and fluid.wall_closure; the defaults are
-// the first version's scheme):
+// Spatial options (scene keys fluid.convection and fluid.wall_closure; the defaults are central
+// convection and the linear ghost):
 //  quick_convection: face values of the convected velocity by QUICK (Leonard 1979: quadratic
 //    upwind-biased, (6 q_up + 3 q_down - q_upup) / 8) instead of the central mean; a fourth-
 //    derivative dissipation of order |U| h^3 in place of the central scheme's dispersion;
@@ -57,7 +57,7 @@ struct ProjectionStats {
 //    closure: the explicit half directly; the implicit half by defect correction around the linear
 //    operator the DST diagonalises, wall_closure_sweeps Helmholtz solves per component (each sweep
 //    shrinks the defect by < 4/9 at any viscous number; an explicit AB2 treatment of the difference
-//    was unstable above nu dt / h^2 ~ 0.5, found by the MMS test).
+//    is unstable above nu dt / h^2 ~ 0.5 on the manufactured solution).
 // Measured on the Re 1000 cavity against Botella & Peyret (docs/fluid-accuracy.md).
 struct FluidSchemes {
   bool quick_convection = false;

@@ -7,10 +7,10 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/constants.hpp"
+
 namespace ibms {
 namespace {
-
-constexpr double pi = 3.14159265358979323846;
 
 // FFTW transform pair of one direction with the given ends (low, high): same kind at both ends
 // (DCT-II/III, DST-II/III, R2HC/HC2R) or mixed (DCT-IV, DST-IV: each its own inverse).

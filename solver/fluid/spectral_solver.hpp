@@ -1,7 +1,7 @@
 // Direct solver of (a I + b L) q = r on the cell-centred grid by FFTW real-to-real transforms
 // (docs/method.md §6): DCT-II/III for Neumann at both ends of a direction, DST-II/III for homogeneous
 // Dirichlet at both ends, DCT-IV (REDFT11) for Neumann at the low end and Dirichlet at the high one,
-// DST-IV (RODFT11) for the reverse (open channels, issue 11), R2HC/HC2R for periodic directions. L is the compact 5-point Laplacian with the ghost rules of
+// DST-IV (RODFT11) for the reverse (open channels), R2HC/HC2R for periodic directions. L is the compact 5-point Laplacian with the ghost rules of
 // fluid/boundary_conditions.hpp. Plans are made once (FFTW_MEASURE); solve() allocates nothing.
 #pragma once
 #include <fftw3.h>

@@ -1,4 +1,4 @@
-// Threads (issue 13: both cores). With IBMS_OPENMP (the default build) the cell loops of the
+// Threads. With IBMS_OPENMP (the default build) the cell loops of the
 // fluid operators and solver run as OpenMP static loops over grid rows and the FFTW transforms use
 // FFTW's OpenMP threads; every loop writes each cell from one thread and does no reduction, so the
 // result does not depend on the thread count (test_threads). Without OpenMP everything is serial.

@@ -10,6 +10,8 @@
 #include <cmath>
 #include <complex>
 
+#include "core/constants.hpp"
+
 namespace ibms {
 
 // The larger |G| of the two roots at one wave angle theta [rad] [-].
@@ -24,7 +26,6 @@ inline double ab2_cn_amplification(double cfl, double viscous_number, double the
 
 // max over theta in [0, pi] of ab2_cn_amplification (sampled at n_angles + 1 angles) [-].
 inline double ab2_cn_max_amplification(double cfl, double viscous_number, int n_angles = 2000) {
-  constexpr double pi = 3.14159265358979323846;
   double largest = 0.0;
   for (int k = 0; k <= n_angles; ++k)
     largest = std::max(largest, ab2_cn_amplification(cfl, viscous_number, pi * k / n_angles));

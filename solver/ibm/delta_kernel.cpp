@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/constants.hpp"
+
 namespace ibms {
 namespace {
 
@@ -29,7 +31,7 @@ double peskin4_phi(double r) {
 // Cosine 4-point kernel (docs/method.md A9); not first-moment exact.
 double cosine4_phi(double r) {
   const double a = std::abs(r);
-  if (a <= 2.0) return 0.25 * (1.0 + std::cos(0.5 * M_PI * a));
+  if (a <= 2.0) return 0.25 * (1.0 + std::cos(0.5 * pi * a));
   return 0.0;
 }
 

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/constants.hpp"
 #include "core/errors.hpp"
 #include "ibm/direct_forcing.hpp"
 #include "ibm/marker_weights.hpp"
@@ -47,7 +48,7 @@ BodyCoupling::BodyCoupling(const MassSpringBody& body, std::size_t max_markers)
 
 std::size_t max_sub_marker_count(double diameter, int n_surface, double h) {
   // Edge of a regular n-gon inscribed in the diameter, with 50 % slack for deformation.
-  const double edge = 1.5 * diameter * std::sin(M_PI / n_surface);
+  const double edge = 1.5 * diameter * std::sin(pi / n_surface);
   return static_cast<std::size_t>(n_surface) * static_cast<std::size_t>(std::ceil(edge / h));
 }
 

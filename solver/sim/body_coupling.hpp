@@ -52,7 +52,7 @@ struct BodyCoupling {
   double inner_angular_momentum = 0.0;
   Vec2 inner_reference_centre{0.0, 0.0};   // X_ref [length]
   double inner_fluid_torque = 0.0;
-  // What the fluid does to the body this step (issue 10 item 2): the IB reaction plus the inner-fluid
+  // What the fluid does to the body this step: the IB reaction plus the inner-fluid
   // term, F = sum_p F_f,p + rho_f dI/dt [force/length], and its torque about the centre point X_c^n,
   // T = sum_p (X_p - X_c) x F_f,p + rho_f dL/dt [force] (docs/method.md §1.7 eq. 1.7a). Buoyancy is not
   // in it: gravity acts on the bodies only (§2.6), as the buoyancy-corrected weight.

@@ -240,8 +240,8 @@ SolidStepCount advance_bodies(const SolidStepInputs& in, const std::vector<Swell
   const int first = first_group(groups, bodies), end = end_group(groups, bodies);
   groups.group_work.reserve(bodies.size());
   // Groups cannot touch one another within the step (contact_model.hpp): each advances over the
-  // whole step with its own sub-step, independently, so on several threads (issue 12 item 4, one
-  // group per thread at a time). A group's result does not depend on the thread that ran it, and
+  // whole step with its own sub-step, independently, so on several threads (one group
+  // per thread at a time). A group's result does not depend on the thread that ran it, and
   // the per-group contact work is summed in group order afterwards: bitwise the same for any
   // thread count. Exceptions (a blow-up) are caught per group; the lowest group's is rethrown.
   const int n_groups = end - first;

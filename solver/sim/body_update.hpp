@@ -1,4 +1,4 @@
-// The solid part of the step (docs/method.md §5.3, §7 step 6), multi-rate (issue 12): the bodies are
+// The solid part of the step (docs/method.md §5.3, §7 step 6), multi-rate: the bodies are
 // split into groups that cannot touch one another within the step (contact_model.hpp,
 // find_contact_groups); each group takes n_sub = ceil(dt / dt_s) symplectic-Euler sub-steps, dt_s
 // the smallest stable sub-step of its members (§5.1, safety 0.5) and, if the group may touch
@@ -54,7 +54,7 @@ void apply_swelling_schedules(const std::vector<SwellingSchedule>& swelling, dou
 // How the bodies are sub-stepped in one fluid step: group_of[b] the group of body b (bodies of one
 // group advance together), max_substep[g] the contact sub-step bound of group g (HUGE_VAL when it
 // cannot touch anything). Empty group_of: all bodies one group bounded by SolidStepInputs::max_substep
-// (the global sub-step of the first version, run.solid_substeps = "global").
+// (the global sub-step, run.solid_substeps = "global").
 // With inner_loop set, a group that may touch something and holds only mass_spring bodies with
 // explicit springs takes its springs' sub-step (outer) and the contact sub-step only in the inner
 // loop over the points near a contact (multiple time stepping, contact_subcycle.hpp).

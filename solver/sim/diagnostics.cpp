@@ -41,6 +41,10 @@ double max_body_point_speed(const Simulation& sim) {
   return speed;
 }
 
+double speed_scale(const Simulation& sim) {
+  return std::max(boundary_speed_scale(sim.scene().walls), max_body_point_speed(sim));
+}
+
 namespace {
 
 // Stops the run (run.on_body_instability = "stop") or warns once ("warn").
@@ -89,7 +93,7 @@ void check_bodies_for_blow_up(const Simulation& sim) {
           "blow-up at step {}, t = {:.6g}: body {} point {} {} at x = {:.6g}, y = {:.6g} (u = {:.3g}, v = {:.3g})",
           f.step, f.time, b, p, finite ? "left the box" : "is non-finite", x[0], x[1], u[0], u[1]));
     }
-    // Energy no driver of the scene can supply (issue 12 item 5): an unstable spring or contact
+    // Energy no driver of the scene can supply: an unstable spring or contact
     // that pumps energy into the body while its points stay finite and inside the box.
     if (body.kind == BodyKind::prescribed) continue;
     // Kinetic only: an unstable mode grows in its kinetic and its spring energy alike, while the
@@ -175,6 +179,10 @@ double next_time_step(const Simulation& sim, const VelocityScan& scan) {
   const double h = std::min(sim.grid().dx(), sim.grid().dy());
   dt = std::min(dt, viscous_time_step_limit(run, h, sim.fluid_solver().kinematic_viscosity()));
   return share_time_left(std::min(dt, run.max_time_step), time_left);
+}
+
+double planned_time_step(const Simulation& sim) {
+  return next_time_step(sim, scan_velocity(sim.grid(), sim.fluid()));
 }
 
 double viscous_time_step_limit(const RunSpec& run, double h, double kinematic_viscosity) {

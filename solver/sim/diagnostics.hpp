@@ -24,6 +24,11 @@ VelocityScan scan_velocity(const Grid& grid, const FluidState& fluid);
 // Largest speed of any body point [length/time] (0 without bodies).
 double max_body_point_speed(const Simulation& sim);
 
+// The velocity scale of the current state before the fluid is looked at: the fastest moving wall
+// or inflow (at its peak) and the fastest body point [length/time]. `ibms info` takes its CFL
+// limit and cell Reynolds number from it, and the fluid guard's driving speed starts from it.
+double speed_scale(const Simulation& sim);
+
 // Throws BlowUpError naming step, time, quantity and place if the state is non-finite or the
 // CFL number dt * max_rate exceeds run.max_cfl; with bodies also if a body point is non-finite
 // or has left the box in a wall direction (naming body, point and position). Then the fluid
@@ -35,6 +40,10 @@ void check_for_blow_up(Simulation& sim, double dt, const VelocityScan& scan);
 // with bodies, marker travel <= 0.5 h per step (docs/method.md §7 step 7), capped by
 // run.max_time_step and by the time left to run.end_time.
 double next_time_step(const Simulation& sim, const VelocityScan& scan);
+
+// The step the run takes next from the state of `sim` as it is: next_time_step on a scan of it
+// (at construction: the first step, what `ibms info` plans with).
+double planned_time_step(const Simulation& sim);
 
 // run.max_viscous_number h^2 / nu, the cap that keeps nu dt / h^2 bounded (the direct forcing's slip
 // grows like (nu dt / h^2) h); infinity when run.max_viscous_number is 0 [time].

@@ -1,5 +1,5 @@
 // Figures of a body's force history used by the DFG cylinder checks (validation/dfg_cylinder_*)
-// and by `ibms compare` for those cases: one definition for both (issue 15 item 3).
+// and by `ibms compare` for those cases: one definition for both.
 //  - rim_pressure: the pressure at a point of a body's rim from three probes outside it along the
 //    normal, by the quadratic through them evaluated at the rim (the diffuse immersed boundary
 //    smears the pressure jump over ~3 cells, so the value at the rim itself is a mixture);

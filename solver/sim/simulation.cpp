@@ -7,7 +7,9 @@
 
 #include <fmt/format.h>
 
+#include "core/constants.hpp"
 #include "core/errors.hpp"
+#include "sim/diagnostics.hpp"
 #include "solid/spring_forces.hpp"
 
 namespace ibms {
@@ -152,16 +154,15 @@ Simulation::Simulation(const Scene& scene)
 }
 
 void Simulation::set_instability_bounds() {
-  double speed = boundary_speed_scale(scene_.walls);
+  double speed = speed_scale(*this);
   const double gravity = std::hypot(scene_.fluid.gravity[0], scene_.fluid.gravity[1]);
   const double diagonal = std::hypot(grid_.length_x, grid_.length_y);
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
     const BodySpec& spec = scene_.bodies[b];
     const MassSpringBody& body = bodies_[b];
-    for (const auto& u : body.velocity) speed = std::max(speed, std::hypot(u[0], u[1]));
     if (spec.swelling.enabled) speed = std::max(speed, spec.swelling.rate);
     if (body.kind == BodyKind::prescribed) {
-      const double w_osc = spec.oscillation_period > 0 ? 2 * M_PI / spec.oscillation_period : 0.0;
+      const double w_osc = spec.oscillation_period > 0 ? 2 * pi / spec.oscillation_period : 0.0;
       speed = std::max(speed, std::hypot(spec.velocity[0], spec.velocity[1]) +
                                   std::hypot(spec.oscillation_amplitude[0], spec.oscillation_amplitude[1]) * w_osc +
                                   0.5 * body.diameter * (std::abs(spec.angular_velocity) + std::abs(spec.angle_amplitude) * w_osc));
@@ -176,7 +177,7 @@ void Simulation::set_instability_bounds() {
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
     const BodySpec& spec = scene_.bodies[b];
     const double largest = spec.swelling.enabled ? std::max(spec.diameter, spec.swelling.max_diameter) : spec.diameter;
-    const double mass = bodies_[b].density * M_PI * largest * largest / 4.0;
+    const double mass = bodies_[b].density * pi * largest * largest / 4.0;
     body_energy_scale_.push_back(0.5 * mass * driving_speed_ * driving_speed_ +
                                  spring_energy(bodies_[b], bodies_[b].length_scale()));
   }
@@ -230,7 +231,7 @@ void Simulation::find_groups(double dt) const {
     const BodySpec& spec = scene_.bodies[b];
     double acceleration = 0.0;
     if (body.kind == BodyKind::prescribed) {
-      const double w = spec.oscillation_period > 0 ? 2 * M_PI / spec.oscillation_period : 0.0;
+      const double w = spec.oscillation_period > 0 ? 2 * pi / spec.oscillation_period : 0.0;
       const double radius = 0.5 * body.diameter;
       const double omega_max = std::abs(spec.angular_velocity) + std::abs(spec.angle_amplitude) * w;
       acceleration = std::hypot(spec.oscillation_amplitude[0], spec.oscillation_amplitude[1]) * w * w +

@@ -103,7 +103,8 @@ class Simulation {
   int body_substeps(std::size_t b) const {
     return b < substep_groups_.substeps_of_body.size() ? substep_groups_.substeps_of_body[b] : 0;
   }
-  // The first version's bound: the contact sub-step of all bodies if any contact is possible.
+  // The global bound (run.solid_substeps = "global"): the contact sub-step of all bodies if any
+  // contact is possible.
   double global_contact_limit(double dt) const;
   ContactStats last_contact_stats;  // merged over the sub-steps of the latest step
   long total_pair_checks = 0;       // CDS pairs examined by the pair search over the run [-]

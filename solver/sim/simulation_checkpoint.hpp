@@ -1,4 +1,4 @@
-// The full restart state of a Simulation in /checkpoint (docs/design.md §5, issue 6): what
+// The full restart state of a Simulation in /checkpoint (docs/design.md §5): what
 // advance_one_step reads from one step to the next, so that a run restarted from a checkpoint
 // ends bit-identical to one that never stopped.
 //   scalars: time, step, time_step_prev (dt^{n-1} of variable-step AB2 and of the swelling part

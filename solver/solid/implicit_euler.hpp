@@ -1,4 +1,4 @@
-// Linearly implicit (backward) Euler step of a mass-spring body (issue 12 item 3: stiff springs
+// Linearly implicit (backward) Euler step of a mass-spring body (stiff springs
 // without thousands of sub-steps). One Newton iteration of backward Euler on the springs and
 // dashpots, with the external force frozen over the step:
 //   (M + dt D + dt^2 S) dU = dt [ F(x, U) + F_ext + dt sum_e S_e (U_j - U_i) ],

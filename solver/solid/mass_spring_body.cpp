@@ -5,11 +5,12 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/constants.hpp"
 #include "solid/spring_dashpot.hpp"
 
 namespace ibms {
 
-double MassSpringBody::solid_area() const { return 0.25 * M_PI * diameter * diameter; }
+double MassSpringBody::solid_area() const { return 0.25 * pi * diameter * diameter; }
 
 double MassSpringBody::total_mass() const {
   double sum = 0.0;
@@ -58,7 +59,7 @@ MassSpringBody build_wheel(const BodySpec& spec) {
   body.diameter = spec.diameter;
   const double radius = 0.5 * spec.diameter;
   for (int l = 0; l < n_l; ++l) {
-    const double angle = 2.0 * M_PI * l / n_l;
+    const double angle = 2.0 * pi * l / n_l;
     body.position.push_back({spec.centre[0] + radius*std::cos(angle),
                              spec.centre[1] + radius*std::sin(angle)});
   }

@@ -3,13 +3,15 @@
 
 #include <cmath>
 
+#include "core/constants.hpp"
+
 namespace ibms {
 
 RigidState PrescribedMotion::at(double time) const {
   RigidState s;
   double sine = 0.0, cosine_rate = 0.0;  // sin(w t + phase) and d/dt of it
   if (period > 0.0) {
-    const double omega = 2.0 * M_PI / period;
+    const double omega = 2.0 * pi / period;
     sine = std::sin(omega*time + phase);
     cosine_rate = omega * std::cos(omega*time + phase);
   }

@@ -1,4 +1,4 @@
-// Rigid and prescribed bodies (docs/design.md §11, issue 10): a rigid ring of N_l Lagrangian points and
+// Rigid and prescribed bodies (docs/design.md §11): a rigid ring of N_l Lagrangian points and
 // a centre point whose positions and velocities follow one rigid motion (centre X_c, angle theta,
 // velocity V, rotation rate Omega):  x_l = X_c + R(theta) r_l,  U_l = V + Omega e_z x (x_l - X_c).
 //  rigid       Newton-Euler for a uniform disk, m = rho_s pi D^2 / 4, I = m D^2 / 8 [per unit

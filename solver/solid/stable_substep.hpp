@@ -19,7 +19,7 @@ struct SpectralBounds {
   double damping_rate_max = 0.0;
 };
 // Scratch arrays of the bounds, kept by a caller that evaluates them every step so that no
-// allocation happens once they have reached the body's size (issue 12 item 1).
+// allocation happens once they have reached the body's size.
 struct SpectralWorkspace {
   std::vector<std::array<double, 4>> stiffness_diag, damping_diag, stiffness_element, damping_element;
   std::vector<double> x, y;

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/constants.hpp"
 #include "ibm/ib_operators.hpp"
 #include "scene/scene.hpp"
 #include "sim/simulation.hpp"
@@ -11,7 +12,7 @@
 namespace ibms::test {
 
 inline int markers_for(double diameter, double h) {
-  return std::max(8, static_cast<int>(std::lround(M_PI * diameter / h)));
+  return std::max(8, static_cast<int>(std::lround(pi * diameter / h)));
 }
 
 // A disk body of `kind` with markers spaced ~ h, at rest.

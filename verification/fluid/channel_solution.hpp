@@ -12,6 +12,8 @@
 #pragma once
 #include <cmath>
 
+#include "core/constants.hpp"
+
 namespace ibms::verification {
 
 struct ChannelSolution {
@@ -20,7 +22,6 @@ struct ChannelSolution {
   double viscosity = 0.1;           // nu [-]
   bool steady = true;               // c = q = 1, else c(t) = q(t) = cos(t)
 
-  static constexpr double pi = 3.14159265358979323846;
   // g and its x-derivatives, with w = 1 - x: g = 2 w^3 - w^4.
   static double g0(double x) { const double w = 1 - x; return 2 * w * w * w - w * w * w * w; }
   static double g1(double x) { const double w = 1 - x; return -6 * w * w + 4 * w * w * w; }

@@ -5,6 +5,8 @@
 #pragma once
 #include <cmath>
 
+#include "core/constants.hpp"
+
 namespace ibms::verification {
 
 struct ManufacturedSolution {
@@ -13,7 +15,6 @@ struct ManufacturedSolution {
   double viscosity = 0.1;    // nu [-]
   bool steady = true;        // g = h = 1, else g(t) = cos(t), h(t) = cos(t)
 
-  static constexpr double pi = 3.14159265358979323846;
   static double a(double s) { return s * s * (1 - s) * (1 - s); }
   static double a1(double s) { return 2 * s - 6 * s * s + 4 * s * s * s; }
   static double a2(double s) { return 2 - 12 * s + 12 * s * s; }

@@ -15,6 +15,7 @@
 #include <random>
 #include <vector>
 
+#include "core/constants.hpp"
 #include "fluid/boundary_conditions.hpp"
 #include "fluid/fluid_solver.hpp"
 #include "fluid/spectral_solver.hpp"
@@ -93,7 +94,7 @@ BOOST_AUTO_TEST_CASE(inflow_profiles_and_time_factors) {
   p.factor.amplitude = 1.0;
   p.factor.period = 16.0;
   BOOST_TEST(std::abs(p.at(0.205, 0.41, 4.0) - 1.5) < 1e-14);
-  BOOST_TEST(std::abs(p.at(0.205, 0.41, 2.0) - 1.5 * std::sin(3.14159265358979323846 / 4)) < 1e-14);
+  BOOST_TEST(std::abs(p.at(0.205, 0.41, 2.0) - 1.5 * std::sin(pi / 4)) < 1e-14);
 }
 
 namespace {

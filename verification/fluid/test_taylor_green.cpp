@@ -7,13 +7,13 @@
 #include <cmath>
 
 #include "../common/convergence.hpp"
+#include "core/constants.hpp"
 #include "fluid/fluid_solver.hpp"
 
 using namespace ibms;
 
 namespace {
 
-constexpr double pi = 3.14159265358979323846;
 constexpr double nu = 0.05, amplitude = 1.0, k = 1.0;  // box [0, 2 pi]^2
 
 double decay(double t) { return std::exp(-2.0 * nu * k * k * t); }

@@ -9,14 +9,13 @@
 
 #include <cmath>
 
+#include "core/constants.hpp"
 #include "fluid/fluid_solver.hpp"
 #include "fluid/time_scheme_stability.hpp"
 
 using namespace ibms;
 
 namespace {
-
-constexpr double pi = 3.14159265358979323846;
 
 // Amplitude of the mode sin/cos(k x) in v, per cell.
 double mode_amplitude(const Grid& g, const FluidState& s, double k) {

@@ -11,6 +11,7 @@
 #include <iomanip>
 #include <string>
 
+#include "core/constants.hpp"
 #include "ibm/delta_kernel.hpp"
 #include "../common/results_csv.hpp"
 
@@ -96,7 +97,7 @@ BOOST_AUTO_TEST_CASE(first_moment_vanishes_except_cosine_which_follows_its_close
   // Cosine: sum_j (x-j) phi = x - 1/2 + (cos(pi x/2) - sin(pi x/2))/2 on [0, 1] (nodes -1..2),
   // up to +-0.021 (A9): the documented non-zero first moment.
   const auto cosine_moment = [](double x) {
-    return x - 0.5 + 0.5*(std::cos(0.5*M_PI*x) - std::sin(0.5*M_PI*x));
+    return x - 0.5 + 0.5*(std::cos(0.5*pi*x) - std::sin(0.5*pi*x));
   };
   BOOST_TEST_MESSAGE("kernel    max|error|    range of sum (x-j) phi");
   for (KernelKind kernel : all_kernel_kinds) {

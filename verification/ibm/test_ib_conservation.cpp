@@ -11,6 +11,7 @@
 #include <random>
 #include <vector>
 
+#include "core/constants.hpp"
 #include "ibm/direct_forcing.hpp"
 #include "ibm/ib_operators.hpp"
 #include "ibm/marker_weights.hpp"
@@ -32,7 +33,7 @@ Markers ring_with_random_forces(const Grid& grid) {
   std::uniform_real_distribution<double> uniform(-1.0, 1.0);
   Markers m;
   for (int l = 0; l < 40; ++l) {
-    const double a = 2.0*M_PI*l/40 + 0.05*uniform(rng);
+    const double a = 2.0*pi*l/40 + 0.05*uniform(rng);
     m.position.push_back({0.53 + 0.2*std::cos(a), 0.41 + 0.2*std::sin(a)});
     m.force.push_back({uniform(rng), uniform(rng)});
   }

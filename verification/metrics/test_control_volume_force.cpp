@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "../common/convergence.hpp"
+#include "core/constants.hpp"
 #include "fluid/boundary_conditions.hpp"
 #include "fluid/fluid_solver.hpp"
 #include "metrics/control_volume_force.hpp"
@@ -124,7 +125,7 @@ BOOST_AUTO_TEST_CASE(potential_flow_with_circulation_gives_kutta_joukowski_at_se
     const std::complex<double> z(x, y);
     if (std::abs(z) < a) return std::complex<double>(0.0, 0.0);
     const std::complex<double> i(0.0, 1.0);
-    return std::conj(speed * (1.0 - a * a / (z * z)) - i * gamma / (2.0 * M_PI * z));  // u + i v
+    return std::conj(speed * (1.0 - a * a / (z * z)) - i * gamma / (2.0 * pi * z));  // u + i v
   };
   std::vector<double> h, error_lift, error_drag;
   std::vector<int> n_cells;

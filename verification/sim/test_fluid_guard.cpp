@@ -11,6 +11,7 @@
 #include <memory>
 #include <string>
 
+#include "core/constants.hpp"
 #include "core/errors.hpp"
 #include "io/checkpoint.hpp"
 #include "scene/scene_reader.hpp"
@@ -48,7 +49,7 @@ void set_double_shear_layer(Simulation& sim) {
     for (int i = 0; i < g.nx; ++i) {
       const double y = g.y_centre(j);
       f.velocity_x(i, j) = y <= 0.5 ? std::tanh(30.0 * (y - 0.25)) : std::tanh(30.0 * (0.75 - y));
-      f.velocity_y(i, j) = 0.05 * std::sin(2.0 * M_PI * g.x_centre(i));
+      f.velocity_y(i, j) = 0.05 * std::sin(2.0 * pi * g.x_centre(i));
     }
   sim.fluid_solver().initialise_faces(f);
 }

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <vector>
 
+#include "core/constants.hpp"
 #include "ibm/triangle_cell_overlap.hpp"
 
 using namespace ibms;
@@ -23,7 +24,7 @@ double fan_error(const Grid& grid, double cx, double cy, double radius, int n, b
   const std::array<double, 2> centre{cx, cy};
   std::vector<std::array<double, 2>> rim(n);
   for (int l = 0; l < n; ++l) {
-    const double angle = (clockwise ? -1 : 1) * 2*M_PI*l / n + 0.3;
+    const double angle = (clockwise ? -1 : 1) * 2*pi*l / n + 0.3;
     rim[l] = {cx + radius*std::cos(angle) * (1 + 0.1*std::sin(3*angle)), cy + radius*std::sin(angle)};
   }
   double worst = 0.0, fan_sum = 0.0, fan_exact = 0.0;

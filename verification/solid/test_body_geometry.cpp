@@ -11,6 +11,7 @@
 
 #include <cmath>
 
+#include "core/constants.hpp"
 #include "solid/body_geometry.hpp"
 #include "solid/mass_spring_body.hpp"
 
@@ -36,7 +37,7 @@ BOOST_AUTO_TEST_CASE(deformation_parameter_of_circle_and_ellipse) {
   const double a = 0.13, b = 0.07;
   for (double angle : {0.0, 0.4, 1.3}) {
     for (int l = 0; l < body.n_surface; ++l) {
-      const double phi = 2 * M_PI * l / body.n_surface;
+      const double phi = 2 * pi * l / body.n_surface;
       const double x = a * std::cos(phi), y = b * std::sin(phi);
       body.position[l] = {0.3 + std::cos(angle) * x - std::sin(angle) * y,
                           0.7 + std::sin(angle) * x + std::cos(angle) * y};

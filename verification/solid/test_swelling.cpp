@@ -9,6 +9,7 @@
 #include <cmath>
 #include <vector>
 
+#include "core/constants.hpp"
 #include "solid/mass_spring_body.hpp"
 #include "solid/stable_substep.hpp"
 #include "solid/swelling_schedule.hpp"
@@ -48,7 +49,7 @@ BOOST_AUTO_TEST_CASE(swelling_body_area_follows_schedule_and_mass_follows_area) 
     advance_symplectic_euler(body, dt, no_force);
     const double s = schedule.length_scale(time);
     const double area_error = std::abs(polygon_area(body) / (s*s*area0) - 1.0);
-    const double mass_error = std::abs(body.total_mass() / (spec.density * 0.25*M_PI*body.diameter*body.diameter) - 1.0);
+    const double mass_error = std::abs(body.total_mass() / (spec.density * 0.25*pi*body.diameter*body.diameter) - 1.0);
     max_area_error = std::max(max_area_error, area_error);
     max_mass_error = std::max(max_mass_error, mass_error);
     if (time >= next_report) {

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "../common/results_csv.hpp"
+#include "core/constants.hpp"
 
 #include "solid/mass_spring_body.hpp"
 #include "solid/spring_forces.hpp"
@@ -77,7 +78,7 @@ EnergyRun run(double dt, double period, int n_periods) {
 
 BOOST_AUTO_TEST_CASE(undamped_wheel_energy_error_is_bounded_and_first_order) {
   const MassSpringBody body = deformed_wheel();
-  const double period = 2.0*M_PI*std::sqrt(body.mass[0] / 1e3);
+  const double period = 2.0*pi*std::sqrt(body.mass[0] / 1e3);
   const double omega_bound = std::sqrt(spectral_bounds(body).omega_squared_max);
   const double dt0 = stable_substep(body, /*safety=*/0.25);
   BOOST_TEST_MESSAGE("T = " << period << ", omega_max bound = " << omega_bound);
