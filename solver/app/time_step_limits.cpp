@@ -60,7 +60,7 @@ std::vector<TimeStepLimit> time_step_limits(const Scene& scene, const Simulation
                       true, "4 / (gamma + sqrt(gamma^2 + 4 omega^2))"});
   }
   if (sim.has_contacts()) {
-    const ContactModel model = sim.contact_model().for_fluid_step(planned_time_step(scene));
+    const ContactModel model = sim.contact_model().for_fluid_step(planned_time_step(sim));
     const double lightest = lightest_cds_point_mass(sim.bodies());  // as contact_substep
     const double m_eff = sim.bodies().size() > 1 ? 0.5 * lightest : lightest;  // as contact_substep (A8)
     double heaviest = 0.0;  // as contact_substep: the stiffest collision-time pair

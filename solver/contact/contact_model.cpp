@@ -6,6 +6,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "core/constants.hpp"
 #include "solid/spring_dashpot.hpp"
 
 namespace ibms {
@@ -42,7 +43,7 @@ double ContactModel::pair_stiffness(double pair_mass) const {
   if (law == ContactLawKind::linear) return stiffness;
   // t_c = sqrt(m_eff / k) sqrt(pi^2 + ln^2 e) = T_c (A8) solved for k.
   const double log_e = std::log(restitution_coefficient);
-  return pair_mass * (M_PI*M_PI + log_e*log_e) / (collision_time * collision_time);
+  return pair_mass * (pi * pi + log_e * log_e) / (collision_time * collision_time);
 }
 
 double ContactModel::cds_radius_of(const MassSpringBody& body) const {

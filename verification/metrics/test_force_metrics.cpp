@@ -8,6 +8,7 @@
 #include <cmath>
 #include <vector>
 
+#include "core/constants.hpp"
 #include "sim/force_metrics.hpp"
 
 namespace {
@@ -22,8 +23,8 @@ History history(double f, double jitter) {
   for (int k = 0; k <= 8000; ++k) {
     const double t = 4.0 + 1e-3 * k;
     h.time.push_back(t);
-    h.drag.push_back(3.23 + 0.01 * std::cos(4 * M_PI * f * t));
-    h.lift.push_back(std::sin(2 * M_PI * f * t + 0.3) + (k % 2 == 0 ? jitter : -jitter));
+    h.drag.push_back(3.23 + 0.01 * std::cos(4 * ibms::pi * f * t));
+    h.lift.push_back(std::sin(2 * ibms::pi * f * t + 0.3) + (k % 2 == 0 ? jitter : -jitter));
   }
   return h;
 }
