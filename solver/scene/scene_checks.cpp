@@ -128,11 +128,12 @@ void check_bodies(const Scene& scene, const SceneDiagnostics& diagnostics) {
 }
 
 // ibm.coupling = "no_slip" holds the constraint with the full force of the projected flow, pressure
-// included, while the bodies move explicitly with that force. A mass-spring rim point, light and
-// free to move alone, then receives the reaction of more fluid than its own mass (the added-mass
-// instability of explicit coupling): measured on verification/sim/restart_scene.toml, the wheels
-// blow up at step 4 on the cells and at step 2 on the faces. Rigid bodies move as a whole with a
-// virtual mass (docs/method.md §3.7) and prescribed ones are given, so both are coupled stably.
+// included, while the bodies move explicitly with that force. A mass-spring rim takes that force
+// point by point: its squeeze by a pressure jump (the constraint's null space), its short rim modes
+// (small singular values of the marker operator) and its translation against the centre point all
+// grow step by step; every explicit form tried blows up within 36 steps on one wheel of
+// verification/sim/restart_scene.toml (docs/method.md §3.7, "Which bodies"). Rigid bodies move as a
+// whole with a virtual mass and prescribed ones are given, so both are coupled stably.
 void check_coupling(const Scene& scene, const SceneDiagnostics& diagnostics) {
   if (scene.ibm.coupling != "no_slip") return;
   for (std::size_t b = 0; b < scene.bodies.size(); ++b)
