@@ -108,6 +108,20 @@ void check_bodies_for_blow_up(const Simulation& sim) {
           "speeds, swelling, buoyant free fall across the box): an unstable spring or contact",
           b, energy, bound, sim.driving_speed()));
   }
+  // A contact deeper than the contact spheres: the rims pass into each other (docs/method.md §5.5,
+  // "Limit"). The overlap is about v0 T_c / pi under the collision-time law, v0 sqrt(m_eff / k)
+  // under the linear one; the validation scenes reach at most 13 % of the radius.
+  if (sim.has_contacts()) {
+    double smallest_radius = HUGE_VAL;
+    for (const MassSpringBody& body : sim.bodies())
+      smallest_radius = std::min(smallest_radius, sim.contact_model().cds_radius_of(body));
+    if (sim.last_contact_stats.max_overlap > smallest_radius)
+      report_body_instability(sim, fmt::format(
+          "a contact overlap of {:.4g} exceeds the smallest contact-sphere radius {:.4g}: the rims pass into each "
+          "other (contact.model = \"collision_time\": the overlap is about v0 T_c / pi, so lower run.max_time_step "
+          "or contact.collision_steps; linear law: about v0 sqrt(m / k), so raise contact.stiffness)",
+          sim.last_contact_stats.max_overlap, smallest_radius));
+  }
   // The contacts have given the bodies more energy than they took: more than a quarter of the
   // energy scale sum_b M_b V^2 / 2 (a stable contact gives back at most what it stored, less its
   // integration error of a few per cent of one collision's energy).

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "metrics/body_series.hpp"
 #include "core/errors.hpp"
@@ -136,4 +137,36 @@ BOOST_AUTO_TEST_CASE(a_contact_returning_more_energy_than_it_received_stops_the_
     BOOST_TEST(!sim.instability_warned);
   }
   std::filesystem::remove_all(dir);
+}
+
+// A contact deeper than the contact spheres stops the run: the two wheels of restart_scene under the
+// collision-time law at CFL 0.1 with no step cap (dt ~ 0.02, T_c = 10 dt ~ 0.2; a wheel at 0.8
+// overlaps ~ v0 T_c / pi ~ 0.05 > the CDS radius 0.02), with the overlap and both keys named; the
+// same scene at its own fixed step 0.004 (T_c = 0.04) runs to its end with every overlap below the radius.
+BOOST_AUTO_TEST_CASE(a_contact_deeper_than_its_spheres_stops_the_run) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "ibms_test_contact_overlap";
+  std::filesystem::create_directories(dir);
+  const std::vector<std::string> collision_time{"contact.model=\"collision_time\"", "contact.stiffness=0"};
+  std::vector<std::string> uncapped = collision_time;
+  uncapped.insert(uncapped.end(), {"run.time_step=0", "run.cfl=0.1", "run.max_time_step=1"});
+  Scene deep = read_scene_file(IBMS_RESTART_SCENE, uncapped);
+  deep.output.file = (dir / "deep.h5").string();
+  Simulation sim(deep);
+  std::string message;
+  try {
+    run_simulation(sim, {deep.output.file, /*quiet=*/true});
+  } catch (const BlowUpError& e) {
+    message = e.what();
+  }
+  BOOST_TEST_MESSAGE("stop message: " << message);
+  BOOST_TEST(message.find("contact overlap of") != std::string::npos);
+  BOOST_TEST(message.find("contact.collision_steps") != std::string::npos);
+  BOOST_TEST(message.find("run.max_time_step") != std::string::npos);
+  BOOST_TEST(sim.last_contact_stats.max_overlap > sim.contact_model().cds_radius_of(sim.bodies()[0]));
+
+  Scene shallow = read_scene_file(IBMS_RESTART_SCENE, collision_time);
+  shallow.output.file = (dir / "shallow.h5").string();
+  Simulation fine(shallow);
+  BOOST_CHECK_NO_THROW(run_simulation(fine, {shallow.output.file, /*quiet=*/true}));
+  BOOST_TEST(fine.fluid().time == shallow.run.end_time, boost::test_tools::tolerance(1e-12));
 }
