@@ -127,20 +127,15 @@ void check_bodies(const Scene& scene, const SceneDiagnostics& diagnostics) {
   }
 }
 
-// ibm.coupling = "no_slip" holds the constraint with the full force of the projected flow, pressure
-// included, while the bodies move explicitly with that force. A mass-spring rim takes that force
-// point by point: its squeeze by a pressure jump (the constraint's null space), its short rim modes
-// (small singular values of the marker operator) and its translation against the centre point all
-// grow step by step; every explicit form tried blows up within 36 steps on one wheel of
-// verification/sim/restart_scene.toml (docs/method.md §3.7, "Which bodies"). Rigid bodies move as a
-// whole with a virtual mass and prescribed ones are given, so both are coupled stably.
+// ibm.coupling = "no_slip" on a mass-spring body solves the rim's response with the constraint,
+// marker by rim point (docs/method.md §3.7): sub-markers between the rim points are not part of it.
 void check_coupling(const Scene& scene, const SceneDiagnostics& diagnostics) {
-  if (scene.ibm.coupling != "no_slip") return;
+  if (scene.ibm.coupling != "no_slip" || !scene.ibm.sub_markers) return;
   for (std::size_t b = 0; b < scene.bodies.size(); ++b)
     if (scene.bodies[b].kind == "mass_spring")
-      diagnostics.fail("ibm.coupling",
-                       fmt::format("\"no_slip\" couples rigid and prescribed bodies only; body {} is mass_spring (its "
-                                   "light rim points are unstable under the full constraint force): use \"uhlmann\"", b));
+      diagnostics.fail("ibm.sub_markers",
+                       fmt::format("is true, but \"no_slip\" couples a mass_spring body (body {}) through its rim "
+                                   "points alone: set ibm.sub_markers = false, or ibm.coupling = \"uhlmann\"", b));
 }
 
 void check_contact(const ContactSpec& contact, const SceneDiagnostics& diagnostics) {

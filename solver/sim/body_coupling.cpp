@@ -184,6 +184,8 @@ double slip_of_interpolated(std::vector<BodyCoupling>& coupling, bool faces) {
     double max2 = 0.0, sum2 = 0.0;
     for (std::size_t l = 0; l < c.marker.size(); ++l) {
       for (int d = 0; d < 2; ++d) c.pass_increment[l][d] = c.target_velocity[l][d] - c.interpolated_velocity[l][d];
+      if (!c.body_velocity_change.empty())
+        for (int d = 0; d < 2; ++d) c.pass_increment[l][d] += c.body_velocity_change[l][d];
       const double r2 = c.pass_increment[l][0] * c.pass_increment[l][0] + c.pass_increment[l][1] * c.pass_increment[l][1];
       max2 = std::max(max2, r2);
       sum2 += r2;

@@ -72,6 +72,13 @@ struct BodyCoupling {
   // ibm.coupling = "no_slip": the forces F_l of the latest step, the predictor of the next one while
   // the marker count stays the same (previous_force.size() == marker.size(); empty before the first step).
   std::vector<Vec2> previous_force;        // [length/time^2]
+  // ibm.coupling = "no_slip" on a mass-spring body (markers = rim points): the change of the rim
+  // velocities over the step that the fluid reaction of forcing_sum gives through the body's
+  // linearised response, -(M + dt D + dt^2 S)^{-1} rho_f dV dt F (docs/method.md §3.7). The target of
+  // the constraint is the rim velocity at the end of the step, target_velocity (U^n + the step
+  // without the fluid) + this. Empty for other bodies [length/time].
+  std::vector<Vec2> body_velocity_change;
+  std::vector<double> response_work;       // two entries per body point: scratch of the response
 
   // max_markers: capacity reserved once for the marker arrays, so that sub-markers added as the
   // body swells (up to 1.5x the nominal swollen edge) do not reallocate them within the step loop.
@@ -108,7 +115,8 @@ void apply_direct_forcing(const Grid& grid, KernelKind kernel, const WallVelocit
 bool spread_previous_forces(const Grid& grid, KernelKind kernel, double dt, std::vector<BodyCoupling>& coupling,
                             CellField& velocity_star_x, CellField& velocity_star_y);
 
-// Slip of the velocity (velocity_x, velocity_y) at the markers: r_l = U_target_l - J u (kept in
+// Slip of the velocity (velocity_x, velocity_y) at the markers: r_l = U_target_l (+ body_velocity_change_l
+// where the body responds) - J u (kept in
 // pass_increment), slip_max and slip_rms of every body; returns the largest slip_max.
 double measure_slip(const Grid& grid, KernelKind kernel, const WallVelocities& walls, const CellField& velocity_x,
                     const CellField& velocity_y, std::vector<BodyCoupling>& coupling);

@@ -53,7 +53,8 @@ double dot(const double* a, const double* b, std::size_t n) {
 NoSlipResult hold_no_slip(const Grid& grid, KernelKind kernel, const WallVelocities& walls, double dt,
                           double tolerance, bool on_faces, bool cells_from_faces, int max_products, FluidSolver& solver, FluidState& state,
                           std::vector<BodyCoupling>& coupling, CellField& increment_x, CellField& increment_y,
-                          FaceField& face_increment_x, FaceField& face_increment_y, NoSlipWorkspace& work) {
+                          FaceField& face_increment_x, FaceField& face_increment_y, NoSlipWorkspace& work,
+                          const BodyResponse& response) {
   NoSlipResult result;
   const std::size_t n = unknowns(coupling);
   const int m_max = NoSlipWorkspace::restart;
@@ -70,13 +71,27 @@ NoSlipResult hold_no_slip(const Grid& grid, KernelKind kernel, const WallVelocit
     }
     if (cells_from_faces) average_faces_to_cells(grid, face_increment_x, face_increment_y, increment_x, increment_y);
   };
-  // y = J P_0 S (U_ref x) / U_ref: the cell or face part of the projected increment at the markers.
+  // body_velocity_change of the responding bodies from the forces so far (pass_force: scratch).
+  const auto update_body_change = [&]() {
+    if (!response) return;
+    for (std::size_t b = 0; b < coupling.size(); ++b) {
+      BodyCoupling& c = coupling[b];
+      if (c.body_velocity_change.empty()) continue;
+      for (std::size_t l = 0; l < c.marker.size(); ++l)
+        for (int d = 0; d < 2; ++d) c.pass_force[l][d] = dt * c.forcing_sum[l][d];
+      response(b, c.pass_force, c.body_velocity_change);
+    }
+  };
+  // y = J P_0 S (U_ref x) / U_ref: the cell or face part of the projected increment at the markers,
+  // less the rim's response to it where the body responds.
   const auto apply = [&](const double* x, double* y) {
     scatter(x, coupling);
     spread_increment();
     solver.homogeneous_projection(dt, increment_x, increment_y, &face_increment_x, &face_increment_y);
     std::size_t k = 0;
-    for (BodyCoupling& c : coupling) {
+    for (std::size_t b = 0; b < coupling.size(); ++b) {
+      BodyCoupling& c = coupling[b];
+      const std::size_t first = k;
       if (on_faces)
         interpolate_faces(grid, kernel, at_rest, solver.projected_face_increment_x(), solver.projected_face_increment_y(),
                           c.marker, c.interpolated_velocity);
@@ -84,12 +99,18 @@ NoSlipResult hold_no_slip(const Grid& grid, KernelKind kernel, const WallVelocit
         interpolate(grid, kernel, at_rest, increment_x, increment_y, c.marker, c.interpolated_velocity);
       for (const auto& u : c.interpolated_velocity)
         for (int d = 0; d < 2; ++d) y[k++] = u[d] / c.slip_reference_speed;
+      if (response && !c.body_velocity_change.empty()) {
+        response(b, c.pass_increment, c.pass_force);  // pass_increment = dt dF of this product
+        for (std::size_t l = 0; l < c.marker.size(); ++l)
+          for (int d = 0; d < 2; ++d) y[first + 2 * l + d] -= c.pass_force[l][d] / c.slip_reference_speed;
+      }
     }
     ++result.products;
   };
 
   double previous_slip = HUGE_VAL;
   for (;;) {
+    update_body_change();
     // The slip of the constrained velocity, r = (U_target - J u) / U_ref of u^{n+1} or J_f U_f^{n+1}
     // (measure_slip / measure_face_slip leave U_target - J u in pass_increment).
     const double slip = on_faces ? measure_face_slip(grid, kernel, walls, state.velocity_face_x, state.velocity_face_y, coupling)

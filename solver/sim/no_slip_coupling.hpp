@@ -15,8 +15,13 @@
 // a restart cycle has not halved it (the floor of the marker system, docs/method.md §3.7).
 // cells_from_faces: the cells take the mean of the face increments (A S_f, under "faces") in place
 // of the kernel spread S.
+// Bodies that respond (mass-spring, body_velocity_change not empty): the target is the rim velocity
+// at the end of the step, which the force itself changes through the body's linearised response R,
+// so the corrections solve (J P_0 S + R rho_f dV) (dt dF) = r: the fluid and the rim's inertia and
+// springs together in one marker system (docs/method.md §3.7).
 #pragma once
 #include <cstddef>
+#include <functional>
 #include <vector>
 
 #include "core/fields.hpp"
@@ -39,6 +44,11 @@ struct NoSlipWorkspace {
   void reserve(std::size_t max_unknowns);
 };
 
+// The response of body b's rim to marker impulses: velocity_change_l = the change of U_l over the step
+// when the fluid reaction of the impulses impulse_l = dt F_l acts on the body [length/time].
+using BodyResponse = std::function<void(std::size_t body, const std::vector<Vec2>& impulse,
+                                        std::vector<Vec2>& velocity_change)>;
+
 struct NoSlipResult {
   int products = 0;      // J P_0 S products (one Poisson solve each)
   double max_change = 0; // sum over corrections of max |P_0 g|, a bound on the change of u^{n+1} [length/time]
@@ -51,6 +61,7 @@ struct NoSlipResult {
 NoSlipResult hold_no_slip(const Grid& grid, KernelKind kernel, const WallVelocities& walls, double dt,
                           double tolerance, bool on_faces, bool cells_from_faces, int max_products, FluidSolver& solver, FluidState& state,
                           std::vector<BodyCoupling>& coupling, CellField& increment_x, CellField& increment_y,
-                          FaceField& face_increment_x, FaceField& face_increment_y, NoSlipWorkspace& work);
+                          FaceField& face_increment_x, FaceField& face_increment_y, NoSlipWorkspace& work,
+                          const BodyResponse& response = {});
 
 }  // namespace ibms

@@ -98,6 +98,12 @@ Simulation::Simulation(const Scene& scene)
     std::size_t unknowns = 0;
     for (const BodyCoupling& c : coupling_) unknowns += 2 * c.marker.capacity();
     no_slip_work.reserve(unknowns);
+    response_systems.resize(bodies_.size());
+    for (std::size_t b = 0; b < bodies_.size(); ++b) {
+      if (bodies_[b].kind != BodyKind::mass_spring) continue;
+      coupling_[b].body_velocity_change.assign(coupling_[b].marker.size(), Vec2{0.0, 0.0});
+      coupling_[b].response_work.assign(2 * bodies_[b].n_points(), 0.0);
+    }
   }
   if (scene.contact.enabled()) {
     contact_model_ = ContactModel(scene.contact);
@@ -270,7 +276,10 @@ std::vector<std::string> Simulation::stage_names() const {
   stages.push_back("projection (momentum interpolation, DCT/FFT Poisson)");
   if (has_bodies() && enforces_no_slip())
     stages.push_back("no-slip corrections (force corrections projected until the slip at t^{n+1} <= " +
-                     fmt::format("{:g}", scene_.ibm.slip_tolerance) + " U_ref)");
+                     fmt::format("{:g}", scene_.ibm.slip_tolerance) + " U_ref" +
+                     (scene_.has_kind("mass_spring") ? "; mass-spring rims: target at t^{n+1}, their linearised response "
+                                                       "in the marker system)"
+                                                     : ")"));
   if (has_bodies()) {
     stages.push_back("fluid reaction on the rim points");
     stages.push_back(scene_.ibm.inner_fluid_inertia == "kempe"

@@ -115,6 +115,9 @@ class Simulation {
   int fixed_solid_substeps = 0;
   SpectralWorkspace spectral_workspace;  // scratch of the solid sub-step bound, reused every step
   std::vector<ImplicitSpringSystem> implicit_systems;  // per body: storage of the implicit spring step
+  // ibm.coupling = "no_slip": per body, the linearised response of a mass-spring body over the
+  // fluid step, (M + dt D + dt^2 S) factorised at the step's start (docs/method.md §3.7).
+  std::vector<ImplicitSpringSystem> response_systems;
 
   ProjectionStats last_projection;  // diagnostics of the latest step
   // ibm.coupling = "no_slip": the projected increment of one correction (allocated once), and the

@@ -72,6 +72,29 @@ void project(Simulation& sim, double dt) {
   sim.last_projection = sim.fluid_solver().project(sim.fluid(), dt, sim.enforces_no_slip() ? &balanced : nullptr);
 }
 
+// The no_slip coupling's mass-spring bodies (§3.7): the backward-Euler step of each over dt without
+// the fluid, from x^n, U^n with its springs, dashpots and buoyant weight, factorised for the
+// response; its velocity change joins the target (the rim velocity at the end of the step). Returns
+// whether any body responds.
+bool prepare_body_responses(Simulation& sim, double dt) {
+  bool any = false;
+  const double density_f = sim.fluid_density();
+  const auto& gravity = sim.scene().fluid.gravity;
+  for (std::size_t b = 0; b < sim.bodies().size(); ++b) {
+    BodyCoupling& c = sim.coupling()[b];
+    if (c.body_velocity_change.empty()) continue;
+    const MassSpringBody& body = sim.bodies()[b];
+    const double buoyancy_factor = 1.0 - density_f / body.density;
+    for (int p = 0; p < body.n_points(); ++p)
+      for (int d = 0; d < 2; ++d) c.external_force[p][d] = body.mass[p] * buoyancy_factor * gravity[d];
+    sim.response_systems[b].velocity_change(body, dt, c.external_force);  // dU without the fluid
+    for (std::size_t l = 0; l < c.marker.size(); ++l)
+      for (int d = 0; d < 2; ++d) c.target_velocity[l][d] += c.external_force[l][d];
+    any = true;
+  }
+  return any;
+}
+
 // 4. The slip at t^{n+1} (§3.7); with the no_slip coupling, force corrections projected with the
 // pressure until no-slip holds at every marker (sim/no_slip_coupling.hpp).
 void hold_no_slip(Simulation& sim, double time_n, double dt) {
@@ -85,11 +108,23 @@ void hold_no_slip(Simulation& sim, double time_n, double dt) {
   }
   const IbmSpec& ibm = sim.scene().ibm;
   const bool on_faces = ibm.constrained_velocity == "faces";
+  const bool responds = prepare_body_responses(sim, dt);
+  // -(M + dt D + dt^2 S)^{-1} rho_f dV (dt F) on the rim points of body b (markers = rim points).
+  const BodyResponse response = [&sim](std::size_t b, const std::vector<Vec2>& impulse, std::vector<Vec2>& change) {
+    BodyCoupling& c = sim.coupling()[b];
+    std::vector<double>& x = c.response_work;
+    std::fill(x.begin(), x.end(), 0.0);
+    for (std::size_t l = 0; l < c.marker.size(); ++l)
+      for (int d = 0; d < 2; ++d) x[2 * l + d] = -sim.fluid_density() * c.marker_volume[l] * impulse[l][d];
+    sim.response_systems[b].response(x);
+    for (std::size_t l = 0; l < c.marker.size(); ++l)
+      for (int d = 0; d < 2; ++d) change[l][d] = x[2 * l + d];
+  };
   const NoSlipResult result =
       hold_no_slip(sim.grid(), sim.kernel(), walls, dt, ibm.slip_tolerance, on_faces, sim.cell_forces_from_faces(),
                    ibm.max_coupling_iterations,
                    sim.fluid_solver(), fluid, sim.coupling(), sim.slip_increment_x, sim.slip_increment_y,
-                   sim.force_face_x, sim.force_face_y, sim.no_slip_work);
+                   sim.force_face_x, sim.force_face_y, sim.no_slip_work, responds ? response : BodyResponse{});
   keep_forces(sim.coupling());
   // The slip of the velocity not constrained, for the series: cells and faces differ by the
   // momentum interpolation's dt (mean(G_c) - G_f) p (§2.3).

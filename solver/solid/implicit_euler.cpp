@@ -127,6 +127,16 @@ void ImplicitSpringSystem::solve(std::vector<double>& x) const {
 
 void ImplicitSpringSystem::advance(MassSpringBody& body, double dt,
                                    std::vector<std::array<double, 2>>& external_force) {
+  velocity_change(body, dt, external_force);
+  for (int p = 0; p < body.n_points(); ++p)
+    for (int d = 0; d < 2; ++d) {
+      body.velocity[p][d] += external_force[p][d];
+      body.position[p][d] += dt * body.velocity[p][d];
+    }
+}
+
+void ImplicitSpringSystem::velocity_change(const MassSpringBody& body, double dt,
+                                           std::vector<std::array<double, 2>>& external_force) {
   if (static_cast<int>(external_force.size()) != body.n_points())
     throw std::invalid_argument("ImplicitSpringSystem::advance: external force has the wrong size");
   if (!matches(body)) analyse(body);
@@ -181,10 +191,7 @@ void ImplicitSpringSystem::advance(MassSpringBody& body, double dt,
   factorise();
   solve(solution_);
   for (int p = 0; p < body.n_points(); ++p)
-    for (int d = 0; d < 2; ++d) {
-      body.velocity[p][d] += solution_[2*p + d];
-      body.position[p][d] += dt * body.velocity[p][d];
-    }
+    for (int d = 0; d < 2; ++d) external_force[p][d] = solution_[2*p + d];
 }
 
 }  // namespace ibms

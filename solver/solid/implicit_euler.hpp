@@ -34,6 +34,12 @@ class ImplicitSpringSystem {
   // (it holds the right-hand side afterwards). Throws BlowUpError on a zero pivot or a spring of
   // zero length.
   void advance(MassSpringBody& body, double dt, std::vector<std::array<double, 2>>& external_force);
+  // The same step's velocity change dU without moving the body: external_force in, dU out
+  // (overwritten). The factorised matrix stays for response().
+  void velocity_change(const MassSpringBody& body, double dt, std::vector<std::array<double, 2>>& external_force);
+  // x := (M + dt D + dt^2 S)^{-1} x (two entries per point), the matrix of the latest advance or
+  // velocity_change: the velocity change of the points per unit of impulse dt F.
+  void response(std::vector<double>& x) const { solve(x); }
 
  private:
   void analyse(const MassSpringBody& body);  // pattern, elimination tree, storage of L
