@@ -5,7 +5,7 @@
 #   validation/cavity_swelling_particles/reference/ibms_trajectories_{nonswelling,swelling}.csv
 #   validation/cavity_deformable_objects/reference/ibms_deformation_k{10,100}.csv
 #     (the body cases at their validation grid, 100 x 100, as their ctest runs them)
-#   validation/dfg_cylinder_2d1/reference/ibms_dfg_2d1.csv          (D/h = 40, the validation label's finest)
+#   validation/dfg_cylinder_2d1/reference/ibms_dfg_2d1.csv          (D/h = 40, a `slow` grid)
 #   validation/dfg_cylinder_2d2/reference/ibms_dfg_2d2_forces.csv   (D/h = 30, t >= 8)
 # usage: scripts/make-compare-references.sh IBMS_BINARY WORK_DIR
 # REFERENCE_OUT=DIR writes DIR/<case>/reference/ibms_*.csv instead of into the source tree's

@@ -26,6 +26,11 @@ void resize_markers(BodyCoupling& c, std::size_t n) {
   c.forcing_sum.resize(n);
 }
 
+// The face-to-cell mean A at cell (i, j), the one rule of average_faces_to_cells and
+// cell_forces_from_faces: x from the faces i and i + 1, y from the faces j and j + 1.
+inline double face_mean_x(const FaceField& face_x, int i, int j) { return 0.5 * (face_x(i, j) + face_x(i + 1, j)); }
+inline double face_mean_y(const FaceField& face_y, int i, int j) { return 0.5 * (face_y(i, j) + face_y(i, j + 1)); }
+
 }  // namespace
 
 BodyCoupling::BodyCoupling(const MassSpringBody& body, std::size_t max_markers)
@@ -240,8 +245,8 @@ void average_faces_to_cells(const Grid& grid, const FaceField& face_x, const Fac
                             CellField& cell_y) {
   for (int j = 0; j < grid.ny; ++j)
     for (int i = 0; i < grid.nx; ++i) {
-      cell_x(i, j) = 0.5 * (face_x(i, j) + face_x(i + 1, j));
-      cell_y(i, j) = 0.5 * (face_y(i, j) + face_y(i, j + 1));
+      cell_x(i, j) = face_mean_x(face_x, i, j);
+      cell_y(i, j) = face_mean_y(face_y, i, j);
     }
 }
 
@@ -250,8 +255,8 @@ void cell_forces_from_faces(const Grid& grid, const FaceField& force_face_x, con
                             CellField& velocity_star_y) {
   for (int j = 0; j < grid.ny; ++j)
     for (int i = 0; i < grid.nx; ++i) {
-      const double fx = 0.5 * (force_face_x(i, j) + force_face_x(i + 1, j));
-      const double fy = 0.5 * (force_face_y(i, j) + force_face_y(i, j + 1));
+      const double fx = face_mean_x(force_face_x, i, j);
+      const double fy = face_mean_y(force_face_y, i, j);
       velocity_star_x(i, j) += fx - force_cell_x(i, j);
       velocity_star_y(i, j) += fy - force_cell_y(i, j);
       force_cell_x(i, j) = fx;

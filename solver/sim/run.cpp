@@ -25,9 +25,6 @@
 #ifndef IBMS_VERSION
 #define IBMS_VERSION "unknown"
 #endif
-#ifndef IBMS_GIT_COMMIT
-#define IBMS_GIT_COMMIT "unknown"
-#endif
 
 namespace ibms {
 namespace {
@@ -275,7 +272,6 @@ void write_timing(OutputFile& out, const Simulation& sim, double wall_seconds) {
 }  // namespace
 
 const char* ibms_version() { return IBMS_VERSION; }
-const char* ibms_git_commit() { return IBMS_GIT_COMMIT; }
 
 std::string stage_timing_table(const Simulation& sim, double wall_seconds) {
   std::string text = fmt::format("{:<14} {:>10} {:>7} {:>10}\n", "stage", "seconds", "share", "calls");

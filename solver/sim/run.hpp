@@ -31,7 +31,8 @@ struct RunSummary {
 
 RunSummary run_simulation(Simulation& sim, const RunOptions& options);
 
-// The version and git commit this library was built from (what the output file records).
+// The version and git commit this library was built from (what the output file records);
+// ibms_git_commit() is in a source generated at every build (cmake/git_commit.cmake).
 const char* ibms_version();
 const char* ibms_git_commit();
 

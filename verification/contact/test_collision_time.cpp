@@ -81,15 +81,6 @@ double damped_max_overlap(double e, double m_eff, double k) {
   return impact_speed * std::sqrt(m_eff / k) * std::exp(-zeta * phase / root);
 }
 
-double centre_energy_change(const CollisionRecord& r) {
-  double before = 0.0, after = 0.0;
-  for (std::size_t b = 0; b < r.velocity_before.size(); ++b) {
-    before += r.velocity_before[b][0]*r.velocity_before[b][0] + r.velocity_before[b][1]*r.velocity_before[b][1];
-    after += r.velocity_after[b][0]*r.velocity_after[b][0] + r.velocity_after[b][1]*r.velocity_after[b][1];
-  }
-  return (after - before) / before;  // equal masses
-}
-
 void check_stiff(const std::string& name, bool wall) {
   BOOST_TEST_MESSAGE(name << ": e_D  e_measured  rel_error  contact_time/T_c  overlap  overlap_expected  rel_diff"
                           "  energy_change  substeps_per_fluid_step");

@@ -81,15 +81,6 @@ using Collision = CollisionRecord (*)(double, double, double, const Setting&);
 
 double energy_change(const CollisionRecord& r) { return (r.energy_after - r.energy_before) / r.energy_before; }
 
-double centre_energy_change(const CollisionRecord& r) {
-  double before = 0.0, after = 0.0;
-  for (std::size_t b = 0; b < r.velocity_before.size(); ++b) {
-    before += r.velocity_before[b][0]*r.velocity_before[b][0] + r.velocity_before[b][1]*r.velocity_before[b][1];
-    after += r.velocity_after[b][0]*r.velocity_after[b][0] + r.velocity_after[b][1]*r.velocity_after[b][1];
-  }
-  return (after - before) / before;  // equal masses
-}
-
 void compare_schemes(const std::string& name, Collision collision, double spring_k) {
   const bool stiff = spring_k <= 0.0;
   BOOST_TEST_MESSAGE(name << ": k_Dn  e_D  e_shared  e_inner  rel_diff  overlap_shared  overlap_inner  rel_diff"

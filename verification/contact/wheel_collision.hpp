@@ -172,4 +172,15 @@ inline double measured_restitution(const CollisionRecord& record) {
   return -relative_velocity_x(record.velocity_after) / relative_velocity_x(record.velocity_before);
 }
 
+// Relative change of the centres' kinetic energy over the collision, sum |V_b|^2 after over before
+// minus 1 (the wheels' masses are equal, so they cancel) [-].
+inline double centre_energy_change(const CollisionRecord& r) {
+  double before = 0.0, after = 0.0;
+  for (std::size_t b = 0; b < r.velocity_before.size(); ++b) {
+    before += r.velocity_before[b][0]*r.velocity_before[b][0] + r.velocity_before[b][1]*r.velocity_before[b][1];
+    after += r.velocity_after[b][0]*r.velocity_after[b][0] + r.velocity_after[b][1]*r.velocity_after[b][1];
+  }
+  return (after - before) / before;
+}
+
 }  // namespace ibms::test

@@ -5,29 +5,21 @@
 // a crash, a sanitizer report) is a bug. Build: -DIBMS_FUZZ=ON with clang (scripts/run-fuzz.sh).
 #include <cstddef>
 #include <cstdint>
-#include <cstdio>
-#include <cstdlib>
 #include <string>
 #include <vector>
 
-#include "core/errors.hpp"
 #include "fuzz_input.hpp"
+#include "one_line_input_error.hpp"
 #include "scene/scene_reader.hpp"
 
 using ibms::fuzz::leading_overrides;
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);
-  try {
+  ibms::fuzz::expect_result_or_one_line_input_error([&] {
     const ibms::Scene scene = ibms::read_scene_string(text, "fuzz.toml", leading_overrides(text));
     // The resolved text of an accepted scene must read back (resolved_scene_toml's contract).
     ibms::read_scene_string(scene.resolved_text, "fuzz_resolved.toml");
-  } catch (const ibms::InputError& error) {
-    const std::string message = error.what();
-    if (message.find('\n') != std::string::npos) {  // bad input gets ONE line
-      std::fprintf(stderr, "multi-line InputError: %s\n", message.c_str());
-      std::abort();
-    }
-  }
-  return 0;  // any other exception escapes and libFuzzer reports it as a crash
+  });
+  return 0;
 }
