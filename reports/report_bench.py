@@ -88,7 +88,7 @@ _BODY_FAMILIES = OrderedDict([
 ])
 _COUPLINGS = OrderedDict([
     ("uhlmann", ("uhlmann (papers')", "o-", "tab:orange")),
-    ("no_slip", ("no\\_slip (faces)", "s-", "tab:blue")),
+    ("no_slip", ("no_slip (faces)", "s-", "tab:blue")),
 ])
 
 
@@ -187,7 +187,7 @@ def body_work_precision(out, build, fig_dir, source, cases):
     families = [f for f in _BODY_FAMILIES if any(_body_case(c[0])[0] == f for c in cases)]
     fig, axes = plt.subplots(1, len(families), figsize=(3.6 * len(families), 3.0), squeeze=False)
     for ax, family in zip(axes[0], families):
-        for name, pts, slope in cases:
+        for name, pts, slope in sorted(cases, key=lambda c: list(_COUPLINGS).index(_body_case(c[0])[1])):
             fam, coupling = _body_case(name)
             if fam != family:
                 continue
@@ -207,7 +207,8 @@ def body_work_precision(out, build, fig_dir, source, cases):
     fig.savefig(path)
     plt.close(fig)
     caption = "; ".join("%s: %s" % (_BODY_FAMILIES[f][0], _reference_text(source, f)) for f in families)
-    out.append(figure(path, "Error against wall time of the DFG cylinders, both couplings (labels: $D/h$). " +
+    out.append(figure(path, "Error (its absolute value) against wall time of the DFG cylinders, both couplings "
+                      "(labels: $D/h$). " +
                       caption + "; dotted: 3\\,\\%."))
     rows = _rows(os.path.join(build, "bench", "time_to_target_dfg_2d2.csv"))
     if rows:
