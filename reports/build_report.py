@@ -566,7 +566,7 @@ def document(build, source, fig_dir):
     solid.solid_section(out, build, fig_dir)
     for case in order:
         case_section(out, case, metas[case], build, source, judged, params[case], fig_dir)
-    bench.work_precision_section(out, build, fig_dir)
+    bench.work_precision_section(out, build, fig_dir, source)
     bench.stability_section(out, build, fig_dir)
     bench.overhead_section(out, build)
     bench.forcing_passes_section(out, build, source)

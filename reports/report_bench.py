@@ -1,6 +1,8 @@
 """Report sections fed by bench/ and by verification tables other than convergence:
 kernel-moment table (BUILD/verification_results/kernel_moments.csv, written by test_delta_kernel),
-work-precision plots with fitted slopes (BUILD/bench/work_precision_<case>.csv), stability maps
+work-precision plots with fitted slopes (BUILD/bench/work_precision_<case>.csv; the DFG cylinders
+under both immersed-boundary couplings in a figure of their own, with the bench's time to 3 % on
+DFG 2D-2's max c_D from BUILD/bench/time_to_target_dfg_2d2.csv), stability maps
 (BUILD/bench/stability_<case>.csv), the cost of what a scene uses (BUILD/bench/overhead.csv) and
 run times per validation case (ctest logs). Reads files only; the one fit is the least-squares
 slope of log(error) against log(wall time), the same fit bench_work_precision prints."""
@@ -78,7 +80,28 @@ def kernel_moment_section(out, build):
                                         "a range claim, no single expected value)."))
 
 
-def work_precision_section(out, build, fig_dir):
+# The DFG cylinders' work-precision files, work_precision_<family>_<coupling>.csv: family -> (title,
+# validation case, reference file, quantity); coupling -> (legend, marker and line, colour).
+_BODY_FAMILIES = OrderedDict([
+    ("dfg_2d1", ("DFG 2D-1 (Re 20): $c_D$", "dfg_cylinder_2d1", "dfg_2d1.csv", "drag_coefficient")),
+    ("dfg_2d2", ("DFG 2D-2 (Re 100): max $c_D$", "dfg_cylinder_2d2", "dfg_2d2.csv", "drag_coefficient_max")),
+])
+_COUPLINGS = OrderedDict([
+    ("uhlmann", ("uhlmann (papers')", "o-", "tab:orange")),
+    ("no_slip", ("no_slip (faces)", "s-", "tab:blue")),
+])
+
+
+def _body_case(name):
+    """(family, coupling) of a DFG cylinder's work-precision case name, else None."""
+    for family in _BODY_FAMILIES:
+        for coupling in _COUPLINGS:
+            if name == "%s_%s" % (family, coupling):
+                return family, coupling
+    return None
+
+
+def work_precision_section(out, build, fig_dir, source=None):
     out.append(r"\section{Work-precision: error against run time}")
     files = sorted(glob.glob(os.path.join(build, "bench", "work_precision_*.csv")))
     files = [f for f in files if not f.endswith("_slopes.csv")]
@@ -110,25 +133,101 @@ def work_precision_section(out, build, fig_dir):
     out.append(longtable(r"lp{2.4cm}rrrp{6.2cm}", ["case", "N", "slope", "finest error",
                                                    "its time [s]", "error measured"], table,
                          caption="Work-precision slopes."))
-    fig, axes = plt.subplots(1, len(cases), figsize=(3.0 * len(cases), 2.8), squeeze=False)
-    for ax, (name, pts, slope) in zip(axes[0], cases):
-        t, e = [p[0] for p in pts], [p[1] for p in pts]
-        ax.loglog(t, e, "o-", ms=4)
-        for p in pts:
-            ax.annotate(p[2], (p[0], p[1]), fontsize=6, xytext=(3, 3), textcoords="offset points")
-        lt, le = [math.log(v) for v in t], [math.log(v) for v in e]
-        mx, my = sum(lt) / len(lt), sum(le) / len(le)
-        ax.loglog(t, [math.exp(my + slope * (math.log(v) - mx)) for v in t], "k--", lw=0.8,
-                  label="slope %.2f" % slope)
-        ax.set_title(name)
+    fluid = [c for c in cases if _body_case(c[0]) is None]
+    if fluid:
+        fig, axes = plt.subplots(1, len(fluid), figsize=(3.0 * len(fluid), 2.8), squeeze=False)
+        for ax, (name, pts, slope) in zip(axes[0], fluid):
+            t, e = [p[0] for p in pts], [p[1] for p in pts]
+            ax.loglog(t, e, "o-", ms=4)
+            for p in pts:
+                ax.annotate(p[2], (p[0], p[1]), fontsize=6, xytext=(3, 3), textcoords="offset points")
+            lt, le = [math.log(v) for v in t], [math.log(v) for v in e]
+            mx, my = sum(lt) / len(lt), sum(le) / len(le)
+            ax.loglog(t, [math.exp(my + slope * (math.log(v) - mx)) for v in t], "k--", lw=0.8,
+                      label="slope %.2f" % slope)
+            ax.set_title(name)
+            ax.set_xlabel("wall time [s]")
+            ax.set_ylabel("error")
+            ax.legend()
+        path = os.path.join(fig_dir, "work_precision.pdf")
+        fig.tight_layout()
+        fig.savefig(path)
+        plt.close(fig)
+        out.append(figure(path, "Error against wall time; labels: grid N; dashed: least-squares fit."))
+    body_work_precision(out, build, fig_dir, source, [c for c in cases if _body_case(c[0]) is not None])
+
+
+def _reference_text(source, family):
+    """The published value and bounds of a DFG family's error, as its case's reference file states them."""
+    import report_cases
+    _, case, filename, quantity = _BODY_FAMILIES[family]
+    ref = report_cases.read_reference(source, case, filename) if source else {}
+    row = ref.get(quantity, {})
+    value, lower, upper = (_float(row.get(k)) for k in ("value", "lower", "upper"))
+    if family == "dfg_2d1":
+        return ("$|c_D/%s - 1|$ against the value of John \\& Matthies %s (the published bounds %s--%s of "
+                "Sch\\\"afer \\& Turek %s)" % (num(value, 6), report_cases.cite("john2001"), num(lower), num(upper),
+                                               report_cases.cite("schafer1996")))
+    return ("$|\\max c_D/%s - 1|$ over $t \\in [8, 12]$ against the midpoint of the published bounds %s--%s of "
+            "Sch\\\"afer \\& Turek %s" % (num(value), num(lower), num(upper), report_cases.cite("schafer1996")))
+
+
+def body_work_precision(out, build, fig_dir, source, cases):
+    """The DFG cylinders under both couplings (bench_work_precision's dfg_* cases): one panel per case,
+    one curve per coupling; the time to 3 % on 2D-2's max c_D as the bench wrote it."""
+    if not cases:
+        return
+    out.append(r"\subsection{Bodies: the DFG cylinders under both immersed-boundary couplings}")
+    out.append("The cylinder of the DFG benchmarks at $D/h = 10$--$40$ (labels; \\texttt{validation/dfg\\_cylinder\\_2d1} "
+               "and \\texttt{\\_2d2}, each scene's grid refined as its CMakeLists does) under the papers' direct forcing "
+               "(\\texttt{uhlmann}: 3 passes, markers retracted by $0.25h$, $\\nu\\Delta t/h^2 \\le 0.2$, as the 2D-1 scene "
+               "ships it) and under the no-slip coupling on the face velocities (\\texttt{no\\_slip}: slip tolerance "
+               "$10^{-4}$, no retraction, as the 2D-2 scene ships it; docs/method.md \\S3.7). 2D-1 runs to the steady "
+               "criterion under \\texttt{uhlmann} and to $t = 10$ under \\texttt{no\\_slip}, 2D-2 to $t = 12$.\n")
+    families = [f for f in _BODY_FAMILIES if any(_body_case(c[0])[0] == f for c in cases)]
+    fig, axes = plt.subplots(1, len(families), figsize=(3.6 * len(families), 3.0), squeeze=False)
+    for ax, family in zip(axes[0], families):
+        for name, pts, slope in sorted(cases, key=lambda c: list(_COUPLINGS).index(_body_case(c[0])[1])):
+            fam, coupling = _body_case(name)
+            if fam != family:
+                continue
+            legend, style, colour = _COUPLINGS[coupling]
+            ax.loglog([p[0] for p in pts], [p[1] for p in pts], style, color=colour, ms=4,
+                      label="%s, slope %.2f" % (legend, slope))
+            for p in pts:
+                ax.annotate(p[2], (p[0], p[1]), fontsize=6, xytext=(3, 3), textcoords="offset points")
+        if family == "dfg_2d2":
+            ax.axhline(0.03, color="0.4", ls=":", lw=0.8, label="3 %")
+        ax.set_title(_BODY_FAMILIES[family][0], fontsize=9)
         ax.set_xlabel("wall time [s]")
         ax.set_ylabel("error")
-        ax.legend()
-    path = os.path.join(fig_dir, "work_precision.pdf")
+        ax.legend(fontsize=6)
+    path = os.path.join(fig_dir, "work_precision_bodies.pdf")
     fig.tight_layout()
     fig.savefig(path)
     plt.close(fig)
-    out.append(figure(path, "Error against wall time; labels: grid N; dashed: least-squares fit."))
+    caption = "; ".join("%s: %s" % (_BODY_FAMILIES[f][0], _reference_text(source, f)) for f in families)
+    out.append(figure(path, "Error (its absolute value) against wall time of the DFG cylinders, both couplings "
+                      "(labels: $D/h$). " +
+                      caption + "; dotted: 3\\,\\%."))
+    rows = _rows(os.path.join(build, "bench", "time_to_target_dfg_2d2.csv"))
+    if rows:
+        get = {r["what"]: r for r in rows}
+        said = {"=": "", ">": "more than ", "<=": "at most "}
+
+        def seconds(r):
+            text = "%s%s\\,s" % (said.get(r["relation"], ""), num(r["seconds"], 3))
+            if r["relation"] == ">":
+                text += " (not reached: smallest error %s)" % num(r["smallest_error"], 3)
+            return text
+        if all(k in get for k in ("uhlmann", "no_slip", "ratio")):
+            ratio = get["ratio"]
+            ratio_text = ("undefined" if ratio["relation"] == "undefined" else
+                          "%s%s" % ({"=": "", ">": "$>$ ", "<=": "$\\le$ "}[ratio["relation"]], num(ratio["seconds"], 3)))
+            out.append("Wall time to 3\\,\\%% on DFG 2D-2's max $c_D$ (log-log interpolation between the two runs "
+                       "that bracket it, \\texttt{bench/time\\_to\\_target\\_dfg\\_2d2.csv}): \\texttt{uhlmann} %s, "
+                       "\\texttt{no\\_slip} %s; ratio %s.\n" % (seconds(get["uhlmann"]), seconds(get["no_slip"]),
+                                                               ratio_text))
 
 
 _SYMBOL = {"stable": ("o", "tab:green"), "unstable": ("^", "tab:orange"), "blow-up": ("x", "tab:red")}

@@ -2,7 +2,7 @@
 """ctest `report_latex_from_synthetic_outputs` and `report_pdf_from_synthetic_outputs`: builds the
 report from a tiny synthetic build directory (results.csv with a rerun duplicate and LaTeX special
 characters, one centre-line profile pair, one convergence table, a ctest log, a kernel-moment table,
-a work-precision table, a stability map (and a fluid one), a stage-cost table, and the solid tests'
+a work-precision table (and the DFG cylinders' with the time to 3 %), a stability map (and a fluid one), a stage-cost table, and the solid tests'
 energy, restitution and contact-history tables).
 Stage `tex` (always runs; the README's test command installs its Python modules): the data, the
 figures and the LaTeX source (build_report.py --tex-dir) -- every figure the source includes exists
@@ -100,6 +100,17 @@ with open(os.path.join(work, "bench", "work_precision_mms.csv"), "w") as f:
     f.write("N,h,steps,wall_seconds,error\n")
     for n in (16, 32, 64, 128):
         f.write("%d,%g,%d,%g,%g\n" % (n, 1 / n, 4 * n, 1e-6 * n ** 3, 1.0 / n ** 2))
+# The DFG cylinders under both couplings (one figure of their own) and the bench's time to 3 %.
+for family, coupling, errors in (("dfg_2d1", "uhlmann", (0.047, 0.027)), ("dfg_2d1", "no_slip", (0.08, 0.036)),
+                                 ("dfg_2d2", "uhlmann", (0.13, 0.123)), ("dfg_2d2", "no_slip", (0.08, 0.016))):
+    with open(os.path.join(work, "bench", "work_precision_%s_%s.csv" % (family, coupling)), "w") as f:
+        f.write("# bench_work_precision %s_%s (level quick): error = synthetic\nN,h,steps,wall_seconds,error\n"
+                % (family, coupling))
+        for n, e in zip((10, 20), errors):
+            f.write("%d,%g,%d,%g,%g\n" % (n, 0.1 / n, 100 * n, n ** 3 / 100.0, e))
+with open(os.path.join(work, "bench", "time_to_target_dfg_2d2.csv"), "w") as f:
+    f.write("# synthetic\nwhat,target,seconds,relation,smallest_error\nuhlmann,0.03,80,>,0.123\n"
+            "no_slip,0.03,6.5,=,0.016\nratio,0.03,12.3077,>,\n")
 with open(os.path.join(work, "bench", "stability_synthetic.csv"), "w") as f:
     f.write("# bench_stability synthetic: fluid dt [s] against spring_stiffness [-]\n")
     f.write("mode,dt,stiffness,substeps,outcome,max_area_change,max_speed_ratio,max_contact_pairs,message\n")
@@ -153,9 +164,11 @@ with open(os.path.join(res, "contact_history.csv"), "w") as f:
                 f.write('"%s",%g,%g,%g,%g\n' % (case, e, s, -1 + (1 + e) * s, 0.006 * s * (1 - s)))
 
 # Figures the report computes from the tables above: slope of n^-2 error against n^3 time is -2/3,
-# the stage-cost ratio, the solid section's headings and its restitution row.
+# the stage-cost ratio, the solid section's headings and its restitution row, the DFG cylinders'
+# subsection and the time-to-3 % ratio as the bench wrote it (a bound).
 expected = ("-0.667", "1.99", "0.012", "Stability map summary", "Kernel moments", "ratio 1.03",
-            "energy error over 1000 periods", "measured against target", "0.5015")
+            "energy error over 1000 periods", "measured against target", "0.5015",
+            "DFG cylinders under both immersed-boundary couplings", "ratio > 12.3", "more than 80")
 
 
 def fail(message):
