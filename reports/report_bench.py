@@ -216,7 +216,7 @@ def body_work_precision(out, build, fig_dir, source, cases):
         said = {"=": "", ">": "more than ", "<=": "at most "}
 
         def seconds(r):
-            text = "%s%s\\,s" % (said.get(r["relation"], ""), num(r["seconds"], 3))
+            text = "%s%s\\,s" % (said.get(r["relation"], ""), num(r["seconds"], 4))
             if r["relation"] == ">":
                 text += " (not reached: smallest error %s)" % num(r["smallest_error"], 3)
             return text
