@@ -36,10 +36,10 @@ namespace {
 // contact forces on the rim points and the buoyancy-corrected weight; one Newton-Euler step.
 void advance_rigid(const SolidStepInputs& in, double dt_sub, const BodyCoupling& c,
                    const std::vector<Vec2>& contact_force, RigidBody& rigid, MassSpringBody& body) {
-  const double buoyancy_factor = 1.0 - in.fluid_density / body.density;  // (rho_s - rho_f) / rho_s
+  const Vec2 weight = body.buoyant_weight(rigid.mass, in.fluid_density, in.gravity);
   Vec2 force = c.hydrodynamic_force;
   double torque = c.hydrodynamic_torque;
-  for (int d = 0; d < 2; ++d) force[d] += rigid.mass * buoyancy_factor * in.gravity[d];
+  for (int d = 0; d < 2; ++d) force[d] += weight[d];
   const Vec2& x_c = rigid.state.centre;
   for (int p = 0; p < body.n_surface; ++p) {
     const Vec2& f = contact_force[p];
@@ -60,15 +60,14 @@ namespace {
 // c.external_force.
 void external_force(const SolidStepInputs& in, const std::vector<Vec2>* contact, const MassSpringBody& body,
                     BodyCoupling& c) {
-  // M (1 - rho_f/rho_s) g: gravity on the body minus the buoyancy of the displaced fluid
-  // (no gravity in the fluid, METHOD.md §2.6); with variant K the body's full mass M stays
-  // on the left-hand side and the inner fluid's inertia arrives through F_int (§1.7).
-  const double buoyancy_factor = 1.0 - in.fluid_density / body.density;
-  for (int p = 0; p < body.n_points(); ++p)
+  // With variant K the body's full mass M stays on the left-hand side and the inner fluid's
+  // inertia arrives through F_int (§1.7).
+  for (int p = 0; p < body.n_points(); ++p) {
+    const Vec2 weight = body.buoyant_weight(body.mass[p], in.fluid_density, in.gravity);
     for (int d = 0; d < 2; ++d)
       c.external_force[p][d] = c.fluid_force[p][d] + c.inner_fluid_force[p][d] +
-                               (contact != nullptr ? (*contact)[p][d] : 0.0) +
-                               body.mass[p] * buoyancy_factor * in.gravity[d];
+                               (contact != nullptr ? (*contact)[p][d] : 0.0) + weight[d];
+  }
 }
 
 // One group of mass-spring bodies with explicit springs in n_sub outer sub-steps, the contacts in

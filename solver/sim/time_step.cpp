@@ -78,15 +78,13 @@ void project(Simulation& sim, double dt) {
 // whether any body responds.
 bool prepare_body_responses(Simulation& sim, double dt) {
   bool any = false;
-  const double density_f = sim.fluid_density();
-  const auto& gravity = sim.scene().fluid.gravity;
+  const Vec2& gravity = sim.scene().fluid.gravity;
   for (std::size_t b = 0; b < sim.bodies().size(); ++b) {
     BodyCoupling& c = sim.coupling()[b];
     if (c.body_velocity_change.empty()) continue;
     const MassSpringBody& body = sim.bodies()[b];
-    const double buoyancy_factor = 1.0 - density_f / body.density;
     for (int p = 0; p < body.n_points(); ++p)
-      for (int d = 0; d < 2; ++d) c.external_force[p][d] = body.mass[p] * buoyancy_factor * gravity[d];
+      c.external_force[p] = body.buoyant_weight(body.mass[p], sim.fluid_density(), gravity);
     sim.response_systems[b].velocity_change(body, dt, c.external_force);  // dU without the fluid
     for (std::size_t l = 0; l < c.marker.size(); ++l)
       for (int d = 0; d < 2; ++d) c.target_velocity[l][d] += c.external_force[l][d];

@@ -52,6 +52,13 @@ struct MassSpringBody {
   // inscribed rim polygon, 1.6 % smaller for N_l = 20) is the V_s of M = rho_s V_s / N.
   double solid_area() const;
   double total_mass() const;
+  // M (1 - rho_f / rho_s) g: the weight of mass M of this body less the buoyancy of the fluid it
+  // displaces (no gravity in the fluid, docs/method.md §2.6).
+  std::array<double, 2> buoyant_weight(double point_mass, double fluid_density,
+                                       const std::array<double, 2>& gravity) const {
+    const double factor = 1.0 - fluid_density / density;
+    return {point_mass * factor * gravity[0], point_mass * factor * gravity[1]};
+  }
 };
 
 // Wheel of docs/method.md §1.2 from a scene body: rim points at angles 2 pi l / N_l (counter-clockwise),
