@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 #include "app/compare.hpp"
 #include "app/info.hpp"
 #include "core/errors.hpp"
@@ -50,8 +52,21 @@ void print_fluid_guard(const ibms::Simulation& sim) {
                ibms::FluidGuard::speed_factor, guard.largest_energy_ratio);
 }
 
+// OpenMP reads its wait policy when its runtime loads, before main. A thread that spins while it
+// waits at a barrier takes the core from the thread it waits for when the machine is busy (two
+// threads ran the settling disk up to 20x slower per step than one with other jobs on the cores;
+// a bounded spin of 10000 still 6-10x), so `ibms run` without a policy in its environment starts
+// itself again once with OMP_WAIT_POLICY=passive. If that fails the run goes on with the runtime's
+// default. The ThreadGovernor (fluid/threads.hpp) then picks one thread where it is faster.
+void passive_openmp_wait(int argc, char** argv) {
+  if (!ibms::built_with_openmp() || argc < 2 || std::string(argv[1]) != "run") return;
+  if (std::getenv("OMP_WAIT_POLICY") != nullptr || std::getenv("GOMP_SPINCOUNT") != nullptr) return;
+  setenv("OMP_WAIT_POLICY", "passive", 1);
+  execv("/proc/self/exe", argv);
+}
+
 int run_command(const std::string& scene_path, const std::vector<std::string>& overrides,
-                const std::string& output, const std::string& restart, bool quiet) {
+                const std::string& output, const std::string& restart, bool quiet, bool govern_threads) {
   install_stop_handlers();  // first: a signal while the scene is read stops the run at step 0
   ibms::Scene scene = ibms::read_scene_file(scene_path, overrides);
   if (!output.empty()) scene.output.file = output;
@@ -66,7 +81,7 @@ int run_command(const std::string& scene_path, const std::vector<std::string>& o
   ibms::Simulation sim(scene);
   ibms::RunSummary summary;
   try {
-    summary = ibms::run_simulation(sim, {scene.output.file, quiet, restart, &stop_signal});
+    summary = ibms::run_simulation(sim, {scene.output.file, quiet, restart, &stop_signal, govern_threads});
   } catch (const ibms::BlowUpError&) {
     if (!quiet) print_fluid_guard(sim);
     throw;
@@ -81,6 +96,9 @@ int run_command(const std::string& scene_path, const std::vector<std::string>& o
   if (!quiet) {
     std::fprintf(stderr, "ibms: %ld steps to t = %.6g (%s) in %.2f s; output %s\n", summary.steps, summary.time,
                  summary.stop_reason.c_str(), summary.wall_seconds, summary.output_path.c_str());
+    if (govern_threads)
+      std::fprintf(stderr, "ibms: %d threads; %ld steps on one thread, where it was faster (busy machine)\n",
+                   ibms::available_cores(), summary.steps_at_one_thread);
     std::fprintf(stderr, "%s", ibms::stage_timing_table(sim, summary.wall_seconds).c_str());
   }
   return 0;
@@ -89,6 +107,7 @@ int run_command(const std::string& scene_path, const std::vector<std::string>& o
 }  // namespace
 
 int main(int argc, char** argv) {
+  passive_openmp_wait(argc, argv);
   CLI::App app{"ibms: 2D incompressible flow with immersed deformable, swelling bodies"};
   app.set_version_flag("--version", std::string("ibms ") + ibms::ibms_version() + " (commit " + ibms::ibms_git_commit() + ")");
   app.require_subcommand(1);
@@ -106,7 +125,8 @@ int main(int argc, char** argv) {
   run->add_flag("-q,--quiet", quiet, "no progress line");
   int threads = 0;
   run->add_option("--threads", threads,
-                  "threads of the fluid's loops and FFTs (default 0: OMP_NUM_THREADS if set, else one per core); "
+                  "threads of the fluid's loops and FFTs (default 0: OMP_NUM_THREADS if set, else one per core "
+                  "this process may use, with one thread for stretches of the run where it is faster); "
                   "the result does not depend on it");
 
   CLI::App* info = app.add_subcommand("info", "print the resolved scene, grid, stages and time-step limits");
@@ -128,10 +148,13 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
   try {
     if (run->parsed()) {
-      // Before the Simulation plans its FFTs; otherwise OpenMP's own default (OMP_NUM_THREADS, else
-      // one thread per core) holds for the loops and the FFTs alike (fluid/threads.hpp).
+      // Before the Simulation plans its FFTs. An explicit count (--threads, OMP_NUM_THREADS) holds
+      // for the whole run; the default, one thread per core this process may use, is governed
+      // (fluid/threads.hpp: ThreadGovernor).
+      const bool governed = threads <= 0 && std::getenv("OMP_NUM_THREADS") == nullptr;
       if (threads > 0) ibms::set_thread_count(threads);
-      return run_command(scene_path, overrides, output, restart, quiet);
+      if (governed) ibms::set_thread_count(ibms::available_cores());
+      return run_command(scene_path, overrides, output, restart, quiet, governed && ibms::thread_count() > 1);
     }
     if (compare->parsed())
       return ibms::compare_case(case_name, compare_files,

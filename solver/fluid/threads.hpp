@@ -12,8 +12,47 @@ namespace ibms {
 int set_thread_count(int n);
 int thread_count();
 bool built_with_openmp();
-// Makes FFTW plan with thread_count() threads from now on (called before planning).
+// Makes FFTW plan with thread_count() threads from now on (called before planning). A plan's jobs
+// run on as many threads as the loops have when it executes (at most its planned count), so
+// set_loop_threads governs the FFTs too, with the same result.
 void prepare_fft_threads();
+// The threads of the loops and of the FFTs' jobs from the next step on, without replanning.
+void set_loop_threads(int n);
+// The cores this process may run on (its CPU affinity), the default thread count.
+int available_cores();
+
+// Chooses, while a run goes, between its thread count and one thread by the wall time of its
+// steps. On a busy machine a thread of a parallel loop waits at every barrier for the one the
+// scheduler has put aside, and two threads can take several times as long per step as one
+// (docs/design.md §9). The governor starts on one thread (a probe of one thread costs an idle
+// machine less than a probe of all threads costs a busy one), measures the mean wall time of
+// `window` steps at the count in force and of `window` steps at the other count, and keeps the
+// other one only when it takes at most `gain` of the time. The next comparison comes after
+// `interval` steps: first_interval after a change; while the choice holds, twice the last interval
+// and at least what keeps the probes to `probe_share` of the time (a probe that took r times as
+// long per step needs window r / probe_share steps between probes), at most last_interval. The
+// result does not depend on the count (test_threads), so the choice changes the wall time only.
+class ThreadGovernor {
+ public:
+  explicit ThreadGovernor(int full_count);  // full_count <= 1: never changes anything
+  bool active() const { return full_ > 1; }
+  int count() const { return current_; }  // the count chosen (the first step's: 1 when active)
+  // The wall time of the step just taken; returns the thread count for the next step.
+  int after_step(double seconds);
+  long steps_at_one() const { return steps_at_one_; }
+
+  static constexpr int warmup = 2, window = 4, first_interval = 16, last_interval = 8192;
+  static constexpr double gain = 0.9, probe_share = 0.05;
+
+ private:
+  enum class Phase { warmup, hold, measure, probe };
+  int next_count(double seconds);
+  int full_, current_, running_;  // the run's count, the count chosen, the count of the last step
+  Phase phase_ = Phase::warmup;
+  int left_ = warmup, interval_ = first_interval;
+  double sum_ = 0.0, mean_current_ = 0.0;
+  long steps_at_one_ = 0;
+};
 
 }  // namespace ibms
 

@@ -12,6 +12,7 @@
 #include "core/errors.hpp"
 #include "fluid/boundary_conditions.hpp"
 #include "fluid/operators.hpp"
+#include "fluid/threads.hpp"
 #include "io/csv_table.hpp"
 #include "io/checkpoint.hpp"
 #include "io/output_file.hpp"
@@ -327,6 +328,9 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& options) {
   ControlVolumeMonitor control_volumes(sim);  // after the restore: it starts from the restored fields
   if (sim.has_bodies()) control_volumes.begin_step(sim);
   VelocityScan scan = scan_velocity(sim.grid(), f);
+  const int full_count = thread_count();
+  ThreadGovernor governor(options.govern_threads ? full_count : 1);
+  if (governor.active()) set_loop_threads(governor.count());
   summary.stop_reason = "end_time";
   const double time_tolerance = 1e-12 * std::max(1.0, std::abs(run.end_time));
   // The final step's series row is written even when output.series_every does not divide its step.
@@ -349,6 +353,7 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& options) {
         next_snapshot += scene.output.snapshot_interval;
       }
       const double dt = next_time_step(sim, scan);
+      const auto step_start = clock::now();
       advance_one_step(sim, dt);
       {
         auto t = sim.timers().time(Stage::diagnostics);
@@ -358,6 +363,10 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& options) {
           control_volumes.end_step(sim, dt);
           control_volumes.begin_step(sim);
         }
+      }
+      if (governor.active()) {
+        const int threads = governor.after_step(std::chrono::duration<double>(clock::now() - step_start).count());
+        if (threads != thread_count()) set_loop_threads(threads);
       }
       const ProjectionStats& ps = sim.last_projection;
       const double steady_residual = ps.max_velocity > 0 ? ps.max_velocity_change / (dt * ps.max_velocity) : 0.0;
@@ -389,6 +398,7 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& options) {
       }
     }
   } catch (const BlowUpError&) {
+    set_loop_threads(full_count);
     write_body_table(summary.output_path, sim, body_table);
     write_timing(out, sim, std::chrono::duration<double>(clock::now() - start).count());
     out.flush();  // everything written so far stays readable
@@ -407,6 +417,8 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& options) {
   summary.steps = f.step;
   summary.time = f.time;
   summary.wall_seconds = std::chrono::duration<double>(clock::now() - start).count();
+  summary.steps_at_one_thread = governor.steps_at_one();
+  set_loop_threads(full_count);
   return summary;
 }
 

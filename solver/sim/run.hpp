@@ -17,6 +17,7 @@ struct RunOptions {
   bool quiet = false;        // no progress line
   std::string restart_file;  // continue from this file's /checkpoint; empty: start at t = 0
   const volatile std::sig_atomic_t* stop_requested = nullptr;  // non-zero: checkpoint and stop
+  bool govern_threads = false;  // the thread count is the default: a ThreadGovernor may use one thread
 };
 
 struct RunSummary {
@@ -26,6 +27,7 @@ struct RunSummary {
   std::string stop_reason;   // "end_time", "max_steps", "steady state", "interrupted by signal N"
   bool interrupted = false;  // stopped because *stop_requested was set (checkpoint written)
   double wall_seconds = 0.0;
+  long steps_at_one_thread = 0;  // with govern_threads: the steps the governor ran on one thread
   std::string output_path;
 };
 
