@@ -52,16 +52,17 @@ void print_fluid_guard(const ibms::Simulation& sim) {
                ibms::FluidGuard::speed_factor, guard.largest_energy_ratio);
 }
 
-// OpenMP reads its wait policy when its runtime loads, before main. A thread that spins while it
-// waits at a barrier takes the core from the thread it waits for when the machine is busy (two
-// threads ran the settling disk up to 20x slower per step than one with other jobs on the cores;
-// a bounded spin of 10000 still 6-10x), so `ibms run` without a policy in its environment starts
-// itself again once with OMP_WAIT_POLICY=passive. If that fails the run goes on with the runtime's
-// default. The ThreadGovernor (fluid/threads.hpp) then picks one thread where it is faster.
-void passive_openmp_wait(int argc, char** argv) {
+// OpenMP reads its wait policy when its runtime loads, before main. libgomp's default waiter spins
+// for about 300000 polls at every barrier: when the machine is busy it burns the core that the
+// thread it waits for needs, and two threads ran a step up to ~80x slower than one
+// (bench/bench_threads.sh). `ibms run` without a policy in its environment therefore starts itself
+// again once with GOMP_SPINCOUNT=10000, which keeps the idle speed of the default spin and bounds the
+// time a waiter burns; the ThreadGovernor (fluid/threads.hpp) then keeps the default count off a
+// busy machine. If the new start fails the run goes on with the runtime's default.
+void bounded_openmp_wait(int argc, char** argv) {
   if (!ibms::built_with_openmp() || argc < 2 || std::string(argv[1]) != "run") return;
   if (std::getenv("OMP_WAIT_POLICY") != nullptr || std::getenv("GOMP_SPINCOUNT") != nullptr) return;
-  setenv("OMP_WAIT_POLICY", "passive", 1);
+  setenv("GOMP_SPINCOUNT", "10000", 1);
   execv("/proc/self/exe", argv);
 }
 
@@ -107,7 +108,7 @@ int run_command(const std::string& scene_path, const std::vector<std::string>& o
 }  // namespace
 
 int main(int argc, char** argv) {
-  passive_openmp_wait(argc, argv);
+  bounded_openmp_wait(argc, argv);
   CLI::App app{"ibms: 2D incompressible flow with immersed deformable, swelling bodies"};
   app.set_version_flag("--version", std::string("ibms ") + ibms::ibms_version() + " (commit " + ibms::ibms_git_commit() + ")");
   app.require_subcommand(1);
@@ -153,7 +154,13 @@ int main(int argc, char** argv) {
       // (fluid/threads.hpp: ThreadGovernor).
       const bool governed = threads <= 0 && std::getenv("OMP_NUM_THREADS") == nullptr;
       if (threads > 0) ibms::set_thread_count(threads);
-      if (governed) ibms::set_thread_count(ibms::available_cores());
+      if (governed) {
+        ibms::set_thread_count(ibms::available_cores());
+        // The FFT plans split their work for all threads but are timed on one: timed on several, every
+        // trial transform waits at barriers, which a busy machine stretches, and the plans timed on
+        // one run as fast (bench/README.md, "Threads").
+        ibms::set_loop_threads(1);
+      }
       return run_command(scene_path, overrides, output, restart, quiet, governed && ibms::thread_count() > 1);
     }
     if (compare->parsed())

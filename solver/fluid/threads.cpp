@@ -31,18 +31,20 @@ bool fftw_threads_ready() {
   }();
   return ready;
 }
+
+int run_threads = 0;  // the count set by set_thread_count; 0: OpenMP's default
 }  // namespace
 
 void set_loop_threads(int n) { omp_set_num_threads(std::max(1, n)); }
 
 int set_thread_count(int n) {
-  const int count = n > 0 ? n : available_cores();
-  omp_set_num_threads(count);
-  if (fftw_threads_ready()) fftw_plan_with_nthreads(count);
-  return count;
+  run_threads = n > 0 ? n : available_cores();
+  omp_set_num_threads(run_threads);
+  if (fftw_threads_ready()) fftw_plan_with_nthreads(run_threads);
+  return run_threads;
 }
 
-int thread_count() { return omp_get_max_threads(); }
+int thread_count() { return run_threads > 0 ? run_threads : omp_get_max_threads(); }
 void prepare_fft_threads() {
   if (fftw_threads_ready()) fftw_plan_with_nthreads(thread_count());
 }
@@ -74,9 +76,15 @@ int ThreadGovernor::next_count(double seconds) {
   if (running_ == 1) ++steps_at_one_;
   const int other = current_ == 1 ? full_ : 1;
   switch (phase_) {
-    case Phase::warmup:  // the first steps plan and fill caches
     case Phase::hold:
+      // A load that arrives while the run holds its count shows as a run of slow steps: measure
+      // again at once instead of waiting out the interval.
+      slow_steps_ = seconds > surge * mean_current_ ? slow_steps_ + 1 : 0;
+      if (slow_steps_ >= surge_steps) left_ = 1;
+      [[fallthrough]];
+    case Phase::warmup:  // the first steps plan and fill caches
       if (--left_ > 0) break;
+      slow_steps_ = 0;
       phase_ = Phase::measure;
       left_ = window;
       sum_ = 0.0;
@@ -95,6 +103,7 @@ int ThreadGovernor::next_count(double seconds) {
       const double ratio = sum_ / window / mean_current_;  // the other count's time per step over this one's
       if (ratio < gain) {
         current_ = other;
+        mean_current_ *= ratio;
         interval_ = first_interval;
       } else {
         const double paid_for = window * ratio / probe_share;

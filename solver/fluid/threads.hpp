@@ -31,7 +31,9 @@ int available_cores();
 // `interval` steps: first_interval after a change; while the choice holds, twice the last interval
 // and at least what keeps the probes to `probe_share` of the time (a probe that took r times as
 // long per step needs window r / probe_share steps between probes), at most last_interval. The
-// result does not depend on the count (test_threads), so the choice changes the wall time only.
+// A run of `surge_steps` steps each more than `surge` times the mean last measured (a load that
+// arrived) starts the next comparison at once. The result does not depend on the count
+// (test_threads), so the choice changes the wall time only.
 class ThreadGovernor {
  public:
   explicit ThreadGovernor(int full_count);  // full_count <= 1: never changes anything
@@ -42,7 +44,8 @@ class ThreadGovernor {
   long steps_at_one() const { return steps_at_one_; }
 
   static constexpr int warmup = 2, window = 4, first_interval = 16, last_interval = 8192;
-  static constexpr double gain = 0.9, probe_share = 0.05;
+  static constexpr int surge_steps = 3;
+  static constexpr double gain = 0.9, probe_share = 0.05, surge = 2.0;
 
  private:
   enum class Phase { warmup, hold, measure, probe };
@@ -51,6 +54,7 @@ class ThreadGovernor {
   Phase phase_ = Phase::warmup;
   int left_ = warmup, interval_ = first_interval;
   double sum_ = 0.0, mean_current_ = 0.0;
+  int slow_steps_ = 0;
   long steps_at_one_ = 0;
 };
 

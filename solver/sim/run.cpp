@@ -330,7 +330,7 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& options) {
   VelocityScan scan = scan_velocity(sim.grid(), f);
   const int full_count = thread_count();
   ThreadGovernor governor(options.govern_threads ? full_count : 1);
-  if (governor.active()) set_loop_threads(governor.count());
+  set_loop_threads(governor.active() ? governor.count() : full_count);
   summary.stop_reason = "end_time";
   const double time_tolerance = 1e-12 * std::max(1.0, std::abs(run.end_time));
   // The final step's series row is written even when output.series_every does not divide its step.
@@ -365,8 +365,7 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& options) {
         }
       }
       if (governor.active()) {
-        const int threads = governor.after_step(std::chrono::duration<double>(clock::now() - step_start).count());
-        if (threads != thread_count()) set_loop_threads(threads);
+        set_loop_threads(governor.after_step(std::chrono::duration<double>(clock::now() - step_start).count()));
       }
       const ProjectionStats& ps = sim.last_projection;
       const double steady_residual = ps.max_velocity > 0 ? ps.max_velocity_change / (dt * ps.max_velocity) : 0.0;

@@ -152,4 +152,13 @@ BOOST_AUTO_TEST_CASE(the_governor_keeps_the_faster_count) {
   const std::size_t back = std::find(relieved.begin() + 3000, relieved.end(), 2) - relieved.begin();
   BOOST_TEST(back <= 3000u + ThreadGovernor::last_interval + 2u * ThreadGovernor::window);
   BOOST_TEST(count_of(relieved, 1, back + 2 * ThreadGovernor::window) <= 100);
+  // A load arrives at step 3000 of an idle run and makes two threads 10 times slower: the run
+  // leaves them after the slow steps that reveal it and one comparison, not after the interval.
+  const std::vector<int> loaded = governed_counts(6000, 1.0, 1.6, 3000, 10.0, 1.6);
+  BOOST_TEST(loaded[2999] == 2);
+  const std::size_t left = std::find(loaded.begin() + 3000, loaded.end(), 1) - loaded.begin();
+  BOOST_TEST_MESSAGE("two threads left " << left - 3000 << " steps after the load arrived");
+  BOOST_TEST(left <= 3000u + ThreadGovernor::surge_steps + ThreadGovernor::window);
+  BOOST_TEST(loaded.back() == 1);
+  BOOST_TEST(count_of(loaded, 2, 3000 + ThreadGovernor::surge_steps + 2 * ThreadGovernor::window) <= 100);
 }
