@@ -1,4 +1,4 @@
-// Body benchmarks (issue 3 item 6, issue 4 item 4), run on demand, printing figures: the cost of
+// Body benchmarks, run on demand, printing figures: the cost of
 // each pipeline stage per fluid step from the solver's own stage timers, for
 //   - the settling disk (validation/settling_disk) at D/h = 12.5, 18.75, 25 (and more on request),
 //     first 0.3 s of settling (the run's own adaptive time step);
