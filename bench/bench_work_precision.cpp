@@ -166,7 +166,7 @@ struct Coupling {
   std::vector<std::string> overrides;
 };
 
-// uhlmann: the papers' direct forcing as validation/dfg_cylinder_2d1/scene.toml ships it: 3 passes,
+// uhlmann: the papers' direct forcing as the 2D-1 case calibrated it (its README): 3 passes,
 // markers retracted by 0.25 h (the Couette calibration), nu dt / h^2 <= 0.2 (its slip grows with
 // that number); constrained_velocity is not read under it and is set to its default.
 const Coupling uhlmann_coupling{
@@ -174,7 +174,8 @@ const Coupling uhlmann_coupling{
                 "ibm.marker_retraction=0.25", "run.max_viscous_number=0.2"}};
 // no_slip: the forces as the Lagrange multipliers of no-slip on the face velocities, as
 // validation/dfg_cylinder_2d2/scene.toml ships it: slip tolerance 1e-4, no retraction, no cap on
-// nu dt / h^2, one forcing pass for the first step's guess.
+// nu dt / h^2, one forcing pass for the first step's guess (the 2D-1 scene ships it with 0.25 h
+// retraction; this bench keeps one set of keys for both cases).
 const Coupling no_slip_coupling{
     "no_slip", {"ibm.coupling=\"no_slip\"", "ibm.constrained_velocity=\"faces\"", "ibm.slip_tolerance=1e-4",
                 "ibm.forcing_passes=1", "ibm.marker_retraction=0", "run.max_viscous_number=0"}};
@@ -187,14 +188,14 @@ std::vector<std::string> dfg_grid(int n) {
 }
 
 // DFG 2D-1 (Re 20) at D/h = n under `coupling`; error |final c_D / John & Matthies (2001) - 1|.
-// uhlmann stops at the scene's steady criterion. no_slip runs to t = 10 without it: its marker
-// system's slip floor (2-4e-5 U, docs/method.md §3.7) keeps the steady residual above the criterion,
-// and c_D at t = 10 is within 5.4e-5 (D/h = 10) and 3.6e-6 (D/h = 20) of its value at t = 15.
+// uhlmann stops at the steady criterion 1e-3 (the papers' set-up of the case). no_slip runs to
+// t = 10 without it, as the scene ships: its marker system's slip floor (2-4e-5 U, docs/method.md
+// §3.7) keeps the steady residual above the criterion, and c_D at t = 10 is within 5.4e-5 (D/h = 10) and 3.6e-6 (D/h = 20) of its value at t = 15.
 Point run_dfg_2d1(const Coupling& coupling, int n, const std::string& work_dir) {
   const std::string dir = source_dir + "/validation/dfg_cylinder_2d1";
   std::vector<std::string> overrides = dfg_grid(n);
   overrides.insert(overrides.end(), coupling.overrides.begin(), coupling.overrides.end());
-  if (coupling.name == "no_slip") overrides.insert(overrides.end(), {"run.end_time=10", "run.steady_tolerance=0"});
+  if (coupling.name == "uhlmann") overrides.insert(overrides.end(), {"run.end_time=40", "run.steady_tolerance=1e-3"});
   const Scene scene = read_scene_file(dir + "/scene.toml", overrides);
   const std::string stem = work_dir + "/dfg_2d1_" + coupling.name + "_" + std::to_string(n);
   const auto start = clock_type::now();

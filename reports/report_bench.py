@@ -180,9 +180,10 @@ def body_work_precision(out, build, fig_dir, source, cases):
     out.append(r"\subsection{Bodies: the DFG cylinders under both immersed-boundary couplings}")
     out.append("The cylinder of the DFG benchmarks at $D/h = 10$--$40$ (labels; \\texttt{validation/dfg\\_cylinder\\_2d1} "
                "and \\texttt{\\_2d2}, each scene's grid refined as its CMakeLists does) under the papers' direct forcing "
-               "(\\texttt{uhlmann}: 3 passes, markers retracted by $0.25h$, $\\nu\\Delta t/h^2 \\le 0.2$, as the 2D-1 scene "
-               "ships it) and under the no-slip coupling on the face velocities (\\texttt{no\\_slip}: slip tolerance "
-               "$10^{-4}$, no retraction, as the 2D-2 scene ships it; docs/method.md \\S3.7). 2D-1 runs to the steady "
+               "(\\texttt{uhlmann}: 3 passes, markers retracted by $0.25h$, $\\nu\\Delta t/h^2 \\le 0.2$, as the 2D-1 "
+               "case calibrated it) and under the no-slip coupling on the face velocities (\\texttt{no\\_slip}: slip tolerance "
+               "$10^{-4}$, no retraction, as the 2D-2 scene ships it; the 2D-1 scene ships it with the markers retracted "
+               "by $0.25h$, its README; docs/method.md \\S3.7). 2D-1 runs to the steady "
                "criterion under \\texttt{uhlmann} and to $t = 10$ under \\texttt{no\\_slip}, 2D-2 to $t = 12$.\n")
     families = [f for f in _BODY_FAMILIES if any(_body_case(c[0])[0] == f for c in cases)]
     fig, axes = plt.subplots(1, len(families), figsize=(3.6 * len(families), 3.0), squeeze=False)

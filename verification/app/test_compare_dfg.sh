@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Claims (docs/compare.md, DFG cylinders): `ibms compare dfg_cylinder_2d1` gates c_D against the
 # published 5.57954 within 1 % (one 2 % off fails, exit 1) and against ibms's own reference only
-# where that lies inside the published interval (ibms's 5.658 does not: shown, not gated), and
+# where that lies inside the published interval (ibms's 5.6006 does not: shown, not gated), and
 # `ibms compare dfg_cylinder_2d2` recovers the Strouhal number and max c_D of a
 # synthetic force history (c_L = sin(2 pi f t), St = f D / U = 0.3 exactly; max c_D = 3.23 + 0.01)
 # with the same figures the case check uses, passes it against the published values and against
@@ -18,12 +18,12 @@ cd "$work"
 failures=0
 run() { "$ibms" compare "$@" --validation-dir "$validation"; }
 
-# 2D-1: ibms's reference is 5.658 (+1.41 % from the published value): 5.62 is within 1 % of both.
+# 2D-1: ibms's reference is 5.6006 (+0.38 % from the published value): 5.62 is within 1 % of both.
 printf '# synthetic\nc_d,c_l,delta_p\n5.62,0.0106,0.1175\n' > within.csv
 expect_exit "2D-1 c_D 5.62 passes" 0 "dfg_cylinder_2d1: pass" run dfg_cylinder_2d1 within.csv
 printf 'drag_coefficient,lift_coefficient\n5.80,0.0106\n' > off.csv
 expect_exit "2D-1 c_D 5.80 fails against the published value" 1 "John & Matthies.*FAIL" run dfg_cylinder_2d1 off.csv
-expect_exit "2D-1 ibms's own reference outside the published interval is not gated" 1 \
+expect_exit "2D-1 ibms's own reference outside the published interval is not gated" 0 \
   "not gated: ibms's own c_D 5.6[0-9]* lies outside the published \[5.57, 5.59\]" \
   run dfg_cylinder_2d1 "$validation/dfg_cylinder_2d1/reference/ibms_dfg_2d1.csv"
 printf 'c_d,c_l,cv_drag_coefficient\n5.62,0.0106,5.6762\n' > cv.csv
