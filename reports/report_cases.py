@@ -324,8 +324,9 @@ CAUSES = [
      "(\\texttt{ibm.coupling = \"no\\_slip\"}, \\texttt{constrained\\_velocity = \"faces\"}): max $c_D$ $-1.6$\\,\\% "
      "at $D/h=20$ and $+0.17$\\,\\% at 40, moving by $-0.014$\\,\\% from CFL 0.5 to 0.125 (README)."),
     ("dfg_cylinder_2d1", r"^drag_coefficient at",
-     "First-order convergence of the diffuse interface: $c_D$ reaches 1\\,\\% of the reference only on finer grids "
-     "(the `slow' label's finest); keeping $\\nu\\Delta t/h^2$ fixed makes the cost grow like $(D/h)^4$ (README)."),
+     "The diffuse interface's body acts about $0.285h$ larger than its rim; the shipped scene retracts the markers "
+     "by $0.25h$ under the no-slip coupling ($+0.79$, $+0.42$, $+0.38$\\,\\% at $D/h = 20, 30, 40$); the papers' "
+     "coupling converges at first order and reaches 1\\,\\% only from $D/h = 60$ (README)."),
     ("dfg_cylinder_2d", r"lift_coefficient",
      "$c_L$ is a small asymmetry of the flow that the smeared interface does not resolve at these grids "
      "(README)."),
@@ -339,8 +340,9 @@ CAUSES = [
      "method: the tumbling time moves by about 0.3\\,s per factor 3 of the offset; the reference states none "
      "(README)."),
     ("settling_disk", r"Richardson|observed order",
-     "The extrapolated speed creeps up as finer grids enter; why it lies above the reference is not "
-     "established (README: candidates marker retraction, forcing passes, the cited value itself)."),
+     "Three set-ups (the papers' coupling with the $\\nu\\Delta t/h^2$ cap, the face constraint with and without "
+     "$0.25h$ retraction) extrapolate to 5.588--5.593\\,cm/s from both sides, so it is not the coupling; "
+     "Glowinski et al.'s own cited fine-mesh values extrapolate to 5.578\\,cm/s (README)."),
 ]
 
 # Lines compared with ibms itself inside a case compared with the literature.
