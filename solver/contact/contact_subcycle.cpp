@@ -14,24 +14,68 @@ namespace {
 
 constexpr double skin_travel_factor = 1.5;   // s = 2 * 1.5 * V * (time left): candidates may speed up
 constexpr double skin_floor_fraction = 0.1;  // s >= 0.1 r_cds: bodies at rest do not rebuild every step
+constexpr double near_margin = 1e-9;         // relative to r_a + r_b: round-off in the gap and the reach
+
+// The candidates' kick and drift (ContactSubcycler::kick_and_drift) on arrays that do not overlap,
+// without a running sum, so that the compiler puts it on vector registers; moved: the squared
+// displacement since the list was built.
+void kick_and_drift_candidates(int n, double dt, double drift_time, double kick_time, double* __restrict x,
+                               double* __restrict y, double* __restrict u, double* __restrict v,
+                               double* __restrict moved, const double* __restrict force_x,
+                               const double* __restrict force_y, const double* __restrict inverse_mass,
+                               const double* __restrict slow_x, const double* __restrict slow_y,
+                               const double* __restrict rate_x, const double* __restrict rate_y,
+                               const double* __restrict anchor_x, const double* __restrict anchor_y) {
+  for (int i = 0; i < n; ++i) {
+    const double f_x = force_x[i] * inverse_mass[i], f_y = force_y[i] * inverse_mass[i];
+    x[i] += dt * u[i] + dt * dt * (0.5 * slow_x[i] + rate_x[i] * drift_time + f_x);
+    y[i] += dt * v[i] + dt * dt * (0.5 * slow_y[i] + rate_y[i] * drift_time + f_y);
+    u[i] += dt * (slow_x[i] + rate_x[i] * kick_time + f_x);
+    v[i] += dt * (slow_y[i] + rate_y[i] * kick_time + f_y);
+    const double dx = x[i] - anchor_x[i], dy = y[i] - anchor_y[i];
+    moved[i] = dx*dx + dy*dy;
+  }
+}
 
 }  // namespace
+
+void ContactSubcycler::Candidates::clear() {
+  for (std::vector<int>* a : {&body, &point}) a->clear();
+  for (std::vector<double>* a : {&inverse_mass, &x, &y, &u, &v, &force_x, &force_y, &anchor_x, &anchor_y, &slow_x,
+                                 &slow_y, &rate_x, &rate_y})
+    a->clear();
+}
+
+void ContactSubcycler::Candidates::reserve(std::size_t n) {
+  for (std::vector<int>* a : {&body, &point}) a->reserve(n);
+  for (std::vector<double>* a : {&inverse_mass, &x, &y, &u, &v, &force_x, &force_y, &anchor_x, &anchor_y, &slow_x,
+                                 &slow_y, &rate_x, &rate_y})
+    a->reserve(n);
+}
 
 int ContactSubcycler::candidate(int body, int point, const std::vector<MassSpringBody>& bodies) {
   int& slot = slot_[offset_[body] + point];
   if (slot >= 0) return slot;
-  slot = static_cast<int>(points_.size());
-  Point p;
-  p.body = body;
-  p.point = point;
-  p.inverse_mass = 1.0 / bodies[body].mass[point];
-  p.position = p.anchor = bodies[body].position[point];
-  p.velocity = bodies[body].velocity[point];
-  for (int c = 0; c < 2; ++c) {
-    p.slow_acceleration[c] = slow_[body][point][c] * p.inverse_mass;
-    p.slow_rate[c] = rate_[body][point][c] * p.inverse_mass;
-  }
-  points_.push_back(p);
+  slot = points_.size();
+  Candidates& p = points_;
+  const double inverse_mass = 1.0 / bodies[body].mass[point];
+  const Vec& x = bodies[body].position[point];
+  const Vec& u = bodies[body].velocity[point];
+  p.body.push_back(body);
+  p.point.push_back(point);
+  p.inverse_mass.push_back(inverse_mass);
+  p.x.push_back(x[0]);
+  p.y.push_back(x[1]);
+  p.anchor_x.push_back(x[0]);
+  p.anchor_y.push_back(x[1]);
+  p.u.push_back(u[0]);
+  p.v.push_back(u[1]);
+  p.force_x.push_back(0.0);
+  p.force_y.push_back(0.0);
+  p.slow_x.push_back(slow_[body][point][0] * inverse_mass);
+  p.slow_y.push_back(slow_[body][point][1] * inverse_mass);
+  p.rate_x.push_back(rate_[body][point][0] * inverse_mass);
+  p.rate_y.push_back(rate_[body][point][1] * inverse_mass);
   return slot;
 }
 
@@ -46,20 +90,30 @@ int ContactSubcycler::share_of(int body_a, int partner) {
 }
 
 void ContactSubcycler::release_list(std::vector<MassSpringBody>& bodies) {
-  for (const Point& p : points_) {
-    bodies[p.body].position[p.point] = p.position;
-    bodies[p.body].velocity[p.point] = p.velocity;
-    slot_[offset_[p.body] + p.point] = -1;
+  for (int i = 0; i < points_.size(); ++i) {
+    const int body = points_.body[i], point = points_.point[i];
+    bodies[body].position[point] = {points_.x[i], points_.y[i]};
+    bodies[body].velocity[point] = {points_.u[i], points_.v[i]};
+    slot_[offset_[body] + point] = -1;
   }
   points_.clear();
   pairs_.clear();
+  gap_.clear();
+  near_.clear();
   walls_.clear();
   shares_.clear();
+  forced_.clear();
+  touched_.clear();
 }
 
 void ContactSubcycler::build_list(const ContactModel& model, const WallBox& box, double skin,
                                   const BodyMask& members, const std::vector<MassSpringBody>& bodies, double time) {
   time_built_ = time;
+  gap_.clear();
+  near_.clear();
+  near_reach_ = -1.0;  // the pairs near contact are picked at the first inner step
+  near_reach_floor_ = skin / 16.0;
+  radius_rate_max_ = 0.0;
   const double half_skin = 0.5 * skin;
   const double zeta_factor = 2.0 * damping_ratio_from_restitution(model.restitution_coefficient);
   // Pairs of different bodies closer than the skin: the pair search on CDS grown by s / 2.
@@ -77,8 +131,8 @@ void ContactSubcycler::build_list(const ContactModel& model, const WallBox& box,
       Pair pair;
       pair.a = candidate(body_s, spheres_.point[s], bodies);
       pair.b = candidate(body_t, spheres_.point[t], bodies);
-      const Vec& xa = points_[pair.a].position;
-      const Vec& xb = points_[pair.b].position;
+      const Vec xa{points_.x[pair.a], points_.y[pair.a]};
+      const Vec xb{points_.x[pair.b], points_.y[pair.b]};
       const Vec d = separation(xa, xb, box);
       pair.shift = {d[0] - (xb[0] - xa[0]), d[1] - (xb[1] - xa[1])};
       pair.radius_sum = spheres_.radius[s] + spheres_.radius[t] - skin;
@@ -88,6 +142,8 @@ void ContactSubcycler::build_list(const ContactModel& model, const WallBox& box,
       pair.damping = zeta_factor * std::sqrt(m_eff * pair.stiffness);
       pair.share = share_of(std::min(body_s, body_t), std::max(body_s, body_t));
       pairs_.push_back(pair);
+      gap_.push_back(std::sqrt(d[0]*d[0] + d[1]*d[1]) - pair.radius_sum);
+      radius_rate_max_ = std::max(radius_rate_max_, std::abs(pair.radius_rate));
     }
   }
   // Walls: CDS closer to a wall than s / 2.
@@ -123,118 +179,159 @@ void ContactSubcycler::build_list(const ContactModel& model, const WallBox& box,
   }
 }
 
-// DEM forces on the candidates at their current state (contact_forces.cpp, restricted to the list).
-void ContactSubcycler::contact_forces(const ContactModel& model, double time, ContactStats& stats) {
+// DEM forces on the candidates at their current state (contact_forces.cpp, restricted to the list),
+// added to their force arrays (zero on entry: kick_and_drift clears them). The shares' sums are
+// zero on entry too: only the shares with an active pair are visited and cleared again.
+void ContactSubcycler::contact_forces(const ContactModel& model, double time, double moved, ContactStats& stats) {
   const double since_built = time - time_built_;
-  for (Point& p : points_) p.force = {0.0, 0.0};
-  for (Share& s : shares_) {
-    s.normal_sum = {0.0, 0.0};
-    s.n_active = 0;
+  // A pair of the list can touch only once its gap at the list's build has closed: by the two
+  // points' displacements since (each at most `moved`) and the growth of the radii. The pairs whose
+  // gap exceeds twice the needed reach are left out until the reach passes that bound.
+  const double reach = 2.0 * moved + radius_rate_max_ * since_built;
+  if (!(reach < near_reach_)) {
+    near_reach_ = std::max(2.0 * reach, near_reach_floor_);
+    near_.clear();
+    for (int i = 0; i < static_cast<int>(pairs_.size()); ++i)
+      if (!(gap_[i] > near_reach_ + near_margin * pairs_[i].radius_sum)) near_.push_back(i);
+    pair_checks_ += static_cast<long>(pairs_.size());
   }
+  const double* const x = points_.x.data();
+  const double* const y = points_.y.data();
   active_.clear();
-  for (int i = 0; i < static_cast<int>(pairs_.size()); ++i) {
+  for (const int i : near_) {
     const Pair& pair = pairs_[i];
-    const Vec& xa = points_[pair.a].position;
-    const Vec& xb = points_[pair.b].position;
-    const double dx = xb[0] - xa[0] + pair.shift[0], dy = xb[1] - xa[1] + pair.shift[1];
+    const double dx = x[pair.b] - x[pair.a] + pair.shift[0], dy = y[pair.b] - y[pair.a] + pair.shift[1];
     const double distance_squared = dx*dx + dy*dy;
     const double radius_sum = pair.radius_sum + since_built * pair.radius_rate;
     if (!(distance_squared < radius_sum * radius_sum)) continue;
     const double distance = std::sqrt(distance_squared);
     if (!(distance > 0.0)) throw std::runtime_error("contact: two CDS centres coincide");
     Active a;
-    a.index = i;
+    a.a = pair.a;
+    a.b = pair.b;
+    a.share = pair.share;
+    a.stiffness = pair.stiffness;
+    a.damping = pair.damping;
     a.overlap = radius_sum - distance;
     a.normal = {dx / distance, dy / distance};
     active_.push_back(a);
     Share& s = shares_[pair.share];
+    if (s.n_active == 0) touched_.push_back(pair.share);
     s.normal_sum[0] += a.normal[0];
     s.normal_sum[1] += a.normal[1];
     ++s.n_active;
   }
-  int n_pairs = static_cast<int>(active_.size());
-  for (int i = 0; i < static_cast<int>(walls_.size()); ++i) {
-    const Wall& wall = walls_[i];
-    const double x = points_[wall.a].position[wall.axis];
-    const double distance = wall.side == 0 ? x - wall.coordinate : wall.coordinate - x;
+  const int n_pairs = static_cast<int>(active_.size());
+  for (const Wall& wall : walls_) {
+    const double position = wall.axis == 0 ? x[wall.a] : y[wall.a];
+    const double distance = wall.side == 0 ? position - wall.coordinate : wall.coordinate - position;
     const double overlap = wall.radius + since_built * wall.radius_rate - distance;
     if (!(overlap > 0.0)) continue;
     Active a;
-    a.index = i;
-    a.wall = true;
+    a.a = wall.a;
+    a.share = wall.share;
+    a.stiffness = wall.stiffness;
+    a.damping = wall.damping;
     a.overlap = overlap;
     a.normal[wall.axis] = wall.side == 0 ? -1.0 : 1.0;
     active_.push_back(a);
     Share& s = shares_[wall.share];
+    if (s.n_active == 0) touched_.push_back(wall.share);
     s.normal_sum[0] += a.normal[0];
     s.normal_sum[1] += a.normal[1];
     ++s.n_active;
   }
   stats.n_active_pairs = std::max(stats.n_active_pairs, n_pairs);
   stats.n_wall_contacts = std::max(stats.n_wall_contacts, static_cast<int>(active_.size()) - n_pairs);
-  pair_checks_ += static_cast<long>(pairs_.size());
+  pair_checks_ += static_cast<long>(near_.size());
   if (active_.empty()) return;
   // S of each share, as count_parallel_pairs in contact_forces.cpp: sum of (n_p . N)^2 with N the
-  // unit mean normal; normals that cancel count one each.
+  // unit mean normal; normals that cancel count one each. The length of each share's normal sum
+  // is taken once, before the sum over its pairs.
   if (model.share_damping_among_active_pairs) {
-    projection_.assign(shares_.size(), 0.0);
-    for (const Active& a : active_) {
-      const Share& s = shares_[a.wall ? walls_[a.index].share : pairs_[a.index].share];
-      const double length = std::hypot(s.normal_sum[0], s.normal_sum[1]);
-      if (!(length > 1e-12 * s.n_active)) continue;
-      const double projection = (a.normal[0]*s.normal_sum[0] + a.normal[1]*s.normal_sum[1]) / length;
-      projection_[&s - shares_.data()] += projection * projection;
-    }
-    for (std::size_t k = 0; k < shares_.size(); ++k) {
+    for (const int k : touched_) {
       Share& s = shares_[k];
-      if (s.n_active == 0) continue;
       const double length = std::hypot(s.normal_sum[0], s.normal_sum[1]);
-      const double parallel = length > 1e-12 * s.n_active ? projection_[k] : static_cast<double>(s.n_active);
-      s.inverse_sqrt_s = 1.0 / std::sqrt(parallel);
+      s.length = length > 1e-12 * s.n_active ? length : 0.0;
+      if (s.length == 0.0) s.parallel = static_cast<double>(s.n_active);
     }
+    for (const Active& a : active_) {
+      Share& s = shares_[a.share];
+      if (s.length == 0.0) continue;
+      const double projection = (a.normal[0]*s.normal_sum[0] + a.normal[1]*s.normal_sum[1]) / s.length;
+      s.parallel += projection * projection;
+    }
+    for (const int k : touched_) shares_[k].inverse_sqrt_s = 1.0 / std::sqrt(shares_[k].parallel);
   }
+  double* const force_x = points_.force_x.data();
+  double* const force_y = points_.force_y.data();
+  const double* const u = points_.u.data();
+  const double* const v = points_.v.data();
   for (const Active& a : active_) {
     stats.max_overlap = std::max(stats.max_overlap, a.overlap);
     // F_a = -(k delta - c v_n) n, v_n = (U_b - U_a) . n (normal_contact_law.hpp); walls are at rest.
-    Point& pa = points_[a.wall ? walls_[a.index].a : pairs_[a.index].a];
-    Vec relative{-pa.velocity[0], -pa.velocity[1]};
-    Point* pb = nullptr;
-    double stiffness = 0.0, damping = 0.0;
-    int share = 0;
-    if (a.wall) {
-      stiffness = walls_[a.index].stiffness;
-      damping = walls_[a.index].damping;
-      share = walls_[a.index].share;
-    } else {
-      pb = &points_[pairs_[a.index].b];
-      relative[0] += pb->velocity[0];
-      relative[1] += pb->velocity[1];
-      stiffness = pairs_[a.index].stiffness;
-      damping = pairs_[a.index].damping;
-      share = pairs_[a.index].share;
+    double relative_u = -u[a.a], relative_v = -v[a.a];
+    if (a.b >= 0) {
+      relative_u += u[a.b];
+      relative_v += v[a.b];
     }
-    if (model.share_damping_among_active_pairs) damping *= shares_[share].inverse_sqrt_s;
-    const double normal_rate = relative[0]*a.normal[0] + relative[1]*a.normal[1];
-    const double push = stiffness * a.overlap - damping * normal_rate;
-    pa.force[0] -= push * a.normal[0];
-    pa.force[1] -= push * a.normal[1];
-    if (pb != nullptr) {
-      pb->force[0] += push * a.normal[0];
-      pb->force[1] += push * a.normal[1];
+    double damping = a.damping;
+    if (model.share_damping_among_active_pairs) damping *= shares_[a.share].inverse_sqrt_s;
+    const double normal_rate = relative_u*a.normal[0] + relative_v*a.normal[1];
+    const double push = a.stiffness * a.overlap - damping * normal_rate;
+    force_x[a.a] -= push * a.normal[0];
+    force_y[a.a] -= push * a.normal[1];
+    forced_.push_back(a.a);
+    if (a.b >= 0) {
+      force_x[a.b] += push * a.normal[0];
+      force_y[a.b] += push * a.normal[1];
+      forced_.push_back(a.b);
     }
   }
+  // The shares' sums back to zero for the next inner step.
+  for (const int k : touched_) {
+    Share& s = shares_[k];
+    s.normal_sum = {0.0, 0.0};
+    s.n_active = 0;
+    s.parallel = 0.0;
+  }
+  touched_.clear();
+  // The points with a force, each once, in candidate order (the work sums in that order).
+  std::sort(forced_.begin(), forced_.end());
+  forced_.erase(std::unique(forced_.begin(), forced_.end()), forced_.end());
 }
 
-void ContactSubcycler::kick_and_drift(double dt, double time, double& work) {
-  for (Point& p : points_) {
-    for (int c = 0; c < 2; ++c) {
-      // Symplectic Euler for the contact force, the slow force a + r t integrated exactly.
-      const double a = p.slow_acceleration[c], r = p.slow_rate[c], f = p.force[c] * p.inverse_mass;
-      p.position[c] += dt * p.velocity[c] + dt * dt * (0.5 * a + r * (0.5 * time + dt / 6.0) + f);
-      p.velocity[c] += dt * (a + r * (time + 0.5 * dt) + f);
-    }
-    work += dt * (p.force[0]*p.velocity[0] + p.force[1]*p.velocity[1]);
+double ContactSubcycler::kick_and_drift(double dt, double time, double& work) {
+  // Symplectic Euler for the contact force, the slow force a + r t integrated exactly.
+  const double drift_time = 0.5 * time + dt / 6.0, kick_time = time + 0.5 * dt;
+  const int n = points_.size();
+  Candidates& p = points_;
+  kick_and_drift_candidates(n, dt, drift_time, kick_time, p.x.data(), p.y.data(), p.u.data(), p.v.data(), moved_.data(),
+                            p.force_x.data(), p.force_y.data(), p.inverse_mass.data(), p.slow_x.data(), p.slow_y.data(),
+                            p.rate_x.data(), p.rate_y.data(), p.anchor_x.data(), p.anchor_y.data());
+  const double* const u = p.u.data();
+  const double* const v = p.v.data();
+  const double* const moved = moved_.data();
+  // Work of the contact forces in candidate order, over the points that have one (the others add
+  // an exact zero); their forces cleared for the next inner step.
+  double sum = work;
+  for (const int i : forced_) {
+    sum += dt * (points_.force_x[i]*u[i] + points_.force_y[i]*v[i]);
+    points_.force_x[i] = points_.force_y[i] = 0.0;
   }
+  work = sum;
+  forced_.clear();
+  // Largest displacement since the list was built: four running maxima (max is exact, any order).
+  double m0 = 0.0, m1 = 0.0, m2 = 0.0, m3 = 0.0;
+  int i = 0;
+  for (; i + 4 <= n; i += 4) {
+    m0 = std::max(m0, moved[i]);
+    m1 = std::max(m1, moved[i + 1]);
+    m2 = std::max(m2, moved[i + 2]);
+    m3 = std::max(m3, moved[i + 3]);
+  }
+  for (; i < n; ++i) m0 = std::max(m0, moved[i]);
+  return std::max(std::max(m0, m1), std::max(m2, m3));
 }
 
 void ContactSubcycler::move_off_list(const BodyMask& members, std::vector<MassSpringBody>& bodies, double dt_inner,
@@ -291,12 +388,16 @@ ContactSubcycleResult ContactSubcycler::advance(const ContactModel& model, const
     slot_.assign(offset_.back(), -1);
     // Room for every point of the scene and many pairs each: no growth inside later steps.
     points_.reserve(offset_.back());
+    moved_.resize(offset_.back());
+    forced_.reserve(2 * 10 * offset_.back());
+    touched_.reserve(8 * bodies.size() + 8);
     pairs_.reserve(8 * offset_.back());
+    gap_.reserve(8 * offset_.back());
+    near_.reserve(8 * offset_.back());
     search_.pairs.reserve(8 * offset_.back());
     walls_.reserve(2 * offset_.back());
     active_.reserve(10 * offset_.back());
     shares_.reserve(8 * bodies.size() + 8);  // body pairs and body-wall pairs in touch
-    projection_.reserve(8 * bodies.size() + 8);
     spheres_.centre.reserve(offset_.back());
     spheres_.radius.reserve(offset_.back());
     spheres_.body.reserve(offset_.back());
@@ -347,14 +448,10 @@ ContactSubcycleResult ContactSubcycler::advance(const ContactModel& model, const
   std::array<double, 2> off_list = fastest(members, bodies, /*off_list_only=*/true);
   int step_built = 0;   // inner step at which the list was built
   int step_synced = 0;  // inner step the off-list points' stored state belongs to
+  double moved_squared = 0.0;  // largest squared displacement of a candidate since the list was built
   for (int j = 0; j < n_inner && !points_.empty(); ++j) {
     if (j > step_built) {
       // The list holds while no two points can have closed the skin since it was built.
-      double moved_squared = 0.0;
-      for (const Point& p : points_) {
-        const double dx = p.position[0] - p.anchor[0], dy = p.position[1] - p.anchor[1];
-        moved_squared = std::max(moved_squared, dx*dx + dy*dy);
-      }
       const double moved = std::max(std::sqrt(moved_squared), travel(off_list, (j - step_built) * dt_inner)) +
                            growth * (j - step_built) * dt_inner;
       if (2.0 * moved >= skin) {
@@ -366,14 +463,15 @@ ContactSubcycleResult ContactSubcycler::advance(const ContactModel& model, const
                             (travel(fastest(members, bodies, false), dt_outer - j * dt_inner) + growth * (dt_outer - j * dt_inner)),
                         skin_floor);
         build_list(model, box, skin, members, bodies, j * dt_inner);
+        moved_squared = 0.0;
         ++result.list_builds;
         off_list = fastest(members, bodies, true);
         step_built = j;
         if (points_.empty()) break;
       }
     }
-    contact_forces(model, j * dt_inner, result.stats);
-    kick_and_drift(dt_inner, j * dt_inner, result.work);
+    contact_forces(model, j * dt_inner, std::sqrt(moved_squared), result.stats);
+    moved_squared = kick_and_drift(dt_inner, j * dt_inner, result.work);
     ++result.inner_steps;
   }
   move_off_list(members, bodies, dt_inner, step_synced, n_inner);

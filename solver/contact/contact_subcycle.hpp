@@ -32,6 +32,9 @@
 // displacement since it was built (candidates measured, the others bounded by V t + A t (t + dt_i) / 2)
 // is below s; otherwise every point is brought to the current inner step and the list is rebuilt:
 // no contact is missed, whatever the rebound speeds.
+// Within the list, an inner step examines only the pairs whose gap when the list was built is below
+// twice the closing it can have had since (twice the largest candidate displacement plus the radii's
+// growth, doubled when passed): a pair left out cannot touch, so the forces are those of the whole list.
 // Only mass_spring bodies with explicit springs take part (the caller's choice: a rigid or
 // prescribed body moves all its points at once, implicit springs are not slow).
 #pragma once
@@ -83,12 +86,22 @@ class ContactSubcycler {
 
  private:
   using Vec = std::array<double, 2>;
-  struct Point {     // a candidate point, its state copied here for the inner loop
-    int body = 0, point = 0;
-    double inverse_mass = 0.0;
-    Vec position{}, velocity{}, force{}, anchor{};  // anchor: position when the list was built
-    Vec slow_acceleration{};                        // a = F_slow / m at the step's start [length/time^2]
-    Vec slow_rate{};                                // its rate of change over the step [length/time^3]
+  // The candidate points, their state copied here for the inner loop, one contiguous array per
+  // quantity (the inner loop's kick-and-drift runs over them all every inner step).
+  struct Candidates {
+    std::vector<int> body, point;
+    std::vector<double> inverse_mass;
+    std::vector<double> x, y;                // position [length]
+    std::vector<double> u, v;                // velocity [length/time]
+    std::vector<double> force_x, force_y;    // contact force of the current inner step (0 between steps)
+    std::vector<double> anchor_x, anchor_y;  // position when the list was built
+    std::vector<double> slow_x, slow_y;      // a = F_slow / m at the step's start [length/time^2]
+    std::vector<double> rate_x, rate_y;      // its rate of change over the step [length/time^3]
+
+    int size() const { return static_cast<int>(x.size()); }
+    bool empty() const { return x.empty(); }
+    void clear();
+    void reserve(std::size_t n);
   };
   struct Pair {      // two candidate points of different bodies
     int a = 0, b = 0;
@@ -109,11 +122,14 @@ class ContactSubcycler {
     int body_a = 0, partner = 0;  // partner: a body, or -1 - wall
     Vec normal_sum{};
     int n_active = 0;
+    double length = 0.0;          // |sum of normals| (0: the normals cancel, no common direction)
+    double parallel = 0.0;        // S being summed
     double inverse_sqrt_s = 1.0;
   };
-  struct Active {    // one touching pair or wall in the current inner step
-    int index = 0;   // into pairs_ (wall = false) or walls_ (wall = true)
-    bool wall = false;
+  struct Active {    // one touching pair or wall in the current inner step, with its law
+    int a = 0, b = -1;  // candidates (b = -1: a wall)
+    int share = 0;
+    double stiffness = 0.0, damping = 0.0;
     double overlap = 0.0;
     Vec normal{};
   };
@@ -123,22 +139,32 @@ class ContactSubcycler {
   void release_list(std::vector<MassSpringBody>& bodies);  // candidates' state back into the bodies
   int candidate(int body, int point, const std::vector<MassSpringBody>& bodies);
   int share_of(int body_a, int partner);
-  void contact_forces(const ContactModel& model, double time, ContactStats& stats);
-  void kick_and_drift(double dt, double time, double& work);
+  // moved: the largest displacement of a candidate since the list was built [length].
+  void contact_forces(const ContactModel& model, double time, double moved, ContactStats& stats);
+  // One inner step of the candidates; clears their contact forces for the next step and returns
+  // the largest squared displacement of a candidate since the list was built.
+  double kick_and_drift(double dt, double time, double& work);
   // Off-list points from inner step `from` to `to` in closed form (step 3 above).
   void move_off_list(const BodyMask& members, std::vector<MassSpringBody>& bodies, double dt_inner, int from, int to);
   // Largest speed and slow acceleration of the members' points (off_list_only: of the points off the list).
   std::array<double, 2> fastest(const BodyMask& members, const std::vector<MassSpringBody>& bodies,
                                 bool off_list_only) const;
 
-  std::vector<Point> points_;
+  Candidates points_;
+  std::vector<double> moved_;     // per candidate: squared displacement since the list was built
+  std::vector<int> forced_;       // candidates with a contact force in the current inner step
+  std::vector<int> touched_;      // shares with an active pair in the current inner step
   std::vector<Pair> pairs_;
+  std::vector<double> gap_;       // per pair: |x_b - x_a| - (r_a + r_b) when the list was built [length]
+  std::vector<int> near_;         // pairs whose gap is within near_reach_ (in list order)
+  double near_reach_ = -1.0;      // [length]
+  double near_reach_floor_ = 0.0; // smallest near_reach_ picked (a sixteenth of the skin) [length]
+  double radius_rate_max_ = 0.0;  // largest |d(r_a + r_b)/dt| of the pairs [length/time]
   std::vector<Wall> walls_;
   std::vector<Share> shares_;
   std::vector<Active> active_;
   std::vector<int> slot_;         // per body and point (offset_[b] + p): candidate index or -1
   std::vector<int> offset_;
-  std::vector<double> projection_;  // scratch of the sharing sums
   std::vector<std::vector<Vec>> slow_;    // per body and point: F_slow = external + springs at x^k, U^k
   std::vector<std::vector<Vec>> spring_;  // per body and point: springs at x^{k+1}, predicted U
   std::vector<std::vector<Vec>> rate_;    // per body and point: dF_slow/dt over the step (0: held)
