@@ -17,8 +17,7 @@ ContactModel::ContactModel(const ContactSpec& spec)
       cds_radius(spec.cds_radius),
       cds_radius_fraction(spec.cds_radius_fraction),
       walls(spec.walls) {
-  if (spec.model == "collision_time") law = ContactLawKind::collision_time;
-  else if (spec.model != "linear") throw std::invalid_argument("contact: model must be linear or collision_time");
+  if (spec.model == ContactSpec::Model::collision_time) law = ContactLawKind::collision_time;
   collision_steps = spec.collision_steps;
   if (!(stiffness >= 0.0)) throw std::invalid_argument("contact: stiffness must be >= 0");
   if (law == ContactLawKind::collision_time && (stiffness > 0.0 || !(collision_steps >= 1.0)))

@@ -27,9 +27,6 @@ enum class BodyKind { mass_spring, rigid, prescribed };
 
 // How a mass_spring body's springs are integrated (scene key spring_integrator; sim/body_update.hpp).
 enum class SpringIntegrator { automatic, explicit_euler, implicit_euler };
-SpringIntegrator spring_integrator_from_name(const std::string& name);  // auto | explicit | implicit
-BodyKind body_kind_from_name(const std::string& name);  // scene names (std::invalid_argument if unknown)
-const char* body_kind_name(BodyKind kind);
 
 struct MassSpringBody {
   BodyKind kind = BodyKind::mass_spring;

@@ -34,7 +34,7 @@ RigidBody rigid_body_from_spec(const BodySpec& spec, const MassSpringBody& body)
   rigid.moment_of_inertia = rigid.mass * body.diameter * body.diameter / 8.0;
   rigid.prescribed = {spec.centre, spec.velocity, spec.angular_velocity, spec.oscillation_amplitude,
                       spec.angle_amplitude, spec.oscillation_period, spec.oscillation_phase};
-  if (spec.kind == "prescribed") {
+  if (spec.kind == BodySpec::Kind::prescribed) {
     rigid.state = rigid.prescribed.at(0.0);
   } else {
     rigid.state = {spec.centre, 0.0, spec.velocity, spec.angular_velocity};

@@ -39,7 +39,7 @@ const WallBox near_wall_box{{-1.0, -1.0}, {1.9, 2.0}, {false, false}};  // right
 
 ContactModel collision_time_model(double restitution, double cds_radius_fraction) {
   ContactSpec spec;
-  spec.model = "collision_time";
+  spec.model = ContactSpec::Model::collision_time;
   spec.collision_steps = collision_steps;
   spec.restitution_coefficient = restitution;
   spec.cds_radius_fraction = cds_radius_fraction;
