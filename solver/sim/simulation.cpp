@@ -69,6 +69,59 @@ KernelKind kernel_kind(IbmSpec::Kernel kernel) {
   throw std::invalid_argument("unknown ibm.kernel");
 }
 
+// The contact parameters of the scene's [contact] section.
+ContactModel contact_model_of(const ContactSpec& spec) {
+  ContactModel model;
+  model.law = spec.model == ContactSpec::Model::collision_time ? ContactLawKind::collision_time
+                                                                : ContactLawKind::linear;
+  model.stiffness = spec.stiffness;
+  model.collision_steps = spec.collision_steps;
+  model.restitution_coefficient = spec.restitution_coefficient;
+  model.cds_radius = spec.cds_radius;
+  model.cds_radius_fraction = spec.cds_radius_fraction;
+  model.walls = spec.walls;
+  model.check();
+  return model;
+}
+
+// The parameters of a body's point set from its [[bodies]] table.
+BodyParameters body_parameters_of(const BodySpec& spec) {
+  BodyParameters p;
+  switch (spec.kind) {
+    case BodySpec::Kind::mass_spring: p.kind = BodyKind::mass_spring; break;
+    case BodySpec::Kind::rigid: p.kind = BodyKind::rigid; break;
+    case BodySpec::Kind::prescribed: p.kind = BodyKind::prescribed; break;
+  }
+  p.centre = spec.centre;
+  p.velocity = spec.velocity;
+  p.angular_velocity = spec.angular_velocity;
+  p.diameter = spec.diameter;
+  p.n_surface_points = spec.n_surface_points;
+  p.density = spec.density;
+  p.spring_stiffness = spec.spring_stiffness;
+  p.spring_damping = spec.spring_damping;
+  p.restitution_coefficient = spec.restitution_coefficient;
+  p.cross_springs = spec.cross_springs;
+  p.mass_lumping = spec.mass_lumping == BodySpec::MassLumping::uniform_disk ? MassLumping::uniform_disk
+                                                                            : MassLumping::equal;
+  switch (spec.spring_integrator) {
+    case BodySpec::SpringIntegrator::automatic: p.spring_integrator = SpringIntegrator::automatic; break;
+    case BodySpec::SpringIntegrator::explicit_euler: p.spring_integrator = SpringIntegrator::explicit_euler; break;
+    case BodySpec::SpringIntegrator::implicit_euler: p.spring_integrator = SpringIntegrator::implicit_euler; break;
+  }
+  return p;
+}
+
+// The motion of a rigid or prescribed body from its [[bodies]] table.
+PrescribedMotion motion_of(const BodySpec& spec) {
+  return {spec.centre,          spec.velocity,          spec.angular_velocity, spec.oscillation_amplitude,
+          spec.angle_amplitude, spec.oscillation_period, spec.oscillation_phase};
+}
+
+SwellingLaw swelling_law_of(const SwellingSpec& spec) {
+  return {spec.enabled, spec.onset_time, spec.rate, spec.max_diameter};
+}
+
 }  // namespace
 
 Simulation::Simulation(const Scene& scene)
@@ -91,9 +144,9 @@ Simulation::Simulation(const Scene& scene)
     throw InputError(scene.source_file + ": domain: bodies need square cells (dx = dy), got dx = " +
                      std::to_string(grid_.dx()) + ", dy = " + std::to_string(grid_.dy()));
   for (const BodySpec& spec : scene.bodies) {
-    bodies_.push_back(build_body(spec, scene.fluid.density));
+    bodies_.push_back(build_body(body_parameters_of(spec), scene.fluid.density));
     const bool mass_spring = spec.kind == BodySpec::Kind::mass_spring;
-    rigid_.push_back(mass_spring ? RigidBody{} : rigid_body_from_spec(spec, bodies_.back()));
+    rigid_.push_back(mass_spring ? RigidBody{} : rigid_body_of(bodies_.back(), motion_of(spec)));
     if (!mass_spring) place_points(rigid_.back(), bodies_.back());
     // docs/method.md §3.7
     if (spec.kind == BodySpec::Kind::rigid && scene.ibm.coupling == IbmSpec::Coupling::no_slip) {
@@ -101,7 +154,7 @@ Simulation::Simulation(const Scene& scene)
       r.virtual_mass = scene.ibm.virtual_mass_coefficient * scene.fluid.density * bodies_.back().solid_area();
       r.virtual_inertia = r.virtual_mass * spec.diameter * spec.diameter / 8.0;
     }
-    swelling_.emplace_back(spec.swelling, spec.diameter);
+    swelling_.emplace_back(swelling_law_of(spec.swelling), spec.diameter);
     const double largest = spec.swelling.enabled ? std::max(spec.diameter, spec.swelling.max_diameter) : spec.diameter;
     coupling_.emplace_back(bodies_.back(), scene.ibm.sub_markers
                                                ? max_sub_marker_count(largest, spec.n_surface_points, grid_.dx())
@@ -130,7 +183,7 @@ Simulation::Simulation(const Scene& scene)
     }
   }
   if (scene.contact.enabled()) {
-    contact_model_ = ContactModel(scene.contact);
+    contact_model_ = contact_model_of(scene.contact);
     contact_box_ = WallBox{{grid_.origin_x, grid_.origin_y}, {grid_.length_x, grid_.length_y},
                            {grid_.periodic_x, grid_.periodic_y}};
     for (Side s : {Side::left, Side::right, Side::bottom, Side::top}) {
