@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "scene/scene_reader.hpp"
+#include "scene/scene_schema.hpp"
 #include "sim/diagnostics.hpp"
 #include "sim/simulation.hpp"
 #include "solid/stable_substep.hpp"
@@ -33,7 +34,7 @@ std::string describe_scene(const Scene& scene) {
                           b.inflow.shape == InflowProfile::Shape::parabolic ? "parabolic" : "uniform",
                           b.inflow.shape == InflowProfile::Shape::parabolic ? "peak" : "speed", b.inflow.velocity,
                           b.inflow.velocity * (b.inflow.shape == InflowProfile::Shape::parabolic ? 2.0 / 3.0 : 1.0),
-                          specs[static_cast<int>(side)]->time_factor);
+                          scene_schema::name_of(specs[static_cast<int>(side)]->time_factor));
     if (kind == SideKind::outflow) what += ": zero normal velocity gradient, p = 0";
     text += fmt::format("  {}: {}\n", names[static_cast<int>(side)], what);
   }
@@ -50,7 +51,8 @@ std::string describe_scene(const Scene& scene) {
       if (body.kind == BodyKind::mass_spring && std::isfinite(dt) && dt > 0 && uses_implicit_springs(body, dt, spring_substep))
         cost = fmt::format("{} points, {} springs, implicit spring steps (spring_integrator = {}; explicit would need "
                            "{:.0f} sub-steps per fluid step){}",
-                           body.n_points(), body.springs.size(), spec.spring_integrator, std::ceil(dt / spring_substep),
+                           body.n_points(), body.springs.size(), scene_schema::name_of(spec.spring_integrator),
+                           std::ceil(dt / spring_substep),
                            spec.swelling.enabled ? ", swelling schedule" : "");
       else if (body.kind == BodyKind::mass_spring)
         cost = fmt::format("{} points, {} springs, sub-stepped to its spring period (stable sub-step {:.4g}){}",
@@ -61,7 +63,7 @@ std::string describe_scene(const Scene& scene) {
                            sim.rigid()[b].mass, sim.rigid()[b].moment_of_inertia);
       else
         cost = fmt::format("{} rim points, motion given by the scene; forcing and force output only", body.n_surface);
-      text += fmt::format("  body {}: {}: {}\n", b, body_kind_name(body.kind), cost);
+      text += fmt::format("  body {}: {}: {}\n", b, scene_schema::name_of(spec.kind), cost);
     }
   }
   text += "\n" + describe_time_step_limits(scene, sim);

@@ -11,15 +11,7 @@
 
 namespace ibms {
 
-ContactModel::ContactModel(const ContactSpec& spec)
-    : stiffness(spec.stiffness),
-      restitution_coefficient(spec.restitution_coefficient),
-      cds_radius(spec.cds_radius),
-      cds_radius_fraction(spec.cds_radius_fraction),
-      walls(spec.walls) {
-  if (spec.model == "collision_time") law = ContactLawKind::collision_time;
-  else if (spec.model != "linear") throw std::invalid_argument("contact: model must be linear or collision_time");
-  collision_steps = spec.collision_steps;
+void ContactModel::check() const {
   if (!(stiffness >= 0.0)) throw std::invalid_argument("contact: stiffness must be >= 0");
   if (law == ContactLawKind::collision_time && (stiffness > 0.0 || !(collision_steps >= 1.0)))
     throw std::invalid_argument("contact: collision_time takes no stiffness and collision_steps >= 1");

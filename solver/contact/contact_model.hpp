@@ -8,7 +8,6 @@
 #include <array>
 #include <vector>
 
-#include "scene/scene.hpp"
 #include "solid/mass_spring_body.hpp"
 
 namespace ibms {
@@ -50,8 +49,8 @@ struct ContactModel {
   // 0.5 -> 0.508, 0.9 -> 0.905, 1 -> 0.99997; raise it when e_D < 1 must be met within 1 %.
   double steps_per_contact = 20.0;       // [-]
 
-  ContactModel() = default;
-  explicit ContactModel(const ContactSpec& spec);  // std::invalid_argument if inconsistent
+  // std::invalid_argument naming the first inconsistent parameter.
+  void check() const;
 
   bool enabled() const { return stiffness > 0.0 || law == ContactLawKind::collision_time; }
   // The model of a fluid step of length dt: T_c = collision_steps dt (collision_time; linear: unchanged).

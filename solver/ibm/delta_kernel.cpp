@@ -69,15 +69,6 @@ double bkp6_phi(double r) {
 
 double bkp6_second_moment() { return 59.0/60.0 - std::sqrt(29.0)/20.0; }
 
-KernelKind kernel_from_name(const std::string& name) {
-  if (name == "roma3") return KernelKind::roma3;
-  if (name == "peskin4") return KernelKind::peskin4;
-  if (name == "cosine4") return KernelKind::cosine4;
-  if (name == "bkp6") return KernelKind::bkp6;
-  throw std::invalid_argument("unknown delta kernel '" + name +
-                              "' (expected roma3, peskin4, cosine4 or bkp6)");
-}
-
 std::string kernel_name(KernelKind kind) {
   switch (kind) {
     case KernelKind::roma3: return "roma3";

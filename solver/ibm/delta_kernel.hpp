@@ -12,8 +12,6 @@ enum class KernelKind { roma3, peskin4, cosine4, bkp6 };
 inline constexpr std::array<KernelKind, 4> all_kernel_kinds = {
     KernelKind::roma3, KernelKind::peskin4, KernelKind::cosine4, KernelKind::bkp6};
 
-// Scene name (roma3 | peskin4 | cosine4 | bkp6) -> kind; std::invalid_argument otherwise.
-KernelKind kernel_from_name(const std::string& name);
 std::string kernel_name(KernelKind kind);
 
 // Number of grid nodes a kernel touches in one direction [-]: 3, 4, 4, 6.

@@ -8,6 +8,7 @@
 
 #include "scene/scene_diagnostics.hpp"
 #include "scene/scene_reader.hpp"
+#include "scene/scene_schema.hpp"
 
 namespace ibms {
 
@@ -29,7 +30,7 @@ std::string toml_pair(const std::array<double, 2>& pair) {
 std::string toml_bool(bool value) { return value ? "true" : "false"; }
 
 // TOML basic string with escapes.
-std::string toml_string(const std::string& text) {
+std::string toml_string(std::string_view text) {
   std::string out = "\"";
   for (const char c : text) {
     const auto byte = static_cast<unsigned char>(c);
@@ -45,7 +46,7 @@ std::string toml_string(const std::string& text) {
 
 void append_body(std::string& out, const BodySpec& body) {
   out += "\n[[bodies]]\n";
-  out += fmt::format("kind = {}\n", toml_string(body.kind));
+  out += fmt::format("kind = {}\n", toml_string(scene_schema::name_of(body.kind)));
   out += fmt::format("centre = {}\n", toml_pair(body.centre));
   out += fmt::format("velocity = {}\n", toml_pair(body.velocity));
   out += fmt::format("angular_velocity = {}\n", toml_float(body.angular_velocity));
@@ -53,7 +54,7 @@ void append_body(std::string& out, const BodySpec& body) {
   out += fmt::format("n_surface_points = {}\n", body.n_surface_points);
   out += fmt::format("reference_speed = {}\n", toml_float(body.reference_speed));
   out += fmt::format("reference_length = {}\n", toml_float(body.reference_length));
-  if (body.kind == "prescribed") {
+  if (body.kind == BodySpec::Kind::prescribed) {
     out += fmt::format("oscillation_amplitude = {}\n", toml_pair(body.oscillation_amplitude));
     out += fmt::format("angle_amplitude = {}\n", toml_float(body.angle_amplitude));
     out += fmt::format("oscillation_period = {}\n", toml_float(body.oscillation_period));
@@ -61,14 +62,14 @@ void append_body(std::string& out, const BodySpec& body) {
     return;
   }
   out += fmt::format("density = {}\n", toml_float(body.density));
-  if (body.kind == "rigid") return;
+  if (body.kind == BodySpec::Kind::rigid) return;
   out += fmt::format("spring_stiffness = {}\n", toml_float(body.spring_stiffness));
   if (body.spring_damping >= 0.0) out += fmt::format("spring_damping = {}\n", toml_float(body.spring_damping));
   else out += "# spring_damping not set: derived from restitution_coefficient\n";
   out += fmt::format("restitution_coefficient = {}\n", toml_float(body.restitution_coefficient));
   out += fmt::format("cross_springs = {}\n", toml_bool(body.cross_springs));
-  out += fmt::format("mass_lumping = {}\n", toml_string(body.mass_lumping));
-  out += fmt::format("spring_integrator = {}\n", toml_string(body.spring_integrator));
+  out += fmt::format("mass_lumping = {}\n", toml_string(scene_schema::name_of(body.mass_lumping)));
+  out += fmt::format("spring_integrator = {}\n", toml_string(scene_schema::name_of(body.spring_integrator)));
   if (body.swelling.enabled) {
     out += fmt::format("swelling = {{ onset_time = {}, rate = {}, max_diameter = {} }}\n",
                        toml_float(body.swelling.onset_time), toml_float(body.swelling.rate),
@@ -93,9 +94,9 @@ std::string resolved_scene_toml(const Scene& scene) {
   out += fmt::format("max_steps = {}\n", run.max_steps);
   out += fmt::format("max_cfl = {}\n", toml_float(run.max_cfl));
   out += fmt::format("max_viscous_number = {}\n", toml_float(run.max_viscous_number));
-  out += fmt::format("solid_substeps = {}\n", toml_string(run.solid_substeps));
-  out += fmt::format("on_body_instability = {}\n", toml_string(run.on_body_instability));
-  out += fmt::format("on_fluid_instability = {}\n", toml_string(run.on_fluid_instability));
+  out += fmt::format("solid_substeps = {}\n", toml_string(scene_schema::name_of(run.solid_substeps)));
+  out += fmt::format("on_body_instability = {}\n", toml_string(scene_schema::name_of(run.on_body_instability)));
+  out += fmt::format("on_fluid_instability = {}\n", toml_string(scene_schema::name_of(run.on_fluid_instability)));
 
   const DomainSpec& domain = scene.domain;
   out += "\n[domain]\n";
@@ -109,8 +110,8 @@ std::string resolved_scene_toml(const Scene& scene) {
   out += "\n[fluid]\n";
   out += fmt::format("density = {}\n", toml_float(scene.fluid.density));
   out += fmt::format("kinematic_viscosity = {}\n", toml_float(scene.fluid.kinematic_viscosity));
-  out += fmt::format("convection = {}\n", toml_string(scene.fluid.convection));
-  out += fmt::format("wall_closure = {}\n", toml_string(scene.fluid.wall_closure));
+  out += fmt::format("convection = {}\n", toml_string(scene_schema::name_of(scene.fluid.convection)));
+  out += fmt::format("wall_closure = {}\n", toml_string(scene_schema::name_of(scene.fluid.wall_closure)));
   out += fmt::format("gravity = {}\n", toml_pair(scene.fluid.gravity));
 
   out += "\n[walls]\n";
@@ -118,15 +119,16 @@ std::string resolved_scene_toml(const Scene& scene) {
       {"left", &scene.walls.left}, {"right", &scene.walls.right},
       {"bottom", &scene.walls.bottom}, {"top", &scene.walls.top}};
   for (const auto& [name, wall] : walls) {
-    out += fmt::format("[walls.{}]\nkind = {}\n", name, toml_string(wall->kind));
-    if (wall->kind == "wall")
+    out += fmt::format("[walls.{}]\nkind = {}\n", name, toml_string(scene_schema::name_of(wall->kind)));
+    if (wall->kind == WallSpec::Kind::wall)
       out += fmt::format("speed = {}\nstop_time = {}\n", toml_float(wall->speed), toml_float(wall->stop_time));
-    if (wall->kind == "inflow")
-      out += fmt::format("profile = {}\nvelocity = {}\ntime_factor = {}\n", toml_string(wall->profile),
-                         toml_float(wall->velocity), toml_string(wall->time_factor));
-    if (wall->kind == "inflow" && wall->time_factor == "ramp")
+    if (wall->kind == WallSpec::Kind::inflow)
+      out += fmt::format("profile = {}\nvelocity = {}\ntime_factor = {}\n",
+                         toml_string(scene_schema::name_of(wall->profile)),
+                         toml_float(wall->velocity), toml_string(scene_schema::name_of(wall->time_factor)));
+    if (wall->kind == WallSpec::Kind::inflow && wall->time_factor == WallSpec::TimeFactor::ramp)
       out += fmt::format("ramp_time = {}\n", toml_float(wall->ramp_time));
-    if (wall->kind == "inflow" && wall->time_factor == "sinusoidal")
+    if (wall->kind == WallSpec::Kind::inflow && wall->time_factor == WallSpec::TimeFactor::sinusoidal)
       out += fmt::format("factor_offset = {}\nfactor_amplitude = {}\nfactor_period = {}\n",
                          toml_float(wall->factor_offset), toml_float(wall->factor_amplitude),
                          toml_float(wall->factor_period));
@@ -134,16 +136,16 @@ std::string resolved_scene_toml(const Scene& scene) {
 
   const IbmSpec& ibm = scene.ibm;
   out += "\n[ibm]\n";
-  out += fmt::format("kernel = {}\n", toml_string(ibm.kernel));
+  out += fmt::format("kernel = {}\n", toml_string(scene_schema::name_of(ibm.kernel)));
   out += fmt::format("forcing_passes = {}\n", ibm.forcing_passes);
-  out += fmt::format("forcing_stage = {}\n", toml_string(ibm.forcing_stage));
-  out += fmt::format("inner_fluid_inertia = {}\n", toml_string(ibm.inner_fluid_inertia));
+  out += fmt::format("forcing_stage = {}\n", toml_string(scene_schema::name_of(ibm.forcing_stage)));
+  out += fmt::format("inner_fluid_inertia = {}\n", toml_string(scene_schema::name_of(ibm.inner_fluid_inertia)));
   out += fmt::format("sub_markers = {}\n", toml_bool(ibm.sub_markers));
   out += fmt::format("marker_retraction = {}\n", toml_float(ibm.marker_retraction));
-  out += fmt::format("coupling = {}\n", toml_string(ibm.coupling));
+  out += fmt::format("coupling = {}\n", toml_string(scene_schema::name_of(ibm.coupling)));
   out += fmt::format("slip_tolerance = {}\n", toml_float(ibm.slip_tolerance));
   out += fmt::format("max_coupling_iterations = {}\n", ibm.max_coupling_iterations);
-  out += fmt::format("constrained_velocity = {}\n", toml_string(ibm.constrained_velocity));
+  out += fmt::format("constrained_velocity = {}\n", toml_string(scene_schema::name_of(ibm.constrained_velocity)));
   out += fmt::format("virtual_mass_coefficient = {}\n", toml_float(ibm.virtual_mass_coefficient));
 
   for (const BodySpec& body : scene.bodies) append_body(out, body);
@@ -155,8 +157,8 @@ std::string resolved_scene_toml(const Scene& scene) {
   out += fmt::format("cds_radius = {}\n", toml_float(contact.cds_radius));
   out += fmt::format("cds_radius_fraction = {}\n", toml_float(contact.cds_radius_fraction));
   out += fmt::format("walls = {}\n", toml_bool(contact.walls));
-  out += fmt::format("time_stepping = {}\n", toml_string(contact.time_stepping));
-  out += fmt::format("model = {}\n", toml_string(contact.model));
+  out += fmt::format("time_stepping = {}\n", toml_string(scene_schema::name_of(contact.time_stepping)));
+  out += fmt::format("model = {}\n", toml_string(scene_schema::name_of(contact.model)));
   out += fmt::format("collision_steps = {}\n", toml_float(contact.collision_steps));
 
   const OutputSpec& output = scene.output;

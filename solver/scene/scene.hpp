@@ -1,6 +1,8 @@
 // A validated, typed scene: everything a run needs, with defaults filled in (docs/design.md §4).
 // scene/scene_reader.cpp builds it from TOML and checks every value once; the rest of the code
 // trusts it. Units: the solver is unit-agnostic, each scene states its system in a comment.
+// Every option with a fixed set of values is an enum here; its scene names are in one table per
+// enum (scene_schema.hpp: Choices, name_of), which the reader, the resolved text and messages use.
 #pragma once
 #include <array>
 #include <limits>
@@ -11,6 +13,8 @@
 namespace ibms {
 
 struct RunSpec {
+  enum class SolidSubsteps { per_group, global };
+  enum class OnInstability { stop, warn };
   double end_time = 1.0;             // stop time [time]
   double time_step = 0.0;            // fixed dt [time]; 0 selects the adaptive step
   double cfl = 0.5;                  // adaptive dt = cfl / max(|u|/dx + |v|/dy) [-]
@@ -25,15 +29,15 @@ struct RunSpec {
   // Solid sub-steps (sim/body_update.hpp): "per_group" (each group of bodies that may touch within
   // the step takes its own sub-step; contact sub-steps only for a group that may touch something)
   // or "global" (every body takes the smallest sub-step of all).
-  std::string solid_substeps = "per_group";
+  SolidSubsteps solid_substeps = SolidSubsteps::per_group;
   // A body whose kinetic energy exceeds what the scene can give it (Simulation::body_energy_scale:
   // an unstable spring or contact) stops the run with the blow-up message ("stop") or is reported
   // once on stderr ("warn").
-  std::string on_body_instability = "stop";
+  OnInstability on_body_instability = OnInstability::stop;
   // A fluid whose kinetic energy exceeds its budget (what the walls, open sides and bodies can feed
   // it) or whose largest speed exceeds FluidGuard::speed_factor times the scene's speed scale
   // (sim/fluid_guard.hpp, docs/method.md §7) stops the run ("stop") or is reported once ("warn").
-  std::string on_fluid_instability = "stop";
+  OnInstability on_fluid_instability = OnInstability::stop;
 };
 
 struct DomainSpec {
@@ -43,25 +47,30 @@ struct DomainSpec {
 };
 
 struct FluidSpec {
+  enum class Convection { central, quick };
+  enum class WallClosure { linear, quadratic };
   double density = 1.0;              // rho_f [mass/length^3]
   double kinematic_viscosity = 0.01; // nu [length^2/time]
   std::array<double, 2> gravity{0.0, 0.0};  // g [length/time^2]; acts on bodies only (docs/method.md §2.6)
   // Spatial options (fluid/fluid_solver.hpp, FluidSchemes; docs/fluid-accuracy.md): convected face
   // values central | quick, and the viscous wall closure linear | quadratic.
-  std::string convection = "central";
-  std::string wall_closure = "linear";
+  Convection convection = Convection::central;
+  WallClosure wall_closure = WallClosure::linear;
 };
 
 // One side of the box ([walls.<side>], fluid/boundary_conditions.hpp): a wall (tangential speed,
 // stopping at stop_time), an inflow (normal velocity profile times a time factor), an outflow
 // (zero normal gradient, p = 0) or periodic (both sides of a direction; domain.periodic_x/y).
 struct WallSpec {
-  std::string kind = "wall";         // wall | inflow | outflow | periodic
+  enum class Kind { wall, inflow, outflow, periodic };
+  enum class Profile { uniform, parabolic };
+  enum class TimeFactor { constant, ramp, sinusoidal };
+  Kind kind = Kind::wall;
   double speed = 0.0;                // wall: tangential speed [length/time]; +x on bottom/top, +y on left/right
   double stop_time = std::numeric_limits<double>::infinity();  // wall stops (speed 0) from here [time]
-  std::string profile = "uniform";   // inflow: uniform | parabolic (velocity is then the peak)
+  Profile profile = Profile::uniform;  // inflow: uniform | parabolic (velocity is then the peak)
   double velocity = 0.0;             // inflow: normal speed into the box [length/time]
-  std::string time_factor = "constant";  // inflow: constant | ramp | sinusoidal
+  TimeFactor time_factor = TimeFactor::constant;  // inflow: constant | ramp | sinusoidal
   double ramp_time = 0.0;            // ramp: factor min(t / ramp_time, 1) [time]
   double factor_offset = 0.0;        // sinusoidal: factor offset + amplitude sin(2 pi t / period) [-]
   double factor_amplitude = 1.0;     // [-]
@@ -73,13 +82,19 @@ struct WallsSpec {
 };
 
 struct IbmSpec {
-  std::string kernel = "roma3";      // roma3 | peskin4 | cosine4 | bkp6
+  enum class Kernel { roma3, peskin4, cosine4, bkp6 };
+  enum class ForcingStage { explicit_estimate, implicit_prediction };
+  enum class InnerFluidInertia { kempe, none };
+  enum class Coupling { uhlmann, no_slip };
+  enum class ConstrainedVelocity { cells, faces };
+  Kernel kernel = Kernel::roma3;     // roma3 | peskin4 | cosine4 | bkp6
   int forcing_passes = 1;            // multi-direct forcing passes [-]
   // Which velocity the markers force: "explicit_estimate" (Uhlmann 2005: the explicit estimate
   // u^n + dt(-N + nu L u^n - G p^n), the force then enters the Crank-Nicolson solve) or
   // "implicit_prediction" (the Crank-Nicolson prediction, force added after it).
-  std::string forcing_stage = "explicit_estimate";
-  std::string inner_fluid_inertia = "kempe";  // kempe (variant K) | none (variant A, papers' literal form)
+  ForcingStage forcing_stage = ForcingStage::explicit_estimate;
+  // kempe (variant K) | none (variant A, the papers' literal form)
+  InnerFluidInertia inner_fluid_inertia = InnerFluidInertia::kempe;
   bool sub_markers = false;          // extra IB markers when marker spacing exceeds the cell size
   // Markers moved towards the body's centre by this fraction of h (Breugem 2012 "retraction"): the
   // regularised kernel makes the forced body look larger than its rim by a fraction of a cell
@@ -93,7 +108,7 @@ struct IbmSpec {
   //             previous step's forces enter the implicit solve as a predictor, and corrections are
   //             projected with the pressure until the slip |J u^{n+1} - U_target| is below
   //             slip_tolerance U_ref at every marker (Taira & Colonius 2007, in incremental form).
-  std::string coupling = "uhlmann";
+  Coupling coupling = Coupling::uhlmann;
   double slip_tolerance = 1.0e-3;    // no_slip: largest slip left at the end of the step / U_ref [-]
   int max_coupling_iterations = 100; // no_slip: GMRES products (one Poisson solve each) per step at most [-]
   // no_slip: the velocity the constraint holds (docs/method.md §3.7):
@@ -103,7 +118,7 @@ struct IbmSpec {
   //           the mean of its face values like the pressure gradient. It removes the flux through
   //           the body that the momentum interpolation leaves under "cells", whose size is
   //           proportional to dt (validation/dfg_cylinder_2d2/README.md).
-  std::string constrained_velocity = "cells";
+  ConstrainedVelocity constrained_velocity = ConstrainedVelocity::cells;
   // no_slip: a rigid body moves with a virtual mass C_V rho_f V on both sides of Newton-Euler, the
   // right-hand one times the previous step's acceleration (Schwarz, Kempe & Froehlich 2015), so that
   // the fluid's added mass, which the constraint force carries one step late, does not set off the
@@ -125,7 +140,10 @@ struct SwellingSpec {
 //               theta(t) = Omega t + Theta sin(2 pi t / T + phase); the fluid is forced to it.
 // scene/scene_reader.cpp rejects keys that do not belong to the kind (scene_schema.hpp).
 struct BodySpec {
-  std::string kind = "mass_spring";  // mass_spring | rigid | prescribed
+  enum class Kind { mass_spring, rigid, prescribed };
+  enum class MassLumping { equal, uniform_disk };
+  enum class SpringIntegrator { automatic, explicit_euler, implicit_euler };  // auto | explicit | implicit
+  Kind kind = Kind::mass_spring;     // mass_spring | rigid | prescribed
   std::array<double, 2> centre{0.0, 0.0};          // [length]
   std::array<double, 2> velocity{0.0, 0.0};        // initial (prescribed: constant) velocity [length/time]
   double angular_velocity = 0.0;     // initial (prescribed: constant) rotation rate, counter-clockwise [1/time]
@@ -144,15 +162,17 @@ struct BodySpec {
   double spring_damping = -1.0;      // c_s [force time/length^2]; < 0: from restitution
   double restitution_coefficient = 1.0;  // e_s in (0, 1] [-], used when spring_damping < 0
   bool cross_springs = false;        // extra (l, l+2) rim springs
-  std::string mass_lumping = "equal";  // equal (M = rho_s V / (N_l + 1)) | uniform_disk
+  MassLumping mass_lumping = MassLumping::equal;  // equal (M = rho_s V / (N_l + 1)) | uniform_disk
   // explicit: symplectic-Euler sub-steps below the springs' stability limit; implicit: one
   // linearly implicit Euler step per solid sub-step, no spring limit (solid/implicit_euler.hpp);
   // auto: implicit when the springs would need more than 50 explicit sub-steps per fluid step.
-  std::string spring_integrator = "auto";
+  SpringIntegrator spring_integrator = SpringIntegrator::automatic;
   SwellingSpec swelling;
 };
 
 struct ContactSpec {
+  enum class TimeStepping { inner_loop, shared };
+  enum class Model { linear, collision_time };
   double stiffness = 0.0;            // k_Dn [force/length^2 per unit depth]; 0 = contacts off
   double restitution_coefficient = 1.0;  // e_D in (0, 1] [-]
   double cds_radius = 0.0;           // absolute CDS radius [length]; 0: use cds_radius_fraction
@@ -161,14 +181,14 @@ struct ContactSpec {
   // "inner_loop": a group of mass-spring bodies that may touch something takes its springs'
   // sub-step, the contact sub-step only in an inner loop over the points near a contact
   // (contact/contact_subcycle.hpp); "shared": every point of the group at the contact sub-step.
-  std::string time_stepping = "inner_loop";
+  TimeStepping time_stepping = TimeStepping::inner_loop;
   // "linear": the papers' law at k_Dn = stiffness. "collision_time": the same law with k and c
   // chosen per contact from m_eff and e_D so that a single-pair contact lasts
   // T_c = collision_steps fluid steps (docs/method.md §5.5); stiffness is then not given.
-  std::string model = "linear";
+  Model model = Model::linear;
   double collision_steps = 10.0;     // T_c / dt [-], collision_time only
   // Contacts act: a linear law with k_Dn > 0, or the collision-time law.
-  bool enabled() const { return stiffness > 0.0 || model == "collision_time"; }
+  bool enabled() const { return stiffness > 0.0 || model == Model::collision_time; }
 };
 
 struct OutputSpec {
@@ -197,7 +217,7 @@ struct Scene {
   OutputSpec output;
 
   bool has_bodies() const { return !bodies.empty(); }
-  bool has_kind(const std::string& kind) const {
+  bool has_kind(BodySpec::Kind kind) const {
     for (const BodySpec& b : bodies)
       if (b.kind == kind) return true;
     return false;

@@ -12,6 +12,8 @@
 
 #include <fmt/format.h>
 
+#include "scene/scene_schema.hpp"
+
 namespace ibms {
 
 namespace {
@@ -48,7 +50,7 @@ void check_open_sides(const Scene& scene, const SceneDiagnostics& diagnostics) {
                {"bottom", scene.walls.bottom, 1, false},
                {"top", scene.walls.top, 1, true}};
   for (const auto& side : sides) {
-    if (side.side.kind != "inflow" && side.side.kind != "outflow") continue;
+    if (side.side.kind != WallSpec::Kind::inflow && side.side.kind != WallSpec::Kind::outflow) continue;
     const double length = side.axis == 0 ? d.length_x : d.length_y;
     const double h = length / (side.axis == 0 ? d.cells_x : d.cells_y);
     for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
@@ -60,7 +62,7 @@ void check_open_sides(const Scene& scene, const SceneDiagnostics& diagnostics) {
         diagnostics.fail(fmt::format("bodies.{}.centre", b),
                          fmt::format("the body's rim is {} from the {} side ({}), closer than {} cells ({}): the "
                                      "immersed boundary needs walls or periodic sides within its kernel's reach",
-                                     gap, side.name, side.side.kind, open_side_clearance_cells,
+                                     gap, side.name, scene_schema::name_of(side.side.kind), open_side_clearance_cells,
                                      open_side_clearance_cells * h));
     }
   }
@@ -114,10 +116,11 @@ void check_bodies(const Scene& scene, const SceneDiagnostics& diagnostics) {
       // Prescribed bodies may overlap each other, and a body may lie wholly inside a prescribed
       // one (a container such as the outer cylinder of circular Couette flow): neither is moved by
       // the other. Any other overlap is an error.
-      const bool both_prescribed = body.kind == "prescribed" && neighbour.kind == "prescribed";
+      constexpr BodySpec::Kind prescribed = BodySpec::Kind::prescribed;
+      const bool both_prescribed = body.kind == prescribed && neighbour.kind == prescribed;
       const double r_body = 0.5 * body.diameter, r_neighbour = 0.5 * neighbour.diameter;
-      const bool nested = (neighbour.kind == "prescribed" && distance + r_body < r_neighbour) ||
-                          (body.kind == "prescribed" && distance + r_neighbour < r_body);
+      const bool nested = (neighbour.kind == prescribed && distance + r_body < r_neighbour) ||
+                          (body.kind == prescribed && distance + r_neighbour < r_body);
       if (distance < contact_distance && !both_prescribed && !nested) {
         diagnostics.fail(fmt::format("bodies.{}.centre", b),
                          fmt::format("body {} overlaps body {}: centre distance {} < sum of radii {}",
@@ -130,16 +133,16 @@ void check_bodies(const Scene& scene, const SceneDiagnostics& diagnostics) {
 // ibm.coupling = "no_slip" on a mass-spring body solves the rim's response with the constraint,
 // marker by rim point (docs/method.md §3.7): sub-markers between the rim points are not part of it.
 void check_coupling(const Scene& scene, const SceneDiagnostics& diagnostics) {
-  if (scene.ibm.coupling != "no_slip" || !scene.ibm.sub_markers) return;
+  if (scene.ibm.coupling != IbmSpec::Coupling::no_slip || !scene.ibm.sub_markers) return;
   for (std::size_t b = 0; b < scene.bodies.size(); ++b)
-    if (scene.bodies[b].kind == "mass_spring")
+    if (scene.bodies[b].kind == BodySpec::Kind::mass_spring)
       diagnostics.fail("ibm.sub_markers",
                        fmt::format("is true, but \"no_slip\" couples a mass_spring body (body {}) through its rim "
                                    "points alone: set ibm.sub_markers = false, or ibm.coupling = \"uhlmann\"", b));
 }
 
 void check_contact(const ContactSpec& contact, const SceneDiagnostics& diagnostics) {
-  const bool collision_time = contact.model == "collision_time";
+  const bool collision_time = contact.model == ContactSpec::Model::collision_time;
   if (contact.enabled() && contact.cds_radius <= 0.0 && contact.cds_radius_fraction <= 0.0) {
     if (collision_time)
       diagnostics.fail("contact.model", "is \"collision_time\" (contacts on) but neither contact.cds_radius nor "
@@ -200,10 +203,11 @@ void check_scene_consistency(const Scene& scene, const SceneDiagnostics& diagnos
 double boundary_speed_scale(const WallsSpec& walls) {
   double speed = 0.0;
   for (const WallSpec* w : {&walls.left, &walls.right, &walls.bottom, &walls.top}) {
-    if (w->kind == "wall") speed = std::max(speed, std::abs(w->speed));
-    if (w->kind == "inflow") {
-      const double factor =
-          w->time_factor == "sinusoidal" ? std::abs(w->factor_offset) + std::abs(w->factor_amplitude) : 1.0;
+    if (w->kind == WallSpec::Kind::wall) speed = std::max(speed, std::abs(w->speed));
+    if (w->kind == WallSpec::Kind::inflow) {
+      const double factor = w->time_factor == WallSpec::TimeFactor::sinusoidal
+                                ? std::abs(w->factor_offset) + std::abs(w->factor_amplitude)
+                                : 1.0;
       speed = std::max(speed, std::abs(w->velocity) * factor);
     }
   }

@@ -34,9 +34,9 @@ void read_run(const TomlTableReader& table, RunSpec& run) {
   table.read_integer("max_steps", run.max_steps, Need::optional, /*lower=*/0);
   table.read_real("max_cfl", run.max_cfl, Need::optional, positive);
   table.read_real("max_viscous_number", run.max_viscous_number, Need::optional, non_negative);
-  table.read_choice("solid_substeps", run.solid_substeps, schema::solid_substeps_choices);
-  table.read_choice("on_body_instability", run.on_body_instability, schema::on_body_instability_choices);
-  table.read_choice("on_fluid_instability", run.on_fluid_instability, schema::on_fluid_instability_choices);
+  table.read_choice("solid_substeps", run.solid_substeps);
+  table.read_choice("on_body_instability", run.on_body_instability);
+  table.read_choice("on_fluid_instability", run.on_fluid_instability);
 }
 
 void read_domain(const TomlTableReader& table, DomainSpec& domain) {
@@ -55,8 +55,8 @@ void read_fluid(const TomlTableReader& table, FluidSpec& fluid) {
   table.read_real("density", fluid.density, Need::optional, positive);
   table.read_real("kinematic_viscosity", fluid.kinematic_viscosity, Need::required, positive);
   table.read_pair("gravity", fluid.gravity, Need::optional);
-  table.read_choice("convection", fluid.convection, schema::convection_choices);
-  table.read_choice("wall_closure", fluid.wall_closure, schema::wall_closure_choices);
+  table.read_choice("convection", fluid.convection);
+  table.read_choice("wall_closure", fluid.wall_closure);
 }
 
 // The four sides of the box (fluid/boundary_conditions.hpp). A side of a periodic direction is
@@ -74,52 +74,55 @@ void read_walls(const TomlTableReader& table, DomainSpec& domain, WallsSpec& wal
     WallSpec& w = *sides[s];
     side.reject_unknown_keys(schema::wall_keys);
     const bool periodic_axis = s < 2 ? domain.periodic_x : domain.periodic_y;
-    if (periodic_axis) w.kind = "periodic";
-    const bool kind_given = side.read_choice("kind", w.kind, schema::side_kind_choices);
-    if (periodic_axis && w.kind != "periodic")
-      side.fail("kind", fmt::format("is '{}', but domain.periodic_{} = true makes this side periodic", w.kind,
+    if (periodic_axis) w.kind = WallSpec::Kind::periodic;
+    const bool kind_given = side.read_choice("kind", w.kind);
+    if (periodic_axis && w.kind != WallSpec::Kind::periodic)
+      side.fail("kind", fmt::format("is '{}', but domain.periodic_{} = true makes this side periodic",
+                                    schema::name_of(w.kind),
                                     s < 2 ? "x" : "y"));
     (void)kind_given;
-    side.reject_keys_outside(schema::keys_of_side_kind(w.kind), fmt::format("a side of kind '{}'", w.kind));
-    if (w.kind == "wall") {
+    side.reject_keys_outside(schema::keys_of_side_kind(w.kind),
+                             fmt::format("a side of kind '{}'", schema::name_of(w.kind)));
+    if (w.kind == WallSpec::Kind::wall) {
       side.read_real("speed", w.speed, Need::optional, any_finite);
       side.read_real("stop_time", w.stop_time, Need::optional, non_negative_or_infinite);
-    } else if (w.kind == "inflow") {
-      side.read_choice("profile", w.profile, schema::inflow_profile_choices);
+    } else if (w.kind == WallSpec::Kind::inflow) {
+      side.read_choice("profile", w.profile);
       side.read_real("velocity", w.velocity, Need::required, positive);
-      side.read_choice("time_factor", w.time_factor, schema::time_factor_choices);
+      side.read_choice("time_factor", w.time_factor);
       side.read_real("ramp_time", w.ramp_time, Need::optional, positive);
       side.read_real("factor_offset", w.factor_offset, Need::optional, any_finite);
       side.read_real("factor_amplitude", w.factor_amplitude, Need::optional, any_finite);
       side.read_real("factor_period", w.factor_period, Need::optional, positive);
-      if (w.time_factor == "ramp" && !(w.ramp_time > 0.0))
+      if (w.time_factor == WallSpec::TimeFactor::ramp && !(w.ramp_time > 0.0))
         side.fail("ramp_time", "must be given (> 0) with time_factor = 'ramp'");
-      if (w.time_factor == "sinusoidal" && !(w.factor_period > 0.0))
+      if (w.time_factor == WallSpec::TimeFactor::sinusoidal && !(w.factor_period > 0.0))
         side.fail("factor_period", "must be given (> 0) with time_factor = 'sinusoidal'");
     }
   }
   // Periodic directions: both sides or neither.
   for (int axis = 0; axis < 2; ++axis) {
     const WallSpec &low = *sides[2 * axis], &high = *sides[2 * axis + 1];
-    const bool low_periodic = low.kind == "periodic", high_periodic = high.kind == "periodic";
+    const bool low_periodic = low.kind == WallSpec::Kind::periodic;
+    const bool high_periodic = high.kind == WallSpec::Kind::periodic;
     if (low_periodic != high_periodic) {
       const int lone = low_periodic ? 2 * axis : 2 * axis + 1;
       readers[lone].fail("kind", fmt::format("'periodic' needs the opposite side periodic too, but walls.{}.kind = '{}'",
                                              schema::wall_names[low_periodic ? 2 * axis + 1 : 2 * axis],
-                                             low_periodic ? high.kind : low.kind));
+                                             schema::name_of(low_periodic ? high.kind : low.kind)));
     }
     if (low_periodic) (axis == 0 ? domain.periodic_x : domain.periodic_y) = true;
   }
   int inflows = 0, outflows = 0;
   for (const WallSpec* w : sides) {
-    inflows += w->kind == "inflow";
-    outflows += w->kind == "outflow";
+    inflows += w->kind == WallSpec::Kind::inflow;
+    outflows += w->kind == WallSpec::Kind::outflow;
   }
   for (std::size_t s = 0; s < 4; ++s) {
-    if (sides[s]->kind == "inflow" && outflows == 0)
+    if (sides[s]->kind == WallSpec::Kind::inflow && outflows == 0)
       readers[s].fail("kind", "an inflow needs an outflow side: with walls or periodic sides elsewhere the fluid "
                               "it brings in cannot leave (the pressure equation has no solution)");
-    if (sides[s]->kind == "outflow" && inflows == 0 && outflows > 1)
+    if (sides[s]->kind == WallSpec::Kind::outflow && inflows == 0 && outflows > 1)
       readers[s].fail("kind", "several outflow sides without an inflow: nothing drives a flow through them, and "
                               "the flux between them is undetermined");
   }
@@ -127,17 +130,16 @@ void read_walls(const TomlTableReader& table, DomainSpec& domain, WallsSpec& wal
 
 void read_ibm(const TomlTableReader& table, IbmSpec& ibm) {
   table.reject_unknown_keys(schema::ibm_keys);
-  table.read_choice("kernel", ibm.kernel, schema::kernel_choices);
+  table.read_choice("kernel", ibm.kernel);
   table.read_integer("forcing_passes", ibm.forcing_passes, Need::optional, /*lower=*/1);
-  table.read_choice("forcing_stage", ibm.forcing_stage, schema::forcing_stage_choices);
-  table.read_choice("inner_fluid_inertia", ibm.inner_fluid_inertia,
-                    schema::inner_fluid_inertia_choices);
+  table.read_choice("forcing_stage", ibm.forcing_stage);
+  table.read_choice("inner_fluid_inertia", ibm.inner_fluid_inertia);
   table.read_bool("sub_markers", ibm.sub_markers);
   table.read_real("marker_retraction", ibm.marker_retraction, Need::optional, Bounds{0.0, false, 1.0, true});
-  table.read_choice("coupling", ibm.coupling, schema::coupling_choices);
+  table.read_choice("coupling", ibm.coupling);
   table.read_real("slip_tolerance", ibm.slip_tolerance, Need::optional, Bounds{0.0, true, 1.0, false});
   table.read_integer("max_coupling_iterations", ibm.max_coupling_iterations, Need::optional, /*lower=*/1);
-  table.read_choice("constrained_velocity", ibm.constrained_velocity, schema::constrained_velocity_choices);
+  table.read_choice("constrained_velocity", ibm.constrained_velocity);
   table.read_real("virtual_mass_coefficient", ibm.virtual_mass_coefficient, Need::optional, Bounds{0.0, false, 10.0, false});
 }
 
@@ -156,8 +158,9 @@ void read_swelling(const TomlTableReader& table, double diameter, SwellingSpec& 
 
 void read_body(const TomlTableReader& table, BodySpec& body) {
   table.reject_unknown_keys(schema::body_keys);
-  table.read_choice("kind", body.kind, schema::body_kind_choices);
-  table.reject_keys_outside(schema::keys_of_body_kind(body.kind), fmt::format("a body of kind '{}'", body.kind));
+  table.read_choice("kind", body.kind);
+  table.reject_keys_outside(schema::keys_of_body_kind(body.kind),
+                            fmt::format("a body of kind '{}'", schema::name_of(body.kind)));
   table.read_pair("centre", body.centre, Need::required);
   table.read_pair("velocity", body.velocity, Need::optional);
   table.read_real("angular_velocity", body.angular_velocity, Need::optional, any_finite);
@@ -165,7 +168,7 @@ void read_body(const TomlTableReader& table, BodySpec& body) {
   table.read_integer("n_surface_points", body.n_surface_points, Need::required, /*lower=*/3);
   table.read_real("reference_speed", body.reference_speed, Need::optional, non_negative);
   table.read_real("reference_length", body.reference_length, Need::optional, non_negative);
-  if (body.kind == "prescribed") {
+  if (body.kind == BodySpec::Kind::prescribed) {
     table.read_pair("oscillation_amplitude", body.oscillation_amplitude, Need::optional);
     table.read_real("angle_amplitude", body.angle_amplitude, Need::optional, any_finite);
     table.read_real("oscillation_period", body.oscillation_period, Need::optional, non_negative);
@@ -177,14 +180,14 @@ void read_body(const TomlTableReader& table, BodySpec& body) {
     return;
   }
   table.read_real("density", body.density, Need::required, positive);
-  if (body.kind == "rigid") return;
+  if (body.kind == BodySpec::Kind::rigid) return;
   table.read_real("spring_stiffness", body.spring_stiffness, Need::required, positive);
   table.read_real("spring_damping", body.spring_damping, Need::optional, non_negative);
   table.read_real("restitution_coefficient", body.restitution_coefficient, Need::optional,
                   unit_interval_open_closed);
   table.read_bool("cross_springs", body.cross_springs);
-  table.read_choice("mass_lumping", body.mass_lumping, schema::mass_lumping_choices);
-  table.read_choice("spring_integrator", body.spring_integrator, schema::spring_integrator_choices);
+  table.read_choice("mass_lumping", body.mass_lumping);
+  table.read_choice("spring_integrator", body.spring_integrator);
   read_swelling(table.sub_table("swelling"), body.diameter, body.swelling);
 }
 
@@ -264,8 +267,8 @@ Scene scene_from_table(const toml::table& root, SceneDiagnostics& diagnostics) {
   contact.read_real("cds_radius_fraction", scene.contact.cds_radius_fraction, Need::optional,
                     non_negative);
   contact.read_bool("walls", scene.contact.walls);
-  contact.read_choice("time_stepping", scene.contact.time_stepping, schema::contact_time_stepping_choices);
-  contact.read_choice("model", scene.contact.model, schema::contact_model_choices);
+  contact.read_choice("time_stepping", scene.contact.time_stepping);
+  contact.read_choice("model", scene.contact.model);
   // Finite and > 0 here; the lower bound of one fluid step, with its reason, in scene_checks.cpp.
   contact.read_real("collision_steps", scene.contact.collision_steps, Need::optional, positive);
   TomlTableReader output = section("output");

@@ -16,17 +16,22 @@ std::span<const std::string_view> keys_of_section(std::string_view section) {
   return {};
 }
 
-std::span<const std::string_view> keys_of_side_kind(std::string_view kind) {
-  if (kind == "wall") return wall_side_keys;
-  if (kind == "inflow") return inflow_side_keys;
-  if (kind == "outflow" || kind == "periodic") return open_side_keys;
+std::span<const std::string_view> keys_of_side_kind(WallSpec::Kind kind) {
+  switch (kind) {
+    case WallSpec::Kind::wall: return wall_side_keys;
+    case WallSpec::Kind::inflow: return inflow_side_keys;
+    case WallSpec::Kind::outflow:
+    case WallSpec::Kind::periodic: return open_side_keys;
+  }
   return {};
 }
 
-std::span<const std::string_view> keys_of_body_kind(std::string_view kind) {
-  if (kind == "mass_spring") return mass_spring_body_keys;
-  if (kind == "rigid") return rigid_body_keys;
-  if (kind == "prescribed") return prescribed_body_keys;
+std::span<const std::string_view> keys_of_body_kind(BodySpec::Kind kind) {
+  switch (kind) {
+    case BodySpec::Kind::mass_spring: return mass_spring_body_keys;
+    case BodySpec::Kind::rigid: return rigid_body_keys;
+    case BodySpec::Kind::prescribed: return prescribed_body_keys;
+  }
   return {};
 }
 

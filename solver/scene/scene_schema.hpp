@@ -1,10 +1,17 @@
 // The scene schema: which sections and keys a scene may contain (docs/design.md §4). One list serves
 // the reader (unknown-key errors), the `--set` overrides (key validation) and the suggestions
 // for misspelt keys, so the three can never disagree. Key names equal the fields in scene.hpp.
+// The values of each option with a fixed set of names are an enum (scene.hpp) with one table of
+// (value, name) pairs here, Choices<Enum>: the reader parses with it (scene names in messages,
+// in the table's order), the resolved scene and messages write name_of(value).
 #pragma once
+#include <array>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
+
+#include "scene/scene.hpp"
 
 namespace ibms::scene_schema {
 
@@ -16,36 +23,25 @@ inline constexpr std::string_view run_keys[] = {"end_time",         "time_step",
                                                 "max_steps",        "max_cfl",
                                                 "max_viscous_number", "solid_substeps", "on_body_instability",
                                                 "on_fluid_instability"};
-inline constexpr std::string_view on_body_instability_choices[] = {"stop", "warn"};
-inline constexpr std::string_view on_fluid_instability_choices[] = {"stop", "warn"};
-inline constexpr std::string_view solid_substeps_choices[] = {"per_group", "global"};
 inline constexpr std::string_view domain_keys[] = {"length_x", "length_y",   "cells_x",
                                                    "cells_y",  "periodic_x", "periodic_y"};
 inline constexpr std::string_view fluid_keys[] = {"density", "kinematic_viscosity", "gravity", "convection",
                                                   "wall_closure"};
-inline constexpr std::string_view convection_choices[] = {"central", "quick"};
-inline constexpr std::string_view wall_closure_choices[] = {"linear", "quadratic"};
 inline constexpr std::string_view wall_names[] = {"left", "right", "bottom", "top"};
 inline constexpr std::string_view wall_keys[] = {"kind",     "speed",       "stop_time",     "profile",
                                                  "velocity", "time_factor", "ramp_time",     "factor_offset",
                                                  "factor_amplitude", "factor_period"};
 // The keys each side kind accepts (a subset of wall_keys).
-inline constexpr std::string_view side_kind_choices[] = {"wall", "inflow", "outflow", "periodic"};
 inline constexpr std::string_view wall_side_keys[] = {"kind", "speed", "stop_time"};
 inline constexpr std::string_view inflow_side_keys[] = {"kind",      "profile",       "velocity",
                                                         "time_factor", "ramp_time",   "factor_offset",
                                                         "factor_amplitude", "factor_period"};
 inline constexpr std::string_view open_side_keys[] = {"kind"};  // outflow, periodic
-inline constexpr std::string_view inflow_profile_choices[] = {"uniform", "parabolic"};
-inline constexpr std::string_view time_factor_choices[] = {"constant", "ramp", "sinusoidal"};
-std::span<const std::string_view> keys_of_side_kind(std::string_view kind);
+std::span<const std::string_view> keys_of_side_kind(WallSpec::Kind kind);
 inline constexpr std::string_view ibm_keys[] = {"kernel", "forcing_passes", "forcing_stage",
                                                 "inner_fluid_inertia", "sub_markers", "marker_retraction",
                                                 "coupling", "slip_tolerance", "max_coupling_iterations",
                                                 "constrained_velocity", "virtual_mass_coefficient"};
-inline constexpr std::string_view coupling_choices[] = {"uhlmann", "no_slip"};
-inline constexpr std::string_view constrained_velocity_choices[] = {"cells", "faces"};
-inline constexpr std::string_view forcing_stage_choices[] = {"explicit_estimate", "implicit_prediction"};
 inline constexpr std::string_view body_keys[] = {
     "kind",          "centre",           "velocity",       "angular_velocity",
     "diameter",      "n_surface_points", "density",        "spring_stiffness",
@@ -53,7 +49,6 @@ inline constexpr std::string_view body_keys[] = {
     "swelling",      "oscillation_amplitude", "angle_amplitude", "oscillation_period",
     "oscillation_phase", "reference_speed", "reference_length"};
 // The keys each body kind accepts (a subset of body_keys); any other key is an error naming the kind.
-inline constexpr std::string_view body_kind_choices[] = {"mass_spring", "rigid", "prescribed"};
 inline constexpr std::string_view mass_spring_body_keys[] = {
     "kind",          "centre",           "velocity",       "angular_velocity",
     "diameter",      "n_surface_points", "density",        "spring_stiffness",
@@ -70,19 +65,93 @@ inline constexpr std::string_view swelling_keys[] = {"onset_time", "rate", "max_
 inline constexpr std::string_view contact_keys[] = {"stiffness", "restitution_coefficient",
                                                     "cds_radius", "cds_radius_fraction", "walls",
                                                     "time_stepping", "model", "collision_steps"};
-inline constexpr std::string_view contact_time_stepping_choices[] = {"inner_loop", "shared"};
-inline constexpr std::string_view contact_model_choices[] = {"linear", "collision_time"};
 inline constexpr std::string_view output_keys[] = {"file", "series_every", "snapshot_interval",
                                                    "centreline_profiles", "progress", "checkpoint_every",
                                                    "probes"};
 
-inline constexpr std::string_view kernel_choices[] = {"roma3", "peskin4", "cosine4", "bkp6"};
-inline constexpr std::string_view inner_fluid_inertia_choices[] = {"kempe", "none"};
-inline constexpr std::string_view mass_lumping_choices[] = {"equal", "uniform_disk"};
-inline constexpr std::string_view spring_integrator_choices[] = {"auto", "explicit", "implicit"};
+// One scene name of an enum value.
+template <class Enum>
+struct Choice {
+  Enum value;
+  std::string_view name;
+};
 
-// Keys a body of this kind accepts (empty for an unknown kind).
-std::span<const std::string_view> keys_of_body_kind(std::string_view kind);
+// Choices<Enum>::table: every value of the enum with its scene name, in the order messages list them.
+template <class Enum>
+struct Choices;
+
+#define IBMS_SCENE_CHOICES(Enum, ...)                                        \
+  template <>                                                                \
+  struct Choices<Enum> {                                                     \
+    static constexpr Choice<Enum> table[] = {__VA_ARGS__};                   \
+  }
+
+IBMS_SCENE_CHOICES(RunSpec::SolidSubsteps, {RunSpec::SolidSubsteps::per_group, "per_group"},
+                   {RunSpec::SolidSubsteps::global, "global"});
+// run.on_body_instability and run.on_fluid_instability.
+IBMS_SCENE_CHOICES(RunSpec::OnInstability, {RunSpec::OnInstability::stop, "stop"},
+                   {RunSpec::OnInstability::warn, "warn"});
+IBMS_SCENE_CHOICES(FluidSpec::Convection, {FluidSpec::Convection::central, "central"},
+                   {FluidSpec::Convection::quick, "quick"});
+IBMS_SCENE_CHOICES(FluidSpec::WallClosure, {FluidSpec::WallClosure::linear, "linear"},
+                   {FluidSpec::WallClosure::quadratic, "quadratic"});
+IBMS_SCENE_CHOICES(WallSpec::Kind, {WallSpec::Kind::wall, "wall"}, {WallSpec::Kind::inflow, "inflow"},
+                   {WallSpec::Kind::outflow, "outflow"}, {WallSpec::Kind::periodic, "periodic"});
+IBMS_SCENE_CHOICES(WallSpec::Profile, {WallSpec::Profile::uniform, "uniform"},
+                   {WallSpec::Profile::parabolic, "parabolic"});
+IBMS_SCENE_CHOICES(WallSpec::TimeFactor, {WallSpec::TimeFactor::constant, "constant"},
+                   {WallSpec::TimeFactor::ramp, "ramp"}, {WallSpec::TimeFactor::sinusoidal, "sinusoidal"});
+IBMS_SCENE_CHOICES(IbmSpec::Kernel, {IbmSpec::Kernel::roma3, "roma3"}, {IbmSpec::Kernel::peskin4, "peskin4"},
+                   {IbmSpec::Kernel::cosine4, "cosine4"}, {IbmSpec::Kernel::bkp6, "bkp6"});
+IBMS_SCENE_CHOICES(IbmSpec::ForcingStage, {IbmSpec::ForcingStage::explicit_estimate, "explicit_estimate"},
+                   {IbmSpec::ForcingStage::implicit_prediction, "implicit_prediction"});
+IBMS_SCENE_CHOICES(IbmSpec::InnerFluidInertia, {IbmSpec::InnerFluidInertia::kempe, "kempe"},
+                   {IbmSpec::InnerFluidInertia::none, "none"});
+IBMS_SCENE_CHOICES(IbmSpec::Coupling, {IbmSpec::Coupling::uhlmann, "uhlmann"},
+                   {IbmSpec::Coupling::no_slip, "no_slip"});
+IBMS_SCENE_CHOICES(IbmSpec::ConstrainedVelocity, {IbmSpec::ConstrainedVelocity::cells, "cells"},
+                   {IbmSpec::ConstrainedVelocity::faces, "faces"});
+IBMS_SCENE_CHOICES(BodySpec::Kind, {BodySpec::Kind::mass_spring, "mass_spring"}, {BodySpec::Kind::rigid, "rigid"},
+                   {BodySpec::Kind::prescribed, "prescribed"});
+IBMS_SCENE_CHOICES(BodySpec::MassLumping, {BodySpec::MassLumping::equal, "equal"},
+                   {BodySpec::MassLumping::uniform_disk, "uniform_disk"});
+IBMS_SCENE_CHOICES(BodySpec::SpringIntegrator, {BodySpec::SpringIntegrator::automatic, "auto"},
+                   {BodySpec::SpringIntegrator::explicit_euler, "explicit"},
+                   {BodySpec::SpringIntegrator::implicit_euler, "implicit"});
+IBMS_SCENE_CHOICES(ContactSpec::TimeStepping, {ContactSpec::TimeStepping::inner_loop, "inner_loop"},
+                   {ContactSpec::TimeStepping::shared, "shared"});
+IBMS_SCENE_CHOICES(ContactSpec::Model, {ContactSpec::Model::linear, "linear"},
+                   {ContactSpec::Model::collision_time, "collision_time"});
+
+#undef IBMS_SCENE_CHOICES
+
+// The scene names of an enum's values, in table order (for "must be one of ..." messages).
+template <class Enum>
+inline constexpr auto choice_names = [] {
+  constexpr auto& table = Choices<Enum>::table;
+  std::array<std::string_view, std::size(table)> names{};
+  for (std::size_t k = 0; k < names.size(); ++k) names[k] = table[k].name;
+  return names;
+}();
+
+// The scene name of a value (every enumerator is in its table).
+template <class Enum>
+constexpr std::string_view name_of(Enum value) {
+  for (const Choice<Enum>& choice : Choices<Enum>::table)
+    if (choice.value == value) return choice.name;
+  return "?";
+}
+
+// The value a scene name stands for; empty for a name not in the table.
+template <class Enum>
+constexpr std::optional<Enum> parse_choice(std::string_view name) {
+  for (const Choice<Enum>& choice : Choices<Enum>::table)
+    if (choice.name == name) return choice.value;
+  return std::nullopt;
+}
+
+// Keys a body of this kind accepts.
+std::span<const std::string_view> keys_of_body_kind(BodySpec::Kind kind);
 
 // Keys of a plain section (run, domain, fluid, ibm, contact, output); empty for walls/bodies.
 std::span<const std::string_view> keys_of_section(std::string_view section);

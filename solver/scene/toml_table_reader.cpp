@@ -161,13 +161,13 @@ bool TomlTableReader::read_string(std::string_view key, std::string& out) const 
   return true;
 }
 
-bool TomlTableReader::read_choice(std::string_view key, std::string& out,
-                                  std::span<const std::string_view> choices) const {
+bool TomlTableReader::read_choice_index(std::string_view key, std::size_t& index,
+                                        std::span<const std::string_view> choices) const {
   std::string value;
   if (!read_string(key, value)) return false;
-  for (const std::string_view choice : choices) {
-    if (choice == value) {
-      out = value;
+  for (std::size_t k = 0; k < choices.size(); ++k) {
+    if (choices[k] == value) {
+      index = k;
       return true;
     }
   }

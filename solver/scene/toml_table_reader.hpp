@@ -12,6 +12,7 @@
 #include <toml++/toml.h>
 
 #include "scene/scene_diagnostics.hpp"
+#include "scene/scene_schema.hpp"
 
 namespace ibms {
 
@@ -63,8 +64,15 @@ class TomlTableReader {
                     long upper = INT_MAX) const;
   bool read_bool(std::string_view key, bool& out) const;
   bool read_string(std::string_view key, std::string& out) const;
-  bool read_choice(std::string_view key, std::string& out,
-                   std::span<const std::string_view> choices) const;
+  // A string naming one value of Enum (scene_schema.hpp: Choices<Enum>); any other string fails
+  // with the allowed names and a close match.
+  template <class Enum>
+  bool read_choice(std::string_view key, Enum& out) const {
+    std::size_t index = 0;
+    if (!read_choice_index(key, index, scene_schema::choice_names<Enum>)) return false;
+    out = scene_schema::Choices<Enum>::table[index].value;
+    return true;
+  }
   bool read_pair(std::string_view key, std::array<double, 2>& out, Need need) const;  // [a, b], finite
   // [[a, b], [c, d], ...], each pair finite; an empty array is allowed.
   bool read_pairs(std::string_view key, std::vector<std::array<double, 2>>& out) const;
@@ -75,6 +83,9 @@ class TomlTableReader {
   [[noreturn]] void fail(std::string_view key, const std::string& reason) const;
 
  private:
+  // The position in `choices` of the string at `key`; false when the key is absent.
+  bool read_choice_index(std::string_view key, std::size_t& index,
+                         std::span<const std::string_view> choices) const;
   // The node at `key`, or null when absent (error if required); remembers its place.
   const toml::node* find(std::string_view key, Need need) const;
   [[noreturn]] void fail_type(std::string_view key, const toml::node& node,

@@ -51,7 +51,7 @@ namespace {
 void report_body_instability(const Simulation& sim, const std::string& what) {
   const FluidState& f = sim.fluid();
   const std::string advice = "; reduce run.time_step, or do not fix the solid sub-steps";
-  if (sim.scene().run.on_body_instability == "stop")
+  if (sim.scene().run.on_body_instability == RunSpec::OnInstability::stop)
     throw BlowUpError(fmt::format("blow-up at step {}, t = {:.6g}: {}{}", f.step, f.time, what, advice));
   if (sim.instability_warned) return;
   sim.instability_warned = true;

@@ -55,7 +55,7 @@ double side_power(const Simulation& sim, Side s) {
 void report_fluid_instability(Simulation& sim, const std::string& what) {
   const FluidState& f = sim.fluid();
   const std::string advice = "; reduce run.cfl or run.time_step (docs/fluid-stability.md)";
-  if (sim.scene().run.on_fluid_instability == "stop")
+  if (sim.scene().run.on_fluid_instability == RunSpec::OnInstability::stop)
     throw BlowUpError(fmt::format("blow-up at step {}, t = {:.6g}: {}{}", f.step, f.time, what, advice));
   if (sim.fluid_guard.warned) return;
   sim.fluid_guard.warned = true;

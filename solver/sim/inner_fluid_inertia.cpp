@@ -111,10 +111,12 @@ void no_inner_fluid_inertia(const Grid&, double, const FluidState&, const std::v
   }
 }
 
-InnerFluidInertia inner_fluid_inertia_from_name(const std::string& name) {
-  if (name == "kempe") return &kempe_inner_fluid_inertia;
-  if (name == "none") return &no_inner_fluid_inertia;
-  throw std::invalid_argument("unknown ibm.inner_fluid_inertia '" + name + "' (kempe | none)");
+InnerFluidInertia inner_fluid_inertia_of(IbmSpec::InnerFluidInertia variant) {
+  switch (variant) {
+    case IbmSpec::InnerFluidInertia::kempe: return &kempe_inner_fluid_inertia;
+    case IbmSpec::InnerFluidInertia::none: return &no_inner_fluid_inertia;
+  }
+  throw std::invalid_argument("unknown ibm.inner_fluid_inertia");
 }
 
 Vec2 inner_fluid_momentum(double fluid_density, const std::vector<BodyCoupling>& coupling) {

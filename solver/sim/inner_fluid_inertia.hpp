@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "fluid/fluid_solver.hpp"
+#include "scene/scene.hpp"
 #include "sim/body_coupling.hpp"
 
 namespace ibms {
@@ -35,8 +36,8 @@ void no_inner_fluid_inertia(const Grid& grid, double fluid_density, const FluidS
                             const std::vector<MassSpringBody>& bodies, double dt,
                             std::vector<BodyCoupling>& coupling);
 
-// Scene name (kempe | none) -> the variant.
-InnerFluidInertia inner_fluid_inertia_from_name(const std::string& name);
+// The variant ibm.inner_fluid_inertia selects: kempe (K) or none (A).
+InnerFluidInertia inner_fluid_inertia_of(IbmSpec::InnerFluidInertia variant);
 
 // rho_f sum_T I_T over all bodies (the stored I of the latest step) [mass length/time per depth].
 Vec2 inner_fluid_momentum(double fluid_density, const std::vector<BodyCoupling>& coupling);

@@ -4,11 +4,13 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <stdexcept>
 
 #include <fmt/format.h>
 
 #include "core/constants.hpp"
 #include "core/errors.hpp"
+#include "scene/scene_schema.hpp"
 #include "sim/diagnostics.hpp"
 #include "solid/spring_forces.hpp"
 
@@ -24,16 +26,21 @@ FluidBoundaries boundaries_from_scene(const Scene& scene) {
     BoundarySide b;
     b.speed = w.speed;
     b.stop_time = w.stop_time;
-    b.kind = w.kind == "inflow" ? SideKind::inflow
-             : w.kind == "outflow" ? SideKind::outflow
-             : w.kind == "periodic" ? SideKind::periodic
-                                    : SideKind::wall;
-    b.inflow.shape = w.profile == "parabolic" ? InflowProfile::Shape::parabolic : InflowProfile::Shape::uniform;
+    switch (w.kind) {
+      case WallSpec::Kind::wall: b.kind = SideKind::wall; break;
+      case WallSpec::Kind::inflow: b.kind = SideKind::inflow; break;
+      case WallSpec::Kind::outflow: b.kind = SideKind::outflow; break;
+      case WallSpec::Kind::periodic: b.kind = SideKind::periodic; break;
+    }
+    b.inflow.shape = w.profile == WallSpec::Profile::parabolic ? InflowProfile::Shape::parabolic
+                                                               : InflowProfile::Shape::uniform;
     b.inflow.velocity = w.velocity;
     TimeFactor& f = b.inflow.factor;
-    f.kind = w.time_factor == "ramp" ? TimeFactor::Kind::ramp
-             : w.time_factor == "sinusoidal" ? TimeFactor::Kind::sinusoidal
-                                             : TimeFactor::Kind::constant;
+    switch (w.time_factor) {
+      case WallSpec::TimeFactor::constant: f.kind = TimeFactor::Kind::constant; break;
+      case WallSpec::TimeFactor::ramp: f.kind = TimeFactor::Kind::ramp; break;
+      case WallSpec::TimeFactor::sinusoidal: f.kind = TimeFactor::Kind::sinusoidal; break;
+    }
     f.ramp_time = w.ramp_time;
     f.offset = w.factor_offset;
     f.amplitude = w.factor_amplitude;
@@ -50,14 +57,82 @@ FluidBoundaries boundaries_from_scene(const Scene& scene) {
   return bc;
 }
 
+namespace {
+
+KernelKind kernel_kind(IbmSpec::Kernel kernel) {
+  switch (kernel) {
+    case IbmSpec::Kernel::roma3: return KernelKind::roma3;
+    case IbmSpec::Kernel::peskin4: return KernelKind::peskin4;
+    case IbmSpec::Kernel::cosine4: return KernelKind::cosine4;
+    case IbmSpec::Kernel::bkp6: return KernelKind::bkp6;
+  }
+  throw std::invalid_argument("unknown ibm.kernel");
+}
+
+// The contact parameters of the scene's [contact] section.
+ContactModel contact_model_of(const ContactSpec& spec) {
+  ContactModel model;
+  model.law = spec.model == ContactSpec::Model::collision_time ? ContactLawKind::collision_time
+                                                                : ContactLawKind::linear;
+  model.stiffness = spec.stiffness;
+  model.collision_steps = spec.collision_steps;
+  model.restitution_coefficient = spec.restitution_coefficient;
+  model.cds_radius = spec.cds_radius;
+  model.cds_radius_fraction = spec.cds_radius_fraction;
+  model.walls = spec.walls;
+  model.check();
+  return model;
+}
+
+// The parameters of a body's point set from its [[bodies]] table.
+BodyParameters body_parameters_of(const BodySpec& spec) {
+  BodyParameters p;
+  switch (spec.kind) {
+    case BodySpec::Kind::mass_spring: p.kind = BodyKind::mass_spring; break;
+    case BodySpec::Kind::rigid: p.kind = BodyKind::rigid; break;
+    case BodySpec::Kind::prescribed: p.kind = BodyKind::prescribed; break;
+  }
+  p.centre = spec.centre;
+  p.velocity = spec.velocity;
+  p.angular_velocity = spec.angular_velocity;
+  p.diameter = spec.diameter;
+  p.n_surface_points = spec.n_surface_points;
+  p.density = spec.density;
+  p.spring_stiffness = spec.spring_stiffness;
+  p.spring_damping = spec.spring_damping;
+  p.restitution_coefficient = spec.restitution_coefficient;
+  p.cross_springs = spec.cross_springs;
+  p.mass_lumping = spec.mass_lumping == BodySpec::MassLumping::uniform_disk ? MassLumping::uniform_disk
+                                                                            : MassLumping::equal;
+  switch (spec.spring_integrator) {
+    case BodySpec::SpringIntegrator::automatic: p.spring_integrator = SpringIntegrator::automatic; break;
+    case BodySpec::SpringIntegrator::explicit_euler: p.spring_integrator = SpringIntegrator::explicit_euler; break;
+    case BodySpec::SpringIntegrator::implicit_euler: p.spring_integrator = SpringIntegrator::implicit_euler; break;
+  }
+  return p;
+}
+
+// The motion of a rigid or prescribed body from its [[bodies]] table.
+PrescribedMotion motion_of(const BodySpec& spec) {
+  return {spec.centre,          spec.velocity,          spec.angular_velocity, spec.oscillation_amplitude,
+          spec.angle_amplitude, spec.oscillation_period, spec.oscillation_phase};
+}
+
+SwellingLaw swelling_law_of(const SwellingSpec& spec) {
+  return {spec.enabled, spec.onset_time, spec.rate, spec.max_diameter};
+}
+
+}  // namespace
+
 Simulation::Simulation(const Scene& scene)
     : scene_(scene),
       grid_(grid_from_scene(scene)),
       fluid_solver_(grid_, scene.fluid.kinematic_viscosity, boundaries_from_scene(scene),
-                    FluidSchemes{scene.fluid.convection == "quick", scene.fluid.wall_closure == "quadratic"}),
+                    FluidSchemes{scene.fluid.convection == FluidSpec::Convection::quick,
+                                 scene.fluid.wall_closure == FluidSpec::WallClosure::quadratic}),
       fluid_(fluid_solver_.make_state()),
-      kernel_(kernel_from_name(scene.ibm.kernel)) {
-  inner_fluid_inertia = inner_fluid_inertia_from_name(scene.ibm.inner_fluid_inertia);
+      kernel_(kernel_kind(scene.ibm.kernel)) {
+  inner_fluid_inertia = inner_fluid_inertia_of(scene.ibm.inner_fluid_inertia);
   fluid_solver_.initialise_faces(fluid_);  // fluid at rest: faces 0, projection is a no-op
   if (!has_bodies()) {
     set_instability_bounds();  // the driving speed: the fluid guard's speed scale
@@ -69,15 +144,17 @@ Simulation::Simulation(const Scene& scene)
     throw InputError(scene.source_file + ": domain: bodies need square cells (dx = dy), got dx = " +
                      std::to_string(grid_.dx()) + ", dy = " + std::to_string(grid_.dy()));
   for (const BodySpec& spec : scene.bodies) {
-    bodies_.push_back(build_body(spec, scene.fluid.density));
-    rigid_.push_back(spec.kind == "mass_spring" ? RigidBody{} : rigid_body_from_spec(spec, bodies_.back()));
-    if (spec.kind != "mass_spring") place_points(rigid_.back(), bodies_.back());
-    if (spec.kind == "rigid" && scene.ibm.coupling == "no_slip") {  // docs/method.md §3.7
+    bodies_.push_back(build_body(body_parameters_of(spec), scene.fluid.density));
+    const bool mass_spring = spec.kind == BodySpec::Kind::mass_spring;
+    rigid_.push_back(mass_spring ? RigidBody{} : rigid_body_of(bodies_.back(), motion_of(spec)));
+    if (!mass_spring) place_points(rigid_.back(), bodies_.back());
+    // docs/method.md §3.7
+    if (spec.kind == BodySpec::Kind::rigid && scene.ibm.coupling == IbmSpec::Coupling::no_slip) {
       RigidBody& r = rigid_.back();
       r.virtual_mass = scene.ibm.virtual_mass_coefficient * scene.fluid.density * bodies_.back().solid_area();
       r.virtual_inertia = r.virtual_mass * spec.diameter * spec.diameter / 8.0;
     }
-    swelling_.emplace_back(spec.swelling, spec.diameter);
+    swelling_.emplace_back(swelling_law_of(spec.swelling), spec.diameter);
     const double largest = spec.swelling.enabled ? std::max(spec.diameter, spec.swelling.max_diameter) : spec.diameter;
     coupling_.emplace_back(bodies_.back(), scene.ibm.sub_markers
                                                ? max_sub_marker_count(largest, spec.n_surface_points, grid_.dx())
@@ -106,7 +183,7 @@ Simulation::Simulation(const Scene& scene)
     }
   }
   if (scene.contact.enabled()) {
-    contact_model_ = ContactModel(scene.contact);
+    contact_model_ = contact_model_of(scene.contact);
     contact_box_ = WallBox{{grid_.origin_x, grid_.origin_y}, {grid_.length_x, grid_.length_y},
                            {grid_.periodic_x, grid_.periodic_y}};
     for (Side s : {Side::left, Side::right, Side::bottom, Side::top}) {
@@ -130,7 +207,7 @@ Simulation::Simulation(const Scene& scene)
         last_contact_stats.include(stats);
       }
     };
-    if (scene.contact.time_stepping == "inner_loop") {
+    if (scene.contact.time_stepping == ContactSpec::TimeStepping::inner_loop) {
       contact_inner_loop = [this](std::vector<MassSpringBody>& bodies, const BodyMask& members, double dt_outer,
                                   int n_inner, const std::vector<std::vector<Vec2>>& frozen_force, bool continues,
                                   const std::vector<double>& diameter_rate) {
@@ -208,7 +285,7 @@ SubstepGroups& Simulation::substep_groups(double dt) {
 
 void Simulation::plan_substep_groups(double dt, SubstepGroups& groups) const {
   if (static_cast<bool>(groups.inner_loop) != static_cast<bool>(contact_inner_loop)) groups.inner_loop = contact_inner_loop;
-  if (scene_.run.solid_substeps == "global") {
+  if (scene_.run.solid_substeps == RunSpec::SolidSubsteps::global) {
     groups.group_of.clear();
     return;
   }
@@ -257,51 +334,54 @@ std::vector<std::string> Simulation::stage_names() const {
   std::vector<std::string> stages;
   if (has_bodies()) stages.push_back("schedules (wall velocities, swelling)");
   else stages.push_back("schedules (wall velocities)");
-  stages.push_back(std::string("predictor (AB2 ") + (scene_.fluid.convection == "quick" ? "QUICK" : "central") +
+  const bool quick = scene_.fluid.convection == FluidSpec::Convection::quick;
+  const std::string kernel(scene_schema::name_of(scene_.ibm.kernel));
+  stages.push_back(std::string("predictor (AB2 ") + (quick ? "QUICK" : "central") +
                    " convection, Crank-Nicolson diffusion by DST Helmholtz" +
-                   (scene_.fluid.wall_closure == "quadratic"
+                   (scene_.fluid.wall_closure == FluidSpec::WallClosure::quadratic
                         ? ", quadratic wall closure by " + std::to_string(FluidSolver::wall_closure_sweeps) +
                               " defect-correction sweeps)"
                         : ")"));
   if (has_bodies() && enforces_no_slip())
-    stages.push_back("immersed-boundary forcing (" + scene_.ibm.kernel +
+    stages.push_back("immersed-boundary forcing (" + kernel +
                      ", no_slip coupling: the previous step's forces inside the Crank-Nicolson solve; first step " +
                      std::to_string(scene_.ibm.forcing_passes) + " pass(es); target = marker velocity minus swelling part)");
   else if (has_bodies())
-    stages.push_back("immersed-boundary forcing (" + scene_.ibm.kernel + ", " + std::to_string(scene_.ibm.forcing_passes) +
+    stages.push_back("immersed-boundary forcing (" + kernel + ", " + std::to_string(scene_.ibm.forcing_passes) +
                      " pass(es) on the " +
                      (forces_explicit_estimate() ? "explicit estimate, force inside the Crank-Nicolson solve"
                                                  : "Crank-Nicolson prediction") +
                      "; target = marker velocity minus swelling part)");
   stages.push_back("projection (momentum interpolation, DCT/FFT Poisson)");
+  const bool has_mass_spring = scene_.has_kind(BodySpec::Kind::mass_spring);
   if (has_bodies() && enforces_no_slip())
     stages.push_back("no-slip corrections (force corrections projected until the slip at t^{n+1} <= " +
                      fmt::format("{:g}", scene_.ibm.slip_tolerance) + " U_ref" +
-                     (scene_.has_kind("mass_spring") ? "; mass-spring rims: target at t^{n+1}, their linearised response "
-                                                       "in the marker system)"
-                                                     : ")"));
+                     (has_mass_spring ? "; mass-spring rims: target at t^{n+1}, their linearised response "
+                                        "in the marker system)"
+                                      : ")"));
   if (has_bodies()) {
     stages.push_back("fluid reaction on the rim points");
-    stages.push_back(scene_.ibm.inner_fluid_inertia == "kempe"
+    stages.push_back(scene_.ibm.inner_fluid_inertia == IbmSpec::InnerFluidInertia::kempe
                          ? "inner-fluid inertia (variant K: exact triangle-cell overlaps, Reynolds-transport form)"
                          : "inner-fluid inertia off (variant A)");
     std::string kinds;
-    if (scene_.has_kind("mass_spring"))
+    if (has_mass_spring)
       kinds += "mass-spring: symplectic Euler sub-steps, or implicit Euler for stiff springs (springs, buoyant gravity, "
                "swelling); ";
-    if (scene_.has_kind("rigid")) kinds += "rigid: Newton-Euler (force, torque, buoyant gravity); ";
-    if (scene_.has_kind("prescribed")) kinds += "prescribed: scene motion; ";
+    if (scene_.has_kind(BodySpec::Kind::rigid)) kinds += "rigid: Newton-Euler (force, torque, buoyant gravity); ";
+    if (scene_.has_kind(BodySpec::Kind::prescribed)) kinds += "prescribed: scene motion; ";
     stages.push_back("hydrodynamic force and torque on each body");
+    const bool per_group = scene_.run.solid_substeps == RunSpec::SolidSubsteps::per_group;
     stages.push_back("bodies (" + kinds + "contact hook" +
-                     (scene_.run.solid_substeps == "per_group" ? "; each group of bodies that may touch within the step "
-                                                                 "at its own sub-step)"
-                                                               : "; all bodies at the smallest sub-step)"));
-    const std::string law = scene_.contact.model == "collision_time"
+                     (per_group ? "; each group of bodies that may touch within the step at its own sub-step)"
+                                : "; all bodies at the smallest sub-step)"));
+    const std::string law = scene_.contact.model == ContactSpec::Model::collision_time
                                 ? fmt::format("collision-time law: k and c per contact from m_eff and e_D, T_c = {:g} "
                                               "fluid steps", scene_.contact.collision_steps)
                                 : "linear law at k_Dn";
     if (has_contacts())
-      stages.push_back(scene_.contact.time_stepping == "inner_loop"
+      stages.push_back(scene_.contact.time_stepping == ContactSpec::TimeStepping::inner_loop
                            ? "  contacts (DEM spring-dashpots on CDS, " + law +
                                  ", walls; groups of explicit mass-spring bodies: inner loop at the contact sub-step "
                                  "over the points near a contact, springs and fluid held over outer steps of 1/16 of "

@@ -42,12 +42,14 @@ class Simulation {
 
   bool has_bodies() const { return scene_.has_bodies(); }
   // ibm.forcing_stage: the markers force the explicit estimate (Uhlmann 2005) or the CN prediction.
-  bool forces_explicit_estimate() const { return scene_.ibm.forcing_stage == "explicit_estimate"; }
+  bool forces_explicit_estimate() const { return scene_.ibm.forcing_stage == IbmSpec::ForcingStage::explicit_estimate; }
   // ibm.coupling = "no_slip": the forces are corrected until no-slip holds at t^{n+1}.
-  bool enforces_no_slip() const { return has_bodies() && scene_.ibm.coupling == "no_slip"; }
+  bool enforces_no_slip() const { return has_bodies() && scene_.ibm.coupling == IbmSpec::Coupling::no_slip; }
   // Under the face constraint the cells take the force as the mean of its face values, as they take
   // the pressure gradient (docs/method.md §3.7).
-  bool cell_forces_from_faces() const { return enforces_no_slip() && scene_.ibm.constrained_velocity == "faces"; }
+  bool cell_forces_from_faces() const {
+    return enforces_no_slip() && scene_.ibm.constrained_velocity == IbmSpec::ConstrainedVelocity::faces;
+  }
   // Names of the pipeline stages this scene runs, in order (`ibms info` prints them).
   std::vector<std::string> stage_names() const;
 

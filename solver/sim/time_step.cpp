@@ -105,7 +105,7 @@ void hold_no_slip(Simulation& sim, double time_n, double dt) {
     return;
   }
   const IbmSpec& ibm = sim.scene().ibm;
-  const bool on_faces = ibm.constrained_velocity == "faces";
+  const bool on_faces = ibm.constrained_velocity == IbmSpec::ConstrainedVelocity::faces;
   const bool responds = prepare_body_responses(sim, dt);
   // -(M + dt D + dt^2 S)^{-1} rho_f dV (dt F) on the rim points of body b (markers = rim points).
   const BodyResponse response = [&sim](std::size_t b, const std::vector<Vec2>& impulse, std::vector<Vec2>& change) {

@@ -20,7 +20,7 @@ double MassSpringBody::total_mass() const {
 
 namespace {
 
-void check_wheel_spec(const BodySpec& spec) {
+void check_wheel_spec(const BodyParameters& spec) {
   if (spec.n_surface_points < 3) throw std::invalid_argument("build_wheel: n_surface_points < 3");
   if (!(spec.diameter > 0.0)) throw std::invalid_argument("build_wheel: diameter must be > 0");
   if (!(spec.density > 0.0)) throw std::invalid_argument("build_wheel: density must be > 0");
@@ -31,25 +31,26 @@ void check_wheel_spec(const BodySpec& spec) {
     throw std::invalid_argument("build_wheel: restitution_coefficient must be in (0, 1]");
 }
 
-std::vector<double> lumped_mass_fractions(const std::string& lumping, int n_surface) {
+std::vector<double> lumped_mass_fractions(MassLumping lumping, int n_surface) {
   std::vector<double> fraction(n_surface + 1);
-  if (lumping == "equal") {
-    // Guinea et al.: M = rho_s V_s / N with N = N_l + 1 (docs/method.md §1.3).
-    for (double& f : fraction) f = 1.0 / (n_surface + 1);
-  } else if (lumping == "uniform_disk") {
-    // Mass and moment of inertia of a uniform disk: M_tot/2 at the centre (docs/method.md §1.3).
-    for (int l = 0; l < n_surface; ++l) fraction[l] = 0.5 / n_surface;
-    fraction[n_surface] = 0.5;
-  } else {
-    throw std::invalid_argument("build_wheel: unknown mass_lumping '" + lumping +
-                                "' (expected equal or uniform_disk)");
+  switch (lumping) {
+    case MassLumping::equal:
+      // Guinea et al.: M = rho_s V_s / N with N = N_l + 1 (docs/method.md §1.3).
+      for (double& f : fraction) f = 1.0 / (n_surface + 1);
+      break;
+    case MassLumping::uniform_disk:
+      // Mass and moment of inertia of a uniform disk: M_tot/2 at the centre (docs/method.md §1.3).
+      for (int l = 0; l < n_surface; ++l) fraction[l] = 0.5 / n_surface;
+      fraction[n_surface] = 0.5;
+      break;
   }
   return fraction;
 }
 
+
 }  // namespace
 
-MassSpringBody build_wheel(const BodySpec& spec) {
+MassSpringBody build_wheel(const BodyParameters& spec) {
   check_wheel_spec(spec);
   MassSpringBody body;
   const int n_l = spec.n_surface_points;
@@ -86,37 +87,14 @@ MassSpringBody build_wheel(const BodySpec& spec) {
   return body;
 }
 
-BodyKind body_kind_from_name(const std::string& name) {
-  if (name == "mass_spring") return BodyKind::mass_spring;
-  if (name == "rigid") return BodyKind::rigid;
-  if (name == "prescribed") return BodyKind::prescribed;
-  throw std::invalid_argument("unknown body kind '" + name + "' (mass_spring | rigid | prescribed)");
-}
-
-SpringIntegrator spring_integrator_from_name(const std::string& name) {
-  if (name == "auto") return SpringIntegrator::automatic;
-  if (name == "explicit") return SpringIntegrator::explicit_euler;
-  if (name == "implicit") return SpringIntegrator::implicit_euler;
-  throw std::invalid_argument("unknown spring_integrator '" + name + "' (auto | explicit | implicit)");
-}
-
-const char* body_kind_name(BodyKind kind) {
-  switch (kind) {
-    case BodyKind::mass_spring: return "mass_spring";
-    case BodyKind::rigid: return "rigid";
-    case BodyKind::prescribed: return "prescribed";
-  }
-  return "?";
-}
-
-MassSpringBody build_body(const BodySpec& spec, double fluid_density) {
-  const BodyKind kind = body_kind_from_name(spec.kind);
-  BodySpec point_set = spec;
+MassSpringBody build_body(const BodyParameters& spec, double fluid_density) {
+  const BodyKind kind = spec.kind;
+  BodyParameters point_set = spec;
   if (kind == BodyKind::prescribed) point_set.density = fluid_density;
   if (kind != BodyKind::mass_spring) point_set.spring_stiffness = 0.0;
   MassSpringBody body = build_wheel(point_set);
   body.kind = kind;
-  body.integrator = spring_integrator_from_name(spec.spring_integrator);
+  body.integrator = spec.spring_integrator;
   if (kind != BodyKind::mass_spring) body.springs.clear();
   // Initial rotation about the centre: U_i = V + Omega e_z x (x_i - X_c).
   const auto& centre = body.position[body.centre_index()];

@@ -1,14 +1,12 @@
 // A deformable body as a mass-spring network (docs/method.md §1.1-1.3): N_l rim points (the IB
 // markers) plus one centre point joined by spring-dashpot elements listed as data
 // (i, j, k_ij, c_ij, L0_ij). build_wheel makes the ring + spokes (+ optional (l, l+2) cross)
-// topology of §1.2 from a BodySpec. 2D, per unit depth: masses [mass/length], stiffness
+// topology of §1.2 from a BodyParameters. 2D, per unit depth: masses [mass/length], stiffness
 // [force/length^2], energies [energy/length]. Knows nothing about the grid.
 #pragma once
 #include <array>
 #include <string>
 #include <vector>
-
-#include "scene/scene.hpp"
 
 namespace ibms {
 
@@ -27,9 +25,27 @@ enum class BodyKind { mass_spring, rigid, prescribed };
 
 // How a mass_spring body's springs are integrated (scene key spring_integrator; sim/body_update.hpp).
 enum class SpringIntegrator { automatic, explicit_euler, implicit_euler };
-SpringIntegrator spring_integrator_from_name(const std::string& name);  // auto | explicit | implicit
-BodyKind body_kind_from_name(const std::string& name);  // scene names (std::invalid_argument if unknown)
-const char* body_kind_name(BodyKind kind);
+
+// How the body's mass is shared among its points (docs/method.md §1.3): equal, M = rho_s V / (N_l + 1),
+// or uniform_disk, half at the centre and the rest shared by the rim.
+enum class MassLumping { equal, uniform_disk };
+
+// What build_wheel and build_body take of a body (sim/ fills it from the scene's BodySpec).
+struct BodyParameters {
+  BodyKind kind = BodyKind::mass_spring;
+  std::array<double, 2> centre{0.0, 0.0};    // [length]
+  std::array<double, 2> velocity{0.0, 0.0};  // initial velocity of every point [length/time]
+  double angular_velocity = 0.0;             // initial rotation rate, counter-clockwise [1/time]
+  double diameter = 0.0;                     // D0 [length]
+  int n_surface_points = 0;                  // N_l [-]
+  double density = 0.0;                      // rho_s [mass/length^3]
+  double spring_stiffness = 0.0;             // k_s [force/length^2 per unit depth]
+  double spring_damping = -1.0;              // c_s [force time/length^2]; < 0: from restitution
+  double restitution_coefficient = 1.0;      // e_s in (0, 1] [-], used when spring_damping < 0
+  bool cross_springs = false;                // extra (l, l+2) rim springs
+  MassLumping mass_lumping = MassLumping::equal;
+  SpringIntegrator spring_integrator = SpringIntegrator::automatic;
+};
 
 struct MassSpringBody {
   BodyKind kind = BodyKind::mass_spring;
@@ -61,19 +77,19 @@ struct MassSpringBody {
   }
 };
 
-// Wheel of docs/method.md §1.2 from a scene body: rim points at angles 2 pi l / N_l (counter-clockwise),
+// Wheel of docs/method.md §1.2 from a body's parameters: rim points at angles 2 pi l / N_l (counter-clockwise),
 // ring springs (l, l+1), spokes (l, c), cross springs (l, l+2) if asked, natural lengths from
 // this regular polygon; all points start with spec.velocity. Masses (§1.3): "equal" gives
 // 1/(N_l+1) of rho_s V_s to every point; "uniform_disk" half to the centre, the rest shared by
 // the rim. Dashpots: spec.spring_damping if >= 0, else from the restitution coefficient with
 // the pair effective mass m_i m_j / (m_i + m_j) (= M/2 for equal masses; §1.5, A8).
-MassSpringBody build_wheel(const BodySpec& spec);
+MassSpringBody build_wheel(const BodyParameters& spec);
 
 // The point set of a body of any kind: build_wheel for mass_spring (with the initial rotation
 // angular_velocity added to the point velocities); for rigid and prescribed bodies the same rim and
 // centre without springs. A prescribed body has no density of its own: its point masses are those
 // of the displaced fluid (fluid_density), used only as weights (centre of mass).
-MassSpringBody build_body(const BodySpec& spec, double fluid_density);
+MassSpringBody build_body(const BodyParameters& spec, double fluid_density);
 
 // Geometry and energies. polygon_area: signed (counter-clockwise > 0) shoelace area of the rim
 // [length^2]; centroid: area centroid of that polygon [length]; centre_of_mass of all points.

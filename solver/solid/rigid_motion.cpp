@@ -24,7 +24,7 @@ RigidState PrescribedMotion::at(double time) const {
   return s;
 }
 
-RigidBody rigid_body_from_spec(const BodySpec& spec, const MassSpringBody& body) {
+RigidBody rigid_body_of(const MassSpringBody& body, const PrescribedMotion& motion) {
   RigidBody rigid;
   const auto& centre = body.position[body.centre_index()];
   for (int l = 0; l < body.n_surface; ++l)
@@ -32,12 +32,11 @@ RigidBody rigid_body_from_spec(const BodySpec& spec, const MassSpringBody& body)
   // Uniform disk per unit depth: m = rho_s pi D^2 / 4, I = m D^2 / 8.
   rigid.mass = body.density * body.solid_area();
   rigid.moment_of_inertia = rigid.mass * body.diameter * body.diameter / 8.0;
-  rigid.prescribed = {spec.centre, spec.velocity, spec.angular_velocity, spec.oscillation_amplitude,
-                      spec.angle_amplitude, spec.oscillation_period, spec.oscillation_phase};
-  if (spec.kind == "prescribed") {
+  rigid.prescribed = motion;
+  if (body.kind == BodyKind::prescribed) {
     rigid.state = rigid.prescribed.at(0.0);
   } else {
-    rigid.state = {spec.centre, 0.0, spec.velocity, spec.angular_velocity};
+    rigid.state = {motion.initial_centre, 0.0, motion.velocity, motion.angular_velocity};
   }
   return rigid;
 }

@@ -10,7 +10,6 @@
 #include <string>
 #include <vector>
 
-#include "scene/scene.hpp"
 #include "solid/mass_spring_body.hpp"
 
 namespace ibms {
@@ -22,7 +21,7 @@ struct RigidState {
   double angular_velocity = 0.0;             // Omega [1/time]
 };
 
-// The prescribed motion of a `prescribed` body (scene.hpp BodySpec).
+// The prescribed motion of a `prescribed` body; for a rigid body, its initial centre and velocities.
 struct PrescribedMotion {
   std::array<double, 2> initial_centre{0.0, 0.0};  // X0 [length]
   std::array<double, 2> velocity{0.0, 0.0};        // V [length/time]
@@ -50,9 +49,10 @@ struct RigidBody {
   std::array<double, 3> step_start{0.0, 0.0, 0.0};             // V, Omega at t^n
 };
 
-// The kinematic description of `spec` (kind rigid or prescribed) with the point set `body` built
-// from it (build_body); mass and moment of inertia of the uniform disk of body.density.
-RigidBody rigid_body_from_spec(const BodySpec& spec, const MassSpringBody& body);
+// The kinematic description of the point set `body` (build_body, kind rigid or prescribed) moving
+// as `motion` (rigid: from motion's initial centre, velocity and rotation rate); mass and moment
+// of inertia of the uniform disk of body.density.
+RigidBody rigid_body_of(const MassSpringBody& body, const PrescribedMotion& motion);
 
 // Positions and velocities of the rim points and the centre point from the rigid state.
 void place_points(const RigidBody& rigid, MassSpringBody& body);

@@ -6,9 +6,9 @@
 
 namespace ibms {
 
-SwellingSchedule::SwellingSchedule(const SwellingSpec& spec, double diameter0)
-    : enabled(spec.enabled), initial_diameter(diameter0), onset_time(spec.onset_time),
-      rate(spec.rate), max_diameter(spec.max_diameter) {
+SwellingSchedule::SwellingSchedule(const SwellingLaw& law, double diameter0)
+    : enabled(law.enabled), initial_diameter(diameter0), onset_time(law.onset_time),
+      rate(law.rate), max_diameter(law.max_diameter) {
   if (!(diameter0 > 0.0)) throw std::invalid_argument("swelling: initial diameter must be > 0");
   if (enabled && !(max_diameter >= diameter0))
     throw std::invalid_argument("swelling: max_diameter must be >= the initial diameter");

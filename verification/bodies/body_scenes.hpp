@@ -16,7 +16,7 @@ inline int markers_for(double diameter, double h) {
 }
 
 // A disk body of `kind` with markers spaced ~ h, at rest.
-inline BodySpec disk_body(const char* kind, std::array<double, 2> centre, double diameter, double h) {
+inline BodySpec disk_body(BodySpec::Kind kind, std::array<double, 2> centre, double diameter, double h) {
   BodySpec body;
   body.kind = kind;
   body.centre = centre;
@@ -27,13 +27,13 @@ inline BodySpec disk_body(const char* kind, std::array<double, 2> centre, double
 
 // A prescribed cylinder turning at `angular_velocity` about its fixed centre.
 inline BodySpec prescribed_cylinder(std::array<double, 2> centre, double diameter, double h, double angular_velocity) {
-  BodySpec body = disk_body("prescribed", centre, diameter, h);
+  BodySpec body = disk_body(BodySpec::Kind::prescribed, centre, diameter, h);
   body.angular_velocity = angular_velocity;
   return body;
 }
 
 inline BodySpec rigid_disk(std::array<double, 2> centre, double diameter, double h, double density) {
-  BodySpec body = disk_body("rigid", centre, diameter, h);
+  BodySpec body = disk_body(BodySpec::Kind::rigid, centre, diameter, h);
   body.density = density;
   return body;
 }

@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "body_scenes.hpp"
+#include "scene/scene_schema.hpp"
 
 namespace ibms::test {
 
@@ -57,12 +58,13 @@ inline CouetteResult run_circular_couette(int n, int forcing_passes, double mark
   scene.fluid.kinematic_viscosity = C::kinematic_viscosity;
   scene.ibm.forcing_passes = forcing_passes;
   scene.ibm.marker_retraction = marker_retraction;
-  scene.ibm.coupling = coupling;
+  scene.ibm.coupling = scene_schema::parse_choice<IbmSpec::Coupling>(coupling).value();
   scene.ibm.slip_tolerance = 1e-4;
-  scene.ibm.constrained_velocity = constrained_velocity;
+  scene.ibm.constrained_velocity =
+      scene_schema::parse_choice<IbmSpec::ConstrainedVelocity>(constrained_velocity).value();
   // Prescribed bodies move as given: the inner-fluid term would only enter their reported force,
   // and its fan-triangle overlaps of the large outer cylinder would cost 4x the whole run.
-  scene.ibm.inner_fluid_inertia = "none";
+  scene.ibm.inner_fluid_inertia = IbmSpec::InnerFluidInertia::none;
   const double h = 1.0 / n;
   scene.bodies.push_back(prescribed_cylinder(C::centre, 2 * C::inner_radius, h, C::rotation_rate));
   scene.bodies.push_back(prescribed_cylinder(C::centre, 2 * C::outer_radius, h, 0.0));

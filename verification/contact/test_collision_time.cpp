@@ -38,12 +38,13 @@ const WallBox open_box{{-10.0, -10.0}, {20.0, 20.0}, {false, false}};
 const WallBox near_wall_box{{-1.0, -1.0}, {1.9, 2.0}, {false, false}};  // right wall at x = 0.9
 
 ContactModel collision_time_model(double restitution, double cds_radius_fraction) {
-  ContactSpec spec;
-  spec.model = "collision_time";
+  ContactModel spec;
+  spec.law = ContactLawKind::collision_time;
   spec.collision_steps = collision_steps;
   spec.restitution_coefficient = restitution;
   spec.cds_radius_fraction = cds_radius_fraction;
-  return ContactModel(spec).for_fluid_step(fluid_step);
+  spec.check();
+  return spec.for_fluid_step(fluid_step);
 }
 
 double wheel_mass() { return make_wheel({0.0, 0.0}, {0.0, 0.0}, 1.0).total_mass(); }

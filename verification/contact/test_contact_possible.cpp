@@ -12,8 +12,8 @@ using namespace ibms;
 
 namespace {
 
-MassSpringBody disk(std::array<double, 2> centre, double diameter, const char* kind = "rigid") {
-  BodySpec spec;
+MassSpringBody disk(std::array<double, 2> centre, double diameter, BodyKind kind = BodyKind::rigid) {
+  BodyParameters spec;
   spec.kind = kind;
   spec.centre = centre;
   spec.diameter = diameter;
@@ -23,10 +23,11 @@ MassSpringBody disk(std::array<double, 2> centre, double diameter, const char* k
 }
 
 ContactModel model() {
-  ContactSpec spec;
-  spec.stiffness = 1e4;
-  spec.cds_radius = 0.01;
-  return ContactModel(spec);
+  ContactModel model;
+  model.stiffness = 1e4;
+  model.cds_radius = 0.01;
+  model.check();
+  return model;
 }
 
 }  // namespace
@@ -67,7 +68,7 @@ BOOST_AUTO_TEST_CASE(periodic_neighbours_are_found_however_many_periods_apart) {
 BOOST_AUTO_TEST_CASE(a_body_near_the_rim_of_its_prescribed_container_can_touch_it) {
   const WallBox box{{0.0, 0.0}, {1.0, 1.0}, {false, false}};
   const std::vector<double> no_extra{0.0, 0.0};
-  const MassSpringBody container = disk({0.5, 0.5}, 0.8, "prescribed");
+  const MassSpringBody container = disk({0.5, 0.5}, 0.8, BodyKind::prescribed);
   BOOST_TEST(!contact_possible_within(model(), {container, disk({0.5, 0.5}, 0.2)}, box, 0.01, no_extra));
   BOOST_TEST(contact_possible_within(model(), {container, disk({0.79, 0.5}, 0.2)}, box, 0.01, no_extra));
 }

@@ -68,7 +68,7 @@ BOOST_AUTO_TEST_CASE(body_bounds_search_finds_exactly_the_brute_force_pairs) {
   std::vector<MassSpringBody> bodies;
   for (int j = 0; j < 4; ++j)
     for (int i = 0; i < 4; ++i) {
-      BodySpec spec;
+      BodyParameters spec;
       const double shift = (j * 4 + i == 1 || j * 4 + i == 6) ? -0.04 : 0.0;
       spec.centre = {0.17 + 0.22 * i + shift, 0.17 + 0.22 * j};
       spec.diameter = 0.15;

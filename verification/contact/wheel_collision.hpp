@@ -28,7 +28,7 @@ constexpr double impact_speed = 1.0;       // relative approach speed v0 [length
 // stiffness `contact_k`), undamped.
 inline MassSpringBody make_wheel(std::array<double, 2> centre, std::array<double, 2> velocity,
                                  double stiffness_ratio, double angle = 0.0, double contact_k = contact_stiffness) {
-  BodySpec spec;
+  BodyParameters spec;
   spec.centre = centre;
   spec.velocity = velocity;
   spec.diameter = 1.0;
@@ -47,11 +47,12 @@ inline MassSpringBody make_wheel(std::array<double, 2> centre, std::array<double
 
 inline ContactModel make_contact_model(double restitution, double cds_radius_fraction = 0.05,
                                        double contact_k = contact_stiffness) {
-  ContactSpec spec;
-  spec.stiffness = contact_k;
-  spec.restitution_coefficient = restitution;
-  spec.cds_radius_fraction = cds_radius_fraction;
-  return ContactModel(spec);
+  ContactModel model;
+  model.stiffness = contact_k;
+  model.restitution_coefficient = restitution;
+  model.cds_radius_fraction = cds_radius_fraction;
+  model.check();
+  return model;
 }
 
 inline std::array<double, 2> centre_of_mass_velocity(const MassSpringBody& body) {

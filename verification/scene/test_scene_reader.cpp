@@ -28,14 +28,14 @@ BOOST_AUTO_TEST_CASE(good_scene_is_read_and_defaults_are_filled) {
   BOOST_TEST(scene.walls.top.speed == 1.0);
   BOOST_TEST(std::isinf(scene.walls.top.stop_time));     // default: never stops
   BOOST_TEST(scene.walls.bottom.speed == 0.0);
-  BOOST_TEST(scene.ibm.kernel == "peskin4");
+  BOOST_TEST((scene.ibm.kernel == ibms::IbmSpec::Kernel::peskin4));
   BOOST_TEST(scene.ibm.forcing_passes == 1);             // default
-  BOOST_TEST(scene.ibm.inner_fluid_inertia == "kempe");  // default
+  BOOST_TEST((scene.ibm.inner_fluid_inertia == ibms::IbmSpec::InnerFluidInertia::kempe));  // default
   BOOST_TEST_REQUIRE(scene.bodies.size() == 2u);
   BOOST_TEST(scene.bodies[0].centre[0] == 0.3);
   BOOST_TEST(scene.bodies[0].spring_damping < 0.0);      // default: from restitution
   BOOST_TEST(scene.bodies[0].restitution_coefficient == 1.0);
-  BOOST_TEST(scene.bodies[0].mass_lumping == "equal");
+  BOOST_TEST((scene.bodies[0].mass_lumping == ibms::BodySpec::MassLumping::equal));
   BOOST_TEST(!scene.bodies[0].swelling.enabled);
   BOOST_TEST(scene.bodies[1].spring_stiffness == 100.0);  // integer accepted for a float
   BOOST_TEST(scene.bodies[1].n_surface_points == 40);
@@ -97,7 +97,7 @@ void check_same_scene(const ibms::Scene& a, const ibms::Scene& b) {
   for (std::size_t k = 0; k < a.bodies.size(); ++k) {
     const ibms::BodySpec &x = a.bodies[k], &y = b.bodies[k];
     BOOST_TEST_CONTEXT("body " << k) {
-      BOOST_TEST(x.kind == y.kind);
+      BOOST_TEST((x.kind == y.kind));
       BOOST_TEST((x.centre == y.centre && x.velocity == y.velocity && same(x.angular_velocity, y.angular_velocity)));
       BOOST_TEST((same(x.diameter, y.diameter) && x.n_surface_points == y.n_surface_points && same(x.density, y.density)));
       BOOST_TEST((x.oscillation_amplitude == y.oscillation_amplitude && same(x.angle_amplitude, y.angle_amplitude)));
@@ -105,7 +105,7 @@ void check_same_scene(const ibms::Scene& a, const ibms::Scene& b) {
       BOOST_TEST((same(x.reference_speed, y.reference_speed) && same(x.reference_length, y.reference_length)));
       BOOST_TEST((same(x.spring_stiffness, y.spring_stiffness) && same(x.spring_damping, y.spring_damping)));
       BOOST_TEST((same(x.restitution_coefficient, y.restitution_coefficient) && x.cross_springs == y.cross_springs));
-      BOOST_TEST(x.mass_lumping == y.mass_lumping);
+      BOOST_TEST((x.mass_lumping == y.mass_lumping));
       BOOST_TEST((x.swelling.enabled == y.swelling.enabled && same(x.swelling.onset_time, y.swelling.onset_time)));
       BOOST_TEST((same(x.swelling.rate, y.swelling.rate) && same(x.swelling.max_diameter, y.swelling.max_diameter)));
     }
@@ -139,7 +139,7 @@ BOOST_AUTO_TEST_CASE(resolved_scene_of_every_body_kind_reads_back_to_equal_value
   text = ibms::test::replaced(text, "[ibm]", "[ibm]\nforcing_stage = \"implicit_prediction\"\nforcing_passes = 3");
   const ibms::Scene first = ibms::read_scene_string(text, "good.toml");
   BOOST_TEST_REQUIRE(first.bodies.size() == 4u);
-  BOOST_TEST(first.bodies[2].kind == "rigid");
+  BOOST_TEST((first.bodies[2].kind == ibms::BodySpec::Kind::rigid));
   BOOST_TEST(first.bodies[3].oscillation_phase == 1.1);
   const ibms::Scene again = ibms::read_scene_string(first.resolved_text, "good.toml");
   check_same_scene(first, again);
@@ -159,7 +159,7 @@ BOOST_AUTO_TEST_CASE(overrides_set_keys_absent_from_the_file) {
   BOOST_TEST(scene.bodies[0].swelling.onset_time == 0.0);  // default
   BOOST_TEST(scene.fluid.gravity[1] == -9.81);
   BOOST_TEST(!scene.output.progress);
-  BOOST_TEST(scene.ibm.kernel == "bkp6");                  // not TOML: taken as a string
+  BOOST_TEST((scene.ibm.kernel == ibms::IbmSpec::Kernel::bkp6));  // not TOML: taken as a string
   BOOST_TEST(scene.output.file == other_output);
   BOOST_TEST(scene.bodies[1].diameter == 0.22);
 }
@@ -231,10 +231,10 @@ probes = [[0.14, 0.2], [0.26, 0.2]]
     const ibms::Scene first = ibms::read_scene_string(text, "channel.toml");
     const ibms::Scene again = ibms::read_scene_string(first.resolved_text, "channel.toml");
     check_same_scene(first, again);
-    BOOST_TEST(first.walls.left.kind == "inflow");
-    BOOST_TEST(first.walls.left.profile == "parabolic");
-    BOOST_TEST(first.walls.right.kind == "outflow");
-    BOOST_TEST(first.walls.bottom.kind == "wall");
+    BOOST_TEST((first.walls.left.kind == ibms::WallSpec::Kind::inflow));
+    BOOST_TEST((first.walls.left.profile == ibms::WallSpec::Profile::parabolic));
+    BOOST_TEST((first.walls.right.kind == ibms::WallSpec::Kind::outflow));
+    BOOST_TEST((first.walls.bottom.kind == ibms::WallSpec::Kind::wall));
     BOOST_TEST(first.walls.bottom.speed == 0.125);
     BOOST_TEST(first.output.probes.size() == 2u);
     BOOST_TEST(first.output.probes[1][0] == 0.26);

@@ -146,7 +146,7 @@ BOOST_AUTO_TEST_CASE(energy_gained_from_nothing_stops_at_the_budget) {
 // run.on_fluid_instability = "warn": the same run goes on, and the guard says so once.
 BOOST_AUTO_TEST_CASE(warn_mode_reports_once_and_runs_on) {
   Scene scene = shear_layer_scene(512, 0.5, 0.25 / 64, 1.0);
-  scene.run.on_fluid_instability = "warn";
+  scene.run.on_fluid_instability = RunSpec::OnInstability::warn;
   Simulation sim(scene);
   set_double_shear_layer(sim);
   start_fluid_guard(sim);

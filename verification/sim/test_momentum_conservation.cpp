@@ -11,6 +11,7 @@
 
 #include <cmath>
 
+#include "scene/scene_schema.hpp"
 #include "sim/simulation.hpp"
 #include "sim_scenes.hpp"
 
@@ -27,7 +28,7 @@ Drift run_and_measure(const std::string& variant, int n_steps) {
   Scene scene = test::one_body_scene(/*n=*/64, /*periodic=*/true, /*diameter=*/0.25, /*density=*/1.5,
                                      /*stiffness=*/1e4);
   scene.bodies[0].velocity = {1.0, 0.5};
-  scene.ibm.inner_fluid_inertia = variant;
+  scene.ibm.inner_fluid_inertia = scene_schema::parse_choice<IbmSpec::InnerFluidInertia>(variant).value();
   Simulation sim(scene);
   auto totals = [&] {
     const Vec2 pf = fluid_momentum(sim), pb = body_momentum(sim);

@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "scene/scene_schema.hpp"
 #include "sim/simulation.hpp"
 
 using namespace ibms;
@@ -31,7 +32,7 @@ Scene collision_scene(const char* substeps, const char* time_stepping) {
   scene.domain = {2.0, 1.0, 64, 32, false, false};
   scene.fluid.density = 1.0;
   scene.fluid.kinematic_viscosity = 0.02;
-  scene.run.solid_substeps = substeps;
+  scene.run.solid_substeps = scene_schema::parse_choice<RunSpec::SolidSubsteps>(substeps).value();
   BodySpec wheel;
   wheel.diameter = 0.2;
   wheel.n_surface_points = 20;
@@ -50,7 +51,7 @@ Scene collision_scene(const char* substeps, const char* time_stepping) {
   scene.contact.stiffness = 2.0e5;
   scene.contact.restitution_coefficient = 0.8;
   scene.contact.cds_radius_fraction = 0.05;
-  scene.contact.time_stepping = time_stepping;
+  scene.contact.time_stepping = scene_schema::parse_choice<ContactSpec::TimeStepping>(time_stepping).value();
   return scene;
 }
 

@@ -109,7 +109,7 @@ namespace {
 std::vector<std::array<double, 2>> falling_velocities(bool rigid) {
   ibms::set_thread_count(1);
   ibms::Scene scene = ibms::read_scene_file(IBMS_SCENE_FALLING_WHEEL);
-  if (rigid) scene.bodies[0].kind = "rigid";
+  if (rigid) scene.bodies[0].kind = ibms::BodySpec::Kind::rigid;
   ibms::Simulation sim(scene);
   std::vector<std::array<double, 2>> velocities;
   const int steps = static_cast<int>(std::lround(scene.run.end_time / scene.run.time_step));

@@ -67,7 +67,7 @@ BOOST_AUTO_TEST_CASE(two_body_scene_searches_pairs) {
   scene.bodies.push_back(scene.bodies[0]);
   scene.bodies[1].centre = {0.65, 0.5};
   {  // global sub-steps: the pair search runs every sub-step
-    scene.run.solid_substeps = "global";
+    scene.run.solid_substeps = RunSpec::SolidSubsteps::global;
     Simulation sim(scene);
     BOOST_TEST(lists_stage(sim, "pair search"));
     run_steps(sim, 5, 0.005);
@@ -75,7 +75,7 @@ BOOST_AUTO_TEST_CASE(two_body_scene_searches_pairs) {
   }
   {  // per group (default): bodies 0.1 apart cannot touch within a step, so each is a group of
      // one and no pair is searched
-    scene.run.solid_substeps = "per_group";
+    scene.run.solid_substeps = RunSpec::SolidSubsteps::per_group;
     Simulation sim(scene);
     run_steps(sim, 5, 0.005);
     BOOST_TEST(sim.total_pair_checks == 0);

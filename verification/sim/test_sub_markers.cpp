@@ -29,7 +29,7 @@ Scene coarse_scene(bool sub_markers) {
   scene.bodies[0].n_surface_points = 21;  // spacing pi 0.25 / 21 = 2.4 h
   scene.bodies[0].velocity = {1.0, 0.5};
   scene.ibm.sub_markers = sub_markers;
-  scene.ibm.inner_fluid_inertia = "none";
+  scene.ibm.inner_fluid_inertia = IbmSpec::InnerFluidInertia::none;
   return scene;
 }
 

@@ -31,7 +31,8 @@ Scene stiff_wheel_scene(const std::string& output) {
   scene.output.file = output;
   scene.output.progress = false;
   scene.output.centreline_profiles = false;
-  scene.bodies[0].spring_integrator = "explicit";  // the implicit step has no stability limit
+  // The implicit step has no stability limit.
+  scene.bodies[0].spring_integrator = BodySpec::SpringIntegrator::explicit_euler;
   return scene;
 }
 
@@ -79,7 +80,7 @@ BOOST_AUTO_TEST_CASE(automatic_substeps_run_the_same_scene_to_its_end) {
   BOOST_TEST(summary.stop_reason == "end_time");
   BOOST_TEST(sim.last_n_substeps > 1);
   Scene automatic = stiff_wheel_scene(out);
-  automatic.bodies[0].spring_integrator = "auto";
+  automatic.bodies[0].spring_integrator = BodySpec::SpringIntegrator::automatic;
   Simulation implicit(automatic);
   const RunSummary implicit_summary = run_simulation(implicit, {out, /*quiet=*/true});
   BOOST_TEST(implicit_summary.stop_reason == "end_time");
@@ -123,7 +124,7 @@ BOOST_AUTO_TEST_CASE(a_contact_returning_more_energy_than_it_received_stops_the_
   }
   {
     Scene scene = collision_scene(1e3, 3e-3);
-    scene.run.on_body_instability = "warn";
+    scene.run.on_body_instability = RunSpec::OnInstability::warn;
     Simulation sim(scene);
     sim.fixed_solid_substeps = 1;
     BOOST_TEST(run_simulation(sim, {out, /*quiet=*/true}).stop_reason == "end_time");

@@ -20,7 +20,7 @@ using namespace ibms;
 namespace {
 
 MassSpringBody wheel(std::array<double, 2> centre, double diameter, int n) {
-  BodySpec spec;
+  BodyParameters spec;
   spec.centre = centre;
   spec.diameter = diameter;
   spec.n_surface_points = n;

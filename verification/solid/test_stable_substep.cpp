@@ -19,7 +19,7 @@ using namespace ibms;
 namespace {
 
 MassSpringBody perturbed_wheel(double restitution, bool cross) {
-  BodySpec spec;
+  BodyParameters spec;
   spec.diameter = 1.0;
   spec.n_surface_points = 20;
   spec.density = 1.0;

@@ -19,23 +19,24 @@ using namespace ibms;
 
 namespace {
 
-BodySpec swelling_body() {
-  BodySpec spec;
+BodyParameters swelling_body() {
+  BodyParameters spec;
   spec.diameter = 1.0;
   spec.n_surface_points = 20;
   spec.density = 1.3;
   spec.spring_stiffness = 1e3;
   spec.restitution_coefficient = 0.5;  // damped, so the body follows the schedule quasi-statically
-  spec.swelling = {true, /*onset_time=*/0.5, /*rate=*/0.05, /*max_diameter=*/1.5};
   return spec;
 }
+
+const SwellingLaw swelling_law{true, /*onset_time=*/0.5, /*rate=*/0.05, /*max_diameter=*/1.5};
 
 }  // namespace
 
 BOOST_AUTO_TEST_CASE(swelling_body_area_follows_schedule_and_mass_follows_area) {
-  const BodySpec spec = swelling_body();
+  const BodyParameters spec = swelling_body();
   MassSpringBody body = build_wheel(spec);
-  const SwellingSchedule schedule(spec.swelling, spec.diameter);
+  const SwellingSchedule schedule(swelling_law, spec.diameter);
   const double area0 = polygon_area(body);
   const std::vector<std::array<double, 2>> no_force(body.n_points(), {0.0, 0.0});
   double time = 0.0, max_area_error = 0.0, max_mass_error = 0.0;

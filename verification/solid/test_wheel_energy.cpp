@@ -28,7 +28,7 @@ using namespace ibms;
 namespace {
 
 MassSpringBody deformed_wheel() {
-  BodySpec spec;
+  BodyParameters spec;
   spec.centre = {0.3, -0.2};
   spec.diameter = 1.0;
   spec.n_surface_points = 20;
