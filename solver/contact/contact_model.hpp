@@ -72,7 +72,7 @@ struct WallBox {
   std::array<double, 2> origin{0.0, 0.0};  // [length]
   std::array<double, 2> length{1.0, 1.0};  // [length]
   std::array<bool, 2> periodic{false, false};
-  // Inflow or outflow sides (left, right, bottom, top): no wall there, so no contact (issue 11).
+  // Inflow or outflow sides (left, right, bottom, top): no wall there, so no contact.
   std::array<bool, 4> open{false, false, false, false};
   // A wall at side 0 (low) or 1 (high) of direction `axis`.
   bool is_wall(int axis, int side) const { return !periodic[axis] && !open[2 * axis + side]; }
@@ -94,8 +94,8 @@ double cds_point_mass(const MassSpringBody& body, int point);
 // The lightest CDS point mass over the bodies that can move (infinity if none) [mass/length].
 double lightest_cds_point_mass(const std::vector<MassSpringBody>& bodies, const BodyMask& members = {});
 
-// Whether a contact can begin or is under way within the next fluid step of length dt (issue 10:
-// contact sub-steps only while a contact is possible). Each body is bounded by the circle about
+// Whether a contact can begin or is under way within the next fluid step of length dt (contact
+// sub-steps run only while a contact is possible). Each body is bounded by the circle about
 // its rim points' mean holding every CDS; two bodies (or a body and a wall) can touch within dt
 // when their gap is below the reach 2 (v_a + v_b) dt + e_a + e_b + r_cds / 2, with v the largest
 // point speed of each body, a safety factor 2 on the travel, and e_b = reach_extra[b] what the
@@ -104,7 +104,7 @@ double lightest_cds_point_mass(const std::vector<MassSpringBody>& bodies, const 
 bool contact_possible_within(const ContactModel& model, const std::vector<MassSpringBody>& bodies,
                              const WallBox& box, double dt, const std::vector<double>& reach_extra);
 
-// Contact groups for the multi-rate sub-steps (issue 12): the bodies joined, directly or through
+// Contact groups for the multi-rate sub-steps: the bodies joined, directly or through
 // others, by a pair that may touch within dt (the test of contact_possible_within, pair by pair).
 // Bodies of different groups cannot exert a contact force on each other within the step, so each
 // group may take its own sub-step; a group that may touch something (a pair inside it or a wall)
