@@ -101,6 +101,17 @@ def _body_case(name):
     return None
 
 
+def _basilisk_points(source, name):
+    """Basilisk's measured (Re, N, seconds, error) on the cavity case `name` (cavity_re100, cavity_re1000),
+    from bench/reference/basilisk_cavity.csv: published figures of this machine, not re-measured."""
+    if not source or not name.startswith("cavity_re"):
+        return []
+    path = os.path.join(source, "bench", "reference", "basilisk_cavity.csv")
+    rows = _rows(path) if os.path.exists(path) else []
+    return [(r["re"], r["n"], _float(r["seconds"]), _float(r["error"])) for r in rows or []
+            if "cavity_re" + r["re"] == name]
+
+
 def work_precision_section(out, build, fig_dir, source=None):
     out.append(r"\section{Work-precision: error against run time}")
     files = sorted(glob.glob(os.path.join(build, "bench", "work_precision_*.csv")))
@@ -145,6 +156,10 @@ def work_precision_section(out, build, fig_dir, source=None):
             mx, my = sum(lt) / len(lt), sum(le) / len(le)
             ax.loglog(t, [math.exp(my + slope * (math.log(v) - mx)) for v in t], "k--", lw=0.8,
                       label="slope %.2f" % slope)
+            for re_number, n, seconds, error in _basilisk_points(source, name):
+                ax.loglog([seconds], [error], "s", color="C3", ms=5,
+                          label="Basilisk %s$^2$" % n if n == "128" else None)
+                ax.annotate("B%s" % n, (seconds, error), fontsize=6, xytext=(3, -8), textcoords="offset points")
             ax.set_title(name)
             ax.set_xlabel("wall time [s]")
             ax.set_ylabel("error")
@@ -153,7 +168,10 @@ def work_precision_section(out, build, fig_dir, source=None):
         fig.tight_layout()
         fig.savefig(path)
         plt.close(fig)
-        out.append(figure(path, "Error against wall time; labels: grid N; dashed: least-squares fit."))
+        out.append(figure(path, "Error against wall time; labels: grid N; dashed: least-squares fit. Squares "
+                                "(B$N$): Basilisk on the same cavity and error rule, one core of this machine, "
+                                "recorded 2026-12-03 (\\texttt{bench/reference/basilisk\\_cavity.csv}; "
+                                "both codes stopped at a velocity change rate of $10^{-6}$)."))
     body_work_precision(out, build, fig_dir, source, [c for c in cases if _body_case(c[0]) is not None])
 
 
@@ -378,7 +396,7 @@ def fluid_stability_maps(out, files, fig_dir):
                        "periodic box, while these flows are not uniform (the cavity reaches $U$ only at its lid), "
                        "and a growth factor close to 1 may need more steps than the run has to cross the map's "
                        "bounds. Stable above the line does not contradict the analysis; unstable below it "
-                       "would.\\n" %
+                       "would.\n" %
                        (len(above), len(rows), esc(name), num(max(_float(r["theory_max_g"]) for r in above), 4)))
         limits = fluid_measured_limits(rows)
         out.append(longtable("rrrrr", ["$\\mathrm{Re}_h$", "largest stable", "(its measured CFL)", "first not stable",

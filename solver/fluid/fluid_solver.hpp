@@ -55,13 +55,17 @@ struct ProjectionStats {
 //    linear 2 u_w - u_1 (the normal component keeps it: see add_wall_closure), whose
 //    wall-cell Laplacian has an O(1) truncation error (-u''/4). Crank-Nicolson on the quadratic
 //    closure: the explicit half directly; the implicit half by defect correction around the linear
-//    operator the DST diagonalises, wall_closure_sweeps Helmholtz solves per component (each sweep
-//    shrinks the defect by < 4/9 at any viscous number; an explicit AB2 treatment of the difference
-//    is unstable above nu dt / h^2 ~ 0.5 on the manufactured solution).
+//    operator the DST diagonalises: one Helmholtz solve per component from the explicit estimate
+//    up to nu dt / h^2 = single_sweep_viscous_number (0.25), wall_closure_sweeps from u^n above it (each
+//    sweep shrinks the defect by < 4/9 at any viscous number; an explicit AB2 treatment of the
+//    difference is unstable above nu dt / h^2 ~ 0.5 on the manufactured solution).
 // Measured on the Re 1000 cavity against Botella & Peyret (docs/fluid-accuracy.md).
 struct FluidSchemes {
   bool quick_convection = false;
   bool quadratic_wall = false;
+  // Up to this viscous number nu dt / h^2 the quadratic closure takes one sweep from the explicit
+  // estimate (complete_prediction); 0: always wall_closure_sweeps sweeps from u^n.
+  double single_sweep_viscous_number = 0.25;
 };
 
 // A force of the step as it enters the face velocities of the momentum interpolation (balanced
