@@ -44,7 +44,7 @@
 #include "fluid/fluid_solver.hpp"
 #include "scene/scene_reader.hpp"
 #include "sim/diagnostics.hpp"
-#include "sim/force_metrics.hpp"
+#include "metrics/force_metrics.hpp"
 #include "sim/run.hpp"
 #include "metrics/profile.hpp"
 #include "metrics/grid_convergence.hpp"
@@ -210,7 +210,7 @@ Point run_dfg_2d1(const Coupling& coupling, int n, const std::string& work_dir) 
 }
 
 // DFG 2D-2 (Re 100) at D/h = n under `coupling` to the scene's t = 12; error |max c_D over t >= 8
-// (sim/force_metrics.hpp, as the case's check) / midpoint of Schaefer & Turek's bounds - 1|.
+// (metrics/force_metrics.hpp, as the case's check) / midpoint of Schaefer & Turek's bounds - 1|.
 Point run_dfg_2d2(const Coupling& coupling, int n, const std::string& work_dir) {
   const std::string dir = source_dir + "/validation/dfg_cylinder_2d2";
   std::vector<std::string> overrides = dfg_grid(n);
