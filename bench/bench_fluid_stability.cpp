@@ -123,8 +123,8 @@ Outcome run_point(const MapCase& c, const Scene& scene, bool adaptive) {
         break;
       }
     }
-    out.max_speed_over_scale = std::max(out.max_speed_over_scale, scan.max_speed / sim.fluid_guard.speed_scale);
-    out.max_energy_over_budget = std::max(out.max_energy_over_budget, scan.kinetic_energy / sim.fluid_guard.energy_budget());
+    out.max_speed_over_scale = std::max(out.max_speed_over_scale, scan.max_speed / sim.instability.fluid_guard.speed_scale);
+    out.max_energy_over_budget = std::max(out.max_energy_over_budget, scan.kinetic_energy / sim.instability.fluid_guard.energy_budget());
     const double cfl = dt * scan.max_rate;
     out.max_cfl_measured = std::max(out.max_cfl_measured, cfl);
     if (cfl > 1.0 && out.first_above_cfl_1 < 0) out.first_above_cfl_1 = step;

@@ -48,12 +48,13 @@
 #include "fluid/fluid_solver.hpp"
 #include "scene/scene_reader.hpp"
 #include "sim/diagnostics.hpp"
-#include "sim/force_metrics.hpp"
+#include "metrics/force_metrics.hpp"
 #include "sim/run.hpp"
 #include "metrics/profile.hpp"
 #include "metrics/grid_convergence.hpp"
 #include "metrics/body_series.hpp"
 #include "metrics/csv_reader.hpp"
+#include "verification/common/manufactured_run.hpp"
 #include "verification/fluid/manufactured_solution.hpp"
 
 #include "bench_paths.hpp"
@@ -88,7 +89,7 @@ double cpu_seconds_since(std::clock_t start) {
   return static_cast<double>(std::clock() - start) / CLOCKS_PER_SEC;
 }
 
-// Unsteady MMS to t = 1 with dt = 0.25 h (as the convergence test), forcing at t^{n+1/2}.
+// Unsteady MMS to t = 1 with dt = 0.25 h (as the convergence test, the same runner).
 Point run_mms(int n) {
   verification::ManufacturedSolution ms;
   ms.steady = false;
@@ -98,33 +99,10 @@ Point run_mms(int n) {
   const std::clock_t cpu_start = std::clock();
   FluidSolver solver(g, ms.viscosity, FluidBoundaries{});
   FluidState state = solver.make_state();
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      state.velocity_x(i, j) = ms.u(g.x_centre(i), g.y_centre(j), 0.0);
-      state.velocity_y(i, j) = ms.v(g.x_centre(i), g.y_centre(j), 0.0);
-      state.pressure(i, j) = ms.p(g.x_centre(i), g.y_centre(j), -0.5 * dt);
-    }
-  solver.initialise_faces(state);
-  CellField fx(g), fy(g);
-  const long n_steps = std::lround(1.0 / dt);
-  for (long s = 0; s < n_steps; ++s) {
-    const double t_half = state.time + 0.5 * dt;
-    for (int j = 0; j < n; ++j)
-      for (int i = 0; i < n; ++i) {
-        fx(i, j) = ms.force_x(g.x_centre(i), g.y_centre(j), t_half);
-        fy(i, j) = ms.force_y(g.x_centre(i), g.y_centre(j), t_half);
-      }
-    solver.predict_momentum(state, dt, &fx, &fy);
-    solver.project_smac(state, dt);
-  }
+  const long steps = verification::run_manufactured(ms, g, solver, state, dt, /*end_time=*/1.0, /*steady_tolerance=*/0.0);
   const double seconds = seconds_since(start), cpu = cpu_seconds_since(cpu_start);
-  double sum = 0.0;
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      const double e = state.velocity_x(i, j) - ms.u(g.x_centre(i), g.y_centre(j), state.time);
-      sum += e * e;
-    }
-  return {n, 1.0 / n, n_steps, seconds, std::sqrt(sum / (n * n)), cpu, NAN, ""};
+  const double error = verification::manufactured_errors(ms, g, state, dt, /*remove_pressure_mean=*/false).u_l2;
+  return {n, 1.0 / n, steps, seconds, error, cpu, NAN, ""};
 }
 
 // Cavity case at n^2 to its steady-state criterion; error against Botella & Peyret's extrema.
@@ -218,7 +196,7 @@ Point run_dfg_2d1(const Coupling& coupling, int n, const std::string& work_dir) 
 }
 
 // DFG 2D-2 (Re 100) at D/h = n under `coupling` to the scene's t = 12; error |max c_D over t >= 8
-// (sim/force_metrics.hpp, as the case's check) / midpoint of Schaefer & Turek's bounds - 1|.
+// (metrics/force_metrics.hpp, as the case's check) / midpoint of Schaefer & Turek's bounds - 1|.
 Point run_dfg_2d2(const Coupling& coupling, int n, const std::string& work_dir) {
   const std::string dir = source_dir + "/validation/dfg_cylinder_2d2";
   std::vector<std::string> overrides = dfg_grid(n);

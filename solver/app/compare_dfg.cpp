@@ -16,7 +16,7 @@
 #include "metrics/csv_reader.hpp"
 #include "app/compare_report.hpp"
 #include "core/errors.hpp"
-#include "sim/force_metrics.hpp"
+#include "metrics/force_metrics.hpp"
 #include "metrics/case_criteria.hpp"
 #include "metrics/control_volume_force.hpp"
 

@@ -46,7 +46,7 @@ void install_stop_handlers() {
 
 // The fluid guard's largest ratios over the run (sim/fluid_guard.hpp): how close it came to a stop.
 void print_fluid_guard(const ibms::Simulation& sim) {
-  const ibms::FluidGuard& guard = sim.fluid_guard;
+  const ibms::FluidGuard& guard = sim.instability.fluid_guard;
   std::fprintf(stderr, "ibms: fluid guard: largest speed %.3g V_f (V_f = %.4g; stops above %g V_f), largest kinetic "
                "energy %.3g of its budget (stops above 1)\n", guard.largest_speed_ratio, guard.speed_scale,
                ibms::FluidGuard::speed_factor, guard.largest_energy_ratio);

@@ -130,13 +130,13 @@ std::string describe_time_step_limits(const Scene& scene, const Simulation& sim)
                                                          "the step)", contact_limit)
                                            : "");
     if (std::isfinite(dt) && dt > 0) {
-      const bool touching = sim.contact_possible(dt);
+      const bool touching = sim.substep_planner().contact_possible(dt);
       SubstepGroups groups;
-      sim.plan_substep_groups(dt, groups);
+      sim.substep_planner().plan(dt, groups);
       SolidStepInputs in;
       in.dt = dt;
-      in.max_substep = groups.group_of.empty() ? sim.global_contact_limit(dt) : HUGE_VAL;
-      in.fixed_substeps = sim.fixed_solid_substeps;
+      in.max_substep = groups.group_of.empty() ? sim.substep_planner().global_contact_limit(dt) : HUGE_VAL;
+      in.fixed_substeps = sim.solid_work.fixed_substeps;
       const SolidStepCount count = count_substeps(in, groups, sim.bodies());
       const std::size_t n_groups = groups.group_of.empty() ? 1 : groups.max_substep.size();
       text += fmt::format("sub-steps per fluid step at dt = {:.4g}: {} at most, {} summed over the {} bodies "

@@ -53,8 +53,8 @@ void report_body_instability(const Simulation& sim, const std::string& what) {
   const std::string advice = "; reduce run.time_step, or do not fix the solid sub-steps";
   if (sim.scene().run.on_body_instability == RunSpec::OnInstability::stop)
     throw BlowUpError(fmt::format("blow-up at step {}, t = {:.6g}: {}{}", f.step, f.time, what, advice));
-  if (sim.instability_warned) return;
-  sim.instability_warned = true;
+  if (sim.instability.warned) return;
+  sim.instability.warned = true;
   std::fprintf(stderr, "ibms: warning at step %ld, t = %.6g: %s%s (run.on_body_instability = \"warn\": said once, "
                "the run goes on)\n", f.step, f.time, what.c_str(), advice.c_str());
 }
@@ -100,13 +100,13 @@ void check_bodies_for_blow_up(const Simulation& sim) {
     // spring energy alone also holds the load of a swelling step (the natural lengths jump by
     // rate dt at each step's end, ~ k (rate dt)^2 / 2 per spring: 2.2 for the stiff swelling disk).
     const double energy = kinetic_energy(body);
-    const double bound = Simulation::instability_energy_factor * sim.body_energy_scale()[b];
+    const double bound = InstabilityBounds::energy_factor * sim.instability.body_energy_scale[b];
     if (energy > bound)
       report_body_instability(sim, fmt::format(
           "body {} has kinetic energy {:.4g}, above the {:.4g} the scene can give it "
           "(4 (M V^2 / 2 + initial spring energy), V = {:.4g} the fastest driver: walls, initial and prescribed "
           "speeds, swelling, buoyant free fall across the box): an unstable spring or contact",
-          b, energy, bound, sim.driving_speed()));
+          b, energy, bound, sim.instability.driving_speed));
   }
   // A contact deeper than the contact spheres: the rims pass into each other (docs/method.md §5.5,
   // "Limit"). The overlap is about v0 T_c / pi under the collision-time law, v0 sqrt(m_eff / k)
@@ -115,25 +115,25 @@ void check_bodies_for_blow_up(const Simulation& sim) {
     double smallest_radius = HUGE_VAL;
     for (const MassSpringBody& body : sim.bodies())
       smallest_radius = std::min(smallest_radius, sim.contact_model().cds_radius_of(body));
-    if (sim.last_contact_stats.max_overlap > smallest_radius)
+    if (sim.stats.last_contact_stats.max_overlap > smallest_radius)
       report_body_instability(sim, fmt::format(
           "a contact overlap of {:.4g} exceeds the smallest contact-sphere radius {:.4g}: the rims pass into each "
           "other (contact.model = \"collision_time\": the overlap is about v0 T_c / pi, so lower run.max_time_step "
           "or contact.collision_steps; linear law: about v0 sqrt(m / k), so raise contact.stiffness)",
-          sim.last_contact_stats.max_overlap, smallest_radius));
+          sim.stats.last_contact_stats.max_overlap, smallest_radius));
   }
   // The contacts have given the bodies more energy than they took: more than a quarter of the
   // energy scale sum_b M_b V^2 / 2 (a stable contact gives back at most what it stored, less its
   // integration error of a few per cent of one collision's energy).
   double energy_scale = 0.0;
   for (std::size_t b = 0; b < sim.bodies().size(); ++b)
-    if (sim.bodies()[b].kind != BodyKind::prescribed) energy_scale += sim.body_energy_scale()[b];
+    if (sim.bodies()[b].kind != BodyKind::prescribed) energy_scale += sim.instability.body_energy_scale[b];
   constexpr double returned_fraction = 0.25;
-  if (sim.total_contact_work > returned_fraction * energy_scale)
+  if (sim.stats.total_contact_work > returned_fraction * energy_scale)
     report_body_instability(sim, fmt::format(
         "the contacts have returned {:.4g} more energy to the bodies than they received (more than {} of the bodies' "
         "energy scale {:.4g}): an unstable contact",
-        sim.total_contact_work, returned_fraction, energy_scale));
+        sim.stats.total_contact_work, returned_fraction, energy_scale));
 }
 
 }  // namespace

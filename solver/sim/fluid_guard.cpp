@@ -57,8 +57,8 @@ void report_fluid_instability(Simulation& sim, const std::string& what) {
   const std::string advice = "; reduce run.cfl or run.time_step (docs/fluid-stability.md)";
   if (sim.scene().run.on_fluid_instability == RunSpec::OnInstability::stop)
     throw BlowUpError(fmt::format("blow-up at step {}, t = {:.6g}: {}{}", f.step, f.time, what, advice));
-  if (sim.fluid_guard.warned) return;
-  sim.fluid_guard.warned = true;
+  if (sim.instability.fluid_guard.warned) return;
+  sim.instability.fluid_guard.warned = true;
   std::fprintf(stderr, "ibms: warning at step %ld, t = %.6g: %s%s (run.on_fluid_instability = \"warn\": said once, "
                "the run goes on)\n", f.step, f.time, what.c_str(), advice.c_str());
 }
@@ -82,8 +82,8 @@ double body_power(const Simulation& sim) {
 
 void start_fluid_guard(Simulation& sim) {
   const VelocityScan scan = scan_velocity(sim.grid(), sim.fluid());
-  FluidGuard& guard = sim.fluid_guard;
-  guard.speed_scale = std::max(sim.driving_speed(), scan.max_speed);
+  FluidGuard& guard = sim.instability.fluid_guard;
+  guard.speed_scale = std::max(sim.instability.driving_speed, scan.max_speed);
   guard.initial_energy = scan.kinetic_energy;
   guard.input_work = 0.0;
   guard.boundary_power = boundary_power(sim);
@@ -93,7 +93,7 @@ void start_fluid_guard(Simulation& sim) {
 }
 
 void account_fluid_input(Simulation& sim, double dt) {
-  FluidGuard& guard = sim.fluid_guard;
+  FluidGuard& guard = sim.instability.fluid_guard;
   const double power = boundary_power(sim);
   // The larger of the powers at both ends of the step: the side work of a flow that speeds up is
   // largest at the start (the wall stress nu (u_b - u_c) / (h/2) falls as u_c nears u_b).
@@ -104,7 +104,7 @@ void account_fluid_input(Simulation& sim, double dt) {
 }
 
 void check_fluid_guard(Simulation& sim, const VelocityScan& scan) {
-  FluidGuard& guard = sim.fluid_guard;
+  FluidGuard& guard = sim.instability.fluid_guard;
   const Grid& g = sim.grid();
   const double rho = sim.fluid_density();  // the message speaks the series' units: energy per unit depth
   const double budget = guard.energy_budget();

@@ -30,6 +30,7 @@
 #include "ibm/delta_kernel.hpp"
 #include "ibm/ib_operators.hpp"
 #include "sim/body_coupling.hpp"
+#include "solid/implicit_euler.hpp"
 
 namespace ibms {
 
@@ -42,6 +43,21 @@ struct NoSlipWorkspace {
   std::vector<double> cosine, sine, rotated, coefficients;
   std::vector<double> rhs, solution, residual;
   void reserve(std::size_t max_unknowns);
+};
+
+// What the coupling keeps between its calls, allocated once when the Simulation is built.
+struct NoSlipArrays {
+  // The projected increment of one correction.
+  CellField slip_increment_x, slip_increment_y;
+  // The step's force dt S F on the cells and dt S_f F on the faces (the balanced momentum
+  // interpolation, FaceForcing); after the projection the faces are the scratch of the
+  // corrections' face increments.
+  CellField force_cell_x, force_cell_y;
+  FaceField force_face_x, force_face_y;
+  NoSlipWorkspace work;
+  // Per body, the linearised response of a mass-spring body over the fluid step,
+  // (M + dt D + dt^2 S) factorised at the step's start (docs/method.md §3.7).
+  std::vector<ImplicitSpringSystem> response_systems;
 };
 
 // The response of body b's rim to marker impulses: velocity_change_l = the change of U_l over the step

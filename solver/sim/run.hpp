@@ -8,6 +8,7 @@
 #include <csignal>
 #include <string>
 
+#include "sim/run_output.hpp"  // ibms_version, stage_timing_table: what callers of the run print
 #include "sim/simulation.hpp"
 
 namespace ibms {
@@ -32,14 +33,5 @@ struct RunSummary {
 };
 
 RunSummary run_simulation(Simulation& sim, const RunOptions& options);
-
-// The version and git commit this library was built from (what the output file records);
-// ibms_git_commit() is in a source generated at every build (cmake/git_commit.cmake).
-const char* ibms_version();
-const char* ibms_git_commit();
-
-// The /timing figures as a table (stage, seconds, share of the wall time, calls; the solid
-// sub-step totals): what `ibms run` prints at the end unless --quiet.
-std::string stage_timing_table(const Simulation& sim, double wall_seconds);
 
 }  // namespace ibms

@@ -131,7 +131,8 @@ Simulation::Simulation(const Scene& scene)
                     FluidSchemes{scene.fluid.convection == FluidSpec::Convection::quick,
                                  scene.fluid.wall_closure == FluidSpec::WallClosure::quadratic}),
       fluid_(fluid_solver_.make_state()),
-      kernel_(kernel_kind(scene.ibm.kernel)) {
+      kernel_(kernel_kind(scene.ibm.kernel)),
+      substep_planner_(scene_, bodies_, coupling_, contact_model_, contact_box_, contact_inner_loop) {
   inner_fluid_inertia = inner_fluid_inertia_of(scene.ibm.inner_fluid_inertia);
   fluid_solver_.initialise_faces(fluid_);  // fluid at rest: faces 0, projection is a no-op
   if (!has_bodies()) {
@@ -164,18 +165,18 @@ Simulation::Simulation(const Scene& scene)
   set_instability_bounds();
   for (std::size_t b = 0; b < bodies_.size(); ++b)
     coupling_[b].slip_reference_speed =
-        scene.bodies[b].reference_speed > 0.0 ? scene.bodies[b].reference_speed : driving_speed_;
+        scene.bodies[b].reference_speed > 0.0 ? scene.bodies[b].reference_speed : instability.driving_speed;
   if (enforces_no_slip()) {
-    slip_increment_x = CellField(grid_);
-    slip_increment_y = CellField(grid_);
-    force_cell_x = CellField(grid_);
-    force_cell_y = CellField(grid_);
-    force_face_x = FaceField::x_faces(grid_);
-    force_face_y = FaceField::y_faces(grid_);
+    no_slip.slip_increment_x = CellField(grid_);
+    no_slip.slip_increment_y = CellField(grid_);
+    no_slip.force_cell_x = CellField(grid_);
+    no_slip.force_cell_y = CellField(grid_);
+    no_slip.force_face_x = FaceField::x_faces(grid_);
+    no_slip.force_face_y = FaceField::y_faces(grid_);
     std::size_t unknowns = 0;
     for (const BodyCoupling& c : coupling_) unknowns += 2 * c.marker.capacity();
-    no_slip_work.reserve(unknowns);
-    response_systems.resize(bodies_.size());
+    no_slip.work.reserve(unknowns);
+    no_slip.response_systems.resize(bodies_.size());
     for (std::size_t b = 0; b < bodies_.size(); ++b) {
       if (bodies_[b].kind != BodyKind::mass_spring) continue;
       coupling_[b].body_velocity_change.assign(coupling_[b].marker.size(), Vec2{0.0, 0.0});
@@ -196,15 +197,15 @@ Simulation::Simulation(const Scene& scene)
       // Runs on several threads at once (one per body group): the forces of each group are its
       // own; the shared totals are maxima and integer sums (order-independent), updated under a lock.
       const auto start = std::chrono::steady_clock::now();
-      const ContactStats stats = add_contact_forces(contact_model_, bodies, contact_box_, forces, members);
+      const ContactStats found = add_contact_forces(contact_model_, bodies, contact_box_, forces, members);
       const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 #if defined(_OPENMP)
 #pragma omp critical(ibms_contact_stats)
 #endif
       {
         timers_.add(Stage::contacts, seconds, 1);
-        total_pair_checks += stats.n_pair_checks;
-        last_contact_stats.include(stats);
+        stats.total_pair_checks += found.n_pair_checks;
+        stats.last_contact_stats.include(found);
       }
     };
     if (scene.contact.time_stepping == ContactSpec::TimeStepping::inner_loop) {
@@ -222,9 +223,9 @@ Simulation::Simulation(const Scene& scene)
 #endif
         {
           timers_.add(Stage::contacts, seconds, 1);
-          total_pair_checks += result.stats.n_pair_checks;
-          total_contact_inner_steps += result.inner_steps;
-          last_contact_stats.include(result.stats);
+          stats.total_pair_checks += result.stats.n_pair_checks;
+          stats.total_contact_inner_steps += result.inner_steps;
+          stats.last_contact_stats.include(result.stats);
         }
         return result.work;
       };
@@ -255,79 +256,20 @@ void Simulation::set_instability_bounds() {
   }
   // A scene with nothing driving it still needs a non-zero scale (round-off moves the bodies):
   // crossing a thousandth of the box in the whole run.
-  driving_speed_ = std::max(speed, 1e-3 * diagonal / scene_.run.end_time);
-  body_energy_scale_.clear();
+  instability.driving_speed = std::max(speed, 1e-3 * diagonal / scene_.run.end_time);
+  instability.body_energy_scale.clear();
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
     const BodySpec& spec = scene_.bodies[b];
     const double largest = spec.swelling.enabled ? std::max(spec.diameter, spec.swelling.max_diameter) : spec.diameter;
     const double mass = bodies_[b].density * pi * largest * largest / 4.0;
-    body_energy_scale_.push_back(0.5 * mass * driving_speed_ * driving_speed_ +
+    instability.body_energy_scale.push_back(0.5 * mass * instability.driving_speed * instability.driving_speed +
                                  spring_energy(bodies_[b], bodies_[b].length_scale()));
   }
 }
 
-bool Simulation::contact_possible(double dt) const {
-  if (!has_contacts()) return false;
-  find_groups(dt);
-  return contact_groups_.any_contact();
-}
-
-double Simulation::global_contact_limit(double dt) const {
-  return contact_possible(dt) ? contact_substep(contact_model_.for_fluid_step(dt), bodies_) : HUGE_VAL;
-}
-
 SubstepGroups& Simulation::substep_groups(double dt) {
-  // The contact law of this step (collision_time: T_c = collision_steps dt), read by the seams.
   contact_model_ = contact_model_.for_fluid_step(dt);
-  plan_substep_groups(dt, substep_groups_);
-  return substep_groups_;
-}
-
-void Simulation::plan_substep_groups(double dt, SubstepGroups& groups) const {
-  if (static_cast<bool>(groups.inner_loop) != static_cast<bool>(contact_inner_loop)) groups.inner_loop = contact_inner_loop;
-  if (scene_.run.solid_substeps == RunSpec::SolidSubsteps::global) {
-    groups.group_of.clear();
-    return;
-  }
-  find_groups(dt);
-  groups.group_of.assign(contact_groups_.group_of.begin(), contact_groups_.group_of.end());
-  groups.max_substep.assign(contact_groups_.n_groups, HUGE_VAL);
-  for (int g = 0; g < contact_groups_.n_groups; ++g) {
-    if (!contact_groups_.may_touch[g]) continue;
-    groups.members.resize(bodies_.size());
-    for (std::size_t b = 0; b < bodies_.size(); ++b) groups.members[b] = groups.group_of[b] == g ? 1 : 0;
-    groups.max_substep[g] = contact_substep(contact_model_.for_fluid_step(dt), bodies_, groups.members);
-  }
-}
-
-void Simulation::find_groups(double dt) const {
-  // Extra reach of each body within dt (contact/contact_model.hpp), all bounds doubled:
-  //   travel from its acceleration a_b dt^2 (the exact 1/2 a dt^2 doubled), with
-  //   a_b = |F_hydro| / m + |1 - rho_f/rho_s| |g| (frozen over the step; springs and contacts act
-  //   inside the body and between bodies already touching, which the gap test catches), and for a
-  //   prescribed body the largest acceleration of its motion |A| w^2 + (R)(|Theta| w^2 + Omega^2 + ...);
-  //   and swelling: the radius grows by at most rate dt / 2 (and the CDS radius with it).
-  const double gravity = std::hypot(scene_.fluid.gravity[0], scene_.fluid.gravity[1]);
-  contact_reach_.resize(bodies_.size());
-  for (std::size_t b = 0; b < bodies_.size(); ++b) {
-    const MassSpringBody& body = bodies_[b];
-    const BodySpec& spec = scene_.bodies[b];
-    double acceleration = 0.0;
-    if (body.kind == BodyKind::prescribed) {
-      const double w = spec.oscillation_period > 0 ? 2 * pi / spec.oscillation_period : 0.0;
-      const double radius = 0.5 * body.diameter;
-      const double omega_max = std::abs(spec.angular_velocity) + std::abs(spec.angle_amplitude) * w;
-      acceleration = std::hypot(spec.oscillation_amplitude[0], spec.oscillation_amplitude[1]) * w * w +
-                     radius * (std::abs(spec.angle_amplitude) * w * w + omega_max * omega_max);
-    } else {
-      const Vec2& f = coupling_[b].hydrodynamic_force;
-      acceleration = std::hypot(f[0], f[1]) / body.total_mass() +
-                     std::abs(1.0 - scene_.fluid.density / body.density) * gravity;
-    }
-    const double growth = spec.swelling.enabled ? spec.swelling.rate * dt * (1.0 + contact_model_.cds_radius_fraction) : 0.0;
-    contact_reach_[b] = acceleration * dt * dt + growth;
-  }
-  find_contact_groups(contact_model_, bodies_, contact_box_, dt, contact_reach_, contact_groups_);
+  return substep_planner_.plan_step(dt);
 }
 
 std::vector<std::string> Simulation::stage_names() const {

@@ -130,11 +130,11 @@ void write_simulation_checkpoint(OutputFile& out, const Simulation& sim, double 
       {"time_step_prev", f.time_step_prev},
       {"has_convection_prev", f.has_convection_prev ? 1.0 : 0.0},
       {"next_snapshot_time", next_snapshot_time},
-      {"total_contact_work", sim.total_contact_work},
-      {"fluid_guard_speed_scale", sim.fluid_guard.speed_scale},
-      {"fluid_guard_initial_energy", sim.fluid_guard.initial_energy},
-      {"fluid_guard_input_work", sim.fluid_guard.input_work},
-      {"fluid_guard_boundary_power", sim.fluid_guard.boundary_power},
+      {"total_contact_work", sim.stats.total_contact_work},
+      {"fluid_guard_speed_scale", sim.instability.fluid_guard.speed_scale},
+      {"fluid_guard_initial_energy", sim.instability.fluid_guard.initial_energy},
+      {"fluid_guard_input_work", sim.instability.fluid_guard.input_work},
+      {"fluid_guard_boundary_power", sim.instability.fluid_guard.boundary_power},
       {"nx", static_cast<double>(sim.grid().nx)},
       {"ny", static_cast<double>(sim.grid().ny)},
       {"n_bodies", static_cast<double>(sim.bodies().size())},
@@ -207,7 +207,7 @@ double restore_simulation(const Checkpoint& checkpoint, const std::string& path,
   f.time_step_prev = read.non_negative("time_step_prev");
   f.has_convection_prev = read.scalar("has_convection_prev") != 0.0;
   // The instability guard's contact-work sum (absent from checkpoints of ibms <= 0.2: starts at 0).
-  if (checkpoint.scalars.count("total_contact_work") != 0) sim.total_contact_work = read.scalar("total_contact_work");
+  if (checkpoint.scalars.count("total_contact_work") != 0) sim.stats.total_contact_work = read.scalar("total_contact_work");
   read.into("fluid_velocity_x", f.velocity_x);
   read.into("fluid_velocity_y", f.velocity_y);
   read.into("fluid_pressure", f.pressure);
@@ -219,7 +219,7 @@ double restore_simulation(const Checkpoint& checkpoint, const std::string& path,
   // the restored field.
   start_fluid_guard(sim);
   if (checkpoint.scalars.count("fluid_guard_input_work") != 0) {
-    FluidGuard& guard = sim.fluid_guard;
+    FluidGuard& guard = sim.instability.fluid_guard;
     guard.speed_scale = read.non_negative("fluid_guard_speed_scale");
     guard.initial_energy = read.non_negative("fluid_guard_initial_energy");
     guard.input_work = read.non_negative("fluid_guard_input_work");

@@ -52,10 +52,11 @@ void predict(Simulation& sim, double time_n, double dt) {
     if (!predicted) force_markers(sim, time_n, dt);                                        // u~_e + dt f
     if (sim.enforces_no_slip()) {
       auto t = sim.timers().time(Stage::ib_forcing);
-      spread_step_forces(sim.grid(), sim.kernel(), dt, sim.coupling(), sim.force_cell_x, sim.force_cell_y,
-                         sim.force_face_x, sim.force_face_y);  // dt S F, dt S_f F for the faces
+      NoSlipArrays& ns = sim.no_slip;
+      spread_step_forces(sim.grid(), sim.kernel(), dt, sim.coupling(), ns.force_cell_x, ns.force_cell_y,
+                         ns.force_face_x, ns.force_face_y);  // dt S F, dt S_f F for the faces
       if (sim.cell_forces_from_faces())
-        cell_forces_from_faces(sim.grid(), sim.force_face_x, sim.force_face_y, sim.force_cell_x, sim.force_cell_y,
+        cell_forces_from_faces(sim.grid(), ns.force_face_x, ns.force_face_y, ns.force_cell_x, ns.force_cell_y,
                                solver.velocity_star_x(), solver.velocity_star_y());  // dt A S_f F
     }
     { auto t = sim.timers().time(Stage::predictor); solver.complete_prediction(fluid, dt); }  // u~ with f
@@ -68,8 +69,9 @@ void predict(Simulation& sim, double time_n, double dt) {
 // 3. u^{n+1}, U_f^{n+1}, p^{n+1} (§2.3 steps 3-5).
 void project(Simulation& sim, double dt) {
   auto t = sim.timers().time(Stage::projection);
-  const FaceForcing balanced{&sim.force_cell_x, &sim.force_cell_y, &sim.force_face_x, &sim.force_face_y};
-  sim.last_projection = sim.fluid_solver().project(sim.fluid(), dt, sim.enforces_no_slip() ? &balanced : nullptr);
+  NoSlipArrays& ns = sim.no_slip;
+  const FaceForcing balanced{&ns.force_cell_x, &ns.force_cell_y, &ns.force_face_x, &ns.force_face_y};
+  sim.stats.last_projection = sim.fluid_solver().project(sim.fluid(), dt, sim.enforces_no_slip() ? &balanced : nullptr);
 }
 
 // The no_slip coupling's mass-spring bodies (§3.7): the backward-Euler step of each over dt without
@@ -85,7 +87,7 @@ bool prepare_body_responses(Simulation& sim, double dt) {
     const MassSpringBody& body = sim.bodies()[b];
     for (int p = 0; p < body.n_points(); ++p)
       c.external_force[p] = body.buoyant_weight(body.mass[p], sim.fluid_density(), gravity);
-    sim.response_systems[b].velocity_change(body, dt, c.external_force);  // dU without the fluid
+    sim.no_slip.response_systems[b].velocity_change(body, dt, c.external_force);  // dU without the fluid
     for (std::size_t l = 0; l < c.marker.size(); ++l)
       for (int d = 0; d < 2; ++d) c.target_velocity[l][d] += c.external_force[l][d];
     any = true;
@@ -114,15 +116,15 @@ void hold_no_slip(Simulation& sim, double time_n, double dt) {
     std::fill(x.begin(), x.end(), 0.0);
     for (std::size_t l = 0; l < c.marker.size(); ++l)
       for (int d = 0; d < 2; ++d) x[2 * l + d] = -sim.fluid_density() * c.marker_volume[l] * impulse[l][d];
-    sim.response_systems[b].response(x);
+    sim.no_slip.response_systems[b].response(x);
     for (std::size_t l = 0; l < c.marker.size(); ++l)
       for (int d = 0; d < 2; ++d) change[l][d] = x[2 * l + d];
   };
+  NoSlipArrays& ns = sim.no_slip;
   const NoSlipResult result =
       hold_no_slip(sim.grid(), sim.kernel(), walls, dt, ibm.slip_tolerance, on_faces, sim.cell_forces_from_faces(),
-                   ibm.max_coupling_iterations,
-                   sim.fluid_solver(), fluid, sim.coupling(), sim.slip_increment_x, sim.slip_increment_y,
-                   sim.force_face_x, sim.force_face_y, sim.no_slip_work, responds ? response : BodyResponse{});
+                   ibm.max_coupling_iterations, sim.fluid_solver(), fluid, sim.coupling(), ns.slip_increment_x,
+                   ns.slip_increment_y, ns.force_face_x, ns.force_face_y, ns.work, responds ? response : BodyResponse{});
   keep_forces(sim.coupling());
   // The slip of the velocity not constrained, for the series: cells and faces differ by the
   // momentum interpolation's dt (mean(G_c) - G_f) p (§2.3).
@@ -130,16 +132,16 @@ void hold_no_slip(Simulation& sim, double time_n, double dt) {
     measure_slip(sim.grid(), sim.kernel(), walls, fluid.velocity_x, fluid.velocity_y, sim.coupling());
   else
     measure_face_slip(sim.grid(), sim.kernel(), walls, fluid.velocity_face_x, fluid.velocity_face_y, sim.coupling());
-  sim.last_coupling_iterations = result.products;
-  sim.total_coupling_iterations += result.products;
+  sim.stats.last_coupling_iterations = result.products;
+  sim.stats.total_coupling_iterations += result.products;
   if (result.products > 0) {
     // The corrections changed u^{n+1}: its largest speed anew, its change since u^n at most by their sum.
     double largest = 0.0;
     for (int j = 0; j < sim.grid().ny; ++j)
       for (int i = 0; i < sim.grid().nx; ++i)
         largest = std::max({largest, std::abs(fluid.velocity_x(i, j)), std::abs(fluid.velocity_y(i, j))});
-    sim.last_projection.max_velocity = largest;
-    sim.last_projection.max_velocity_change += result.max_change;
+    sim.stats.last_projection.max_velocity = largest;
+    sim.stats.last_projection.max_velocity_change += result.max_change;
   }
 }
 
@@ -150,23 +152,25 @@ void advance_body_stage(Simulation& sim, double time_n, double dt) {
   sim.inner_fluid_inertia(sim.grid(), sim.fluid_density(), sim.fluid(), sim.bodies(), dt,
                           sim.coupling());  // F_int = rho_f dI/dt (variant K) or 0 (A), §1.7
   compute_hydrodynamic_loads(sim.bodies(), sim.coupling());  // F, T of the fluid on each body (eq. 1.7a)
-  sim.last_contact_stats = ContactStats{};
+  sim.stats.last_contact_stats = ContactStats{};
   // Each group of bodies that may touch within the step takes its own sub-step; contact sub-steps
   // only for a group that may touch something.
   SubstepGroups& groups = sim.substep_groups(dt);
-  const double global_limit = groups.group_of.empty() ? sim.global_contact_limit(dt) : HUGE_VAL;
+  const double global_limit = groups.group_of.empty() ? sim.substep_planner().global_contact_limit(dt) : HUGE_VAL;
   for (RigidBody& r : sim.rigid()) start_fluid_step(r);
+  SolidSubstepWork& work = sim.solid_work;
   const SolidStepCount count =
-      advance_bodies({time_n, dt, sim.fluid_density(), sim.scene().fluid.gravity, global_limit,
-                      sim.fixed_solid_substeps, &sim.spectral_workspace, &sim.implicit_systems},
+      advance_bodies({time_n, dt, sim.fluid_density(), sim.scene().fluid.gravity, global_limit, work.fixed_substeps,
+                      &work.spectral_workspace, &work.implicit_systems},
                      sim.swelling(), sim.contact_forces, groups, sim.coupling(), sim.contact_work(), sim.rigid(),
                      sim.bodies());
   for (RigidBody& r : sim.rigid()) end_fluid_step(dt, r);
-  sim.last_n_substeps = count.max_substeps;
-  sim.last_body_substeps = count.body_substeps;
-  sim.total_substeps += count.max_substeps;
-  sim.total_body_substeps += count.body_substeps;
-  sim.total_contact_work += groups.contact_work;
+  RunStatistics& stats = sim.stats;
+  stats.last_n_substeps = count.max_substeps;
+  stats.last_body_substeps = count.body_substeps;
+  stats.total_substeps += count.max_substeps;
+  stats.total_body_substeps += count.body_substeps;
+  stats.total_contact_work += groups.contact_work;
 }
 
 }  // namespace

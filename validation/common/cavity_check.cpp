@@ -27,7 +27,7 @@
 #include "metrics/csv_reader.hpp"
 #include "metrics/grid_convergence.hpp"
 #include "metrics/profile.hpp"
-#include "validation/common/results_csv.hpp"
+#include "verification/common/results_csv.hpp"
 
 using namespace ibms;
 

@@ -17,7 +17,7 @@
 // of the immersed-boundary c_D, final values (steady) or time means over t >= t_from (periodic).
 // The CMake files say which gate runs at which label and why.
 // steady (2D-1): the last row's c_D, c_L and Delta p (probes: ibms::dfg_pressure_difference).
-// periodic (2D-2): over t >= t_from, the figures of ibms::periodic_forces (solver/sim/force_metrics.hpp,
+// periodic (2D-2): over t >= t_from, the figures of ibms::periodic_forces (solver/metrics/force_metrics.hpp,
 //   shared with `ibms compare`); the reference of 2D-2 is the midpoint of the published bounds.
 // Every other figure is reported (info) with its deviation from the reference and whether it lies
 // within the published bounds.
@@ -40,8 +40,8 @@
 #include "metrics/csv_reader.hpp"
 #include "metrics/grid_convergence.hpp"
 #include "core/errors.hpp"
-#include "sim/force_metrics.hpp"
-#include "validation/common/results_csv.hpp"
+#include "metrics/force_metrics.hpp"
+#include "verification/common/results_csv.hpp"
 
 using namespace ibms::validation;
 using namespace ibms;

@@ -15,7 +15,7 @@
 #include "metrics/body_series.hpp"
 #include "metrics/case_criteria.hpp"
 #include "metrics/csv_reader.hpp"
-#include "../common/results_csv.hpp"
+#include "verification/common/results_csv.hpp"
 
 using namespace ibms;
 using namespace ibms::validation;

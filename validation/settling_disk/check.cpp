@@ -17,7 +17,7 @@
 #include "metrics/body_series.hpp"
 #include "metrics/case_criteria.hpp"
 #include "metrics/csv_reader.hpp"
-#include "validation/common/results_csv.hpp"
+#include "verification/common/results_csv.hpp"
 
 using namespace ibms;
 using namespace ibms::validation;

@@ -21,7 +21,7 @@
 #include "metrics/case_criteria.hpp"
 #include "metrics/csv_reader.hpp"
 #include "metrics/grid_convergence.hpp"
-#include "validation/common/results_csv.hpp"
+#include "verification/common/results_csv.hpp"
 
 using namespace ibms;
 using namespace ibms::validation;

@@ -11,7 +11,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "../common/results_csv.hpp"
+#include "verification/common/results_csv.hpp"
 #include "metrics/body_series.hpp"
 #include "metrics/case_criteria.hpp"
 #include "metrics/csv_reader.hpp"

@@ -18,6 +18,7 @@
 
 #include "io/csv_table.hpp"
 #include "metrics/grid_convergence.hpp"
+#include "results_csv.hpp"
 
 namespace ibms::verification {
 
@@ -63,9 +64,9 @@ struct OrderClaim {
 inline void append_convergence_csv(const std::string& title, const std::vector<int>& n,
                                    const std::vector<double>& h, const std::vector<double>& e,
                                    const OrderClaim& claim = {}) {
-  const char* dir = std::getenv("IBMS_RESULTS_DIR");
-  if (dir == nullptr || *dir == '\0') return;
-  const std::string path = std::string(dir) + "/convergence.csv";
+  const std::string dir = results::environment("IBMS_RESULTS_DIR");
+  if (dir.empty()) return;
+  const std::string path = dir + "/convergence.csv";
   static std::map<std::string, int> printed;  // per program: how often each title was written
   std::string full = title;
 #ifdef __GLIBC__
@@ -84,16 +85,16 @@ inline void append_convergence_csv(const std::string& title, const std::vector<i
     rows.push_back(quoted + line);
     if (k + 1 == n_rows) {
       std::snprintf(line, sizeof line, ",%.6g,%.3g,%s,%s,%s,%s", fit.order, fit.standard_error,
-                    csv_number(claim.formal, true).c_str(), csv_number(claim.asserted_min, true).c_str(),
-                    csv_number(claim.asserted_max, true).c_str(), claim.refined);
+                    ibms::csv_number(claim.formal, true).c_str(), ibms::csv_number(claim.asserted_min, true).c_str(),
+                    ibms::csv_number(claim.asserted_max, true).c_str(), claim.refined);
       rows.back() += line;
     } else {
       rows.back() += ",,,,,,";
     }
   }
-  const std::string failure = append_csv_rows(
-      path, "title,N,h,error,order,fit_order,fit_standard_error,formal_order,asserted_min,asserted_max,refined", rows);
-  if (!failure.empty()) std::fprintf(stderr, "convergence_table: %s\n", failure.c_str());
+  results::append_rows(
+      path, "title,N,h,error,order,fit_order,fit_standard_error,formal_order,asserted_min,asserted_max,refined", rows,
+      "convergence_table");
 }
 
 // Table "N  error  order" for the log (ctest -V shows it); also appended as CSV when

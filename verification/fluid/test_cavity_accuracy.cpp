@@ -42,7 +42,7 @@ Extrema botella_peyret_extrema(const std::vector<std::string>& options) {
     const double dt = next_time_step(sim, scan);
     advance_one_step(sim, dt);
     scan = scan_velocity(sim.grid(), sim.fluid());
-    const ProjectionStats& ps = sim.last_projection;
+    const ProjectionStats& ps = sim.stats.last_projection;
     if (ps.max_velocity > 0 && ps.max_velocity_change / (dt * ps.max_velocity) < tolerance) break;
   }
   const CentrelineProfiles p = centreline_profiles(sim);

@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "../common/convergence.hpp"
+#include "../common/manufactured_run.hpp"
 #include "fluid/fluid_solver.hpp"
 #include "manufactured_solution.hpp"
 
@@ -16,65 +17,22 @@ using verification::ManufacturedSolution;
 
 namespace {
 
-struct Errors { double u_l2 = 0, u_max = 0, v_l2 = 0, v_max = 0, p_l2 = 0, p_max = 0; };
-
 struct Run {
   FluidState state;
-  Errors errors;
+  verification::ManufacturedErrors errors;
   long steps = 0;
 };
 
 // Runs the solver from the exact initial field to `end_time` (or to steady state when
-// steady_tolerance > 0) with a fixed dt, forcing evaluated at t^{n+1/2}.
+// steady_tolerance > 0) with a fixed dt (common/manufactured_run.hpp); the errors with the
+// pressure's mean removed.
 Run run(const ManufacturedSolution& ms, int n, double dt, double end_time, double steady_tolerance,
         FluidSchemes schemes = {}) {
   const Grid g(n, n, 1.0, 1.0);
   FluidSolver solver(g, ms.viscosity, FluidBoundaries{}, schemes);
   Run r{solver.make_state(), {}, 0};
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      r.state.velocity_x(i, j) = ms.u(g.x_centre(i), g.y_centre(j), 0.0);
-      r.state.velocity_y(i, j) = ms.v(g.x_centre(i), g.y_centre(j), 0.0);
-      r.state.pressure(i, j) = ms.p(g.x_centre(i), g.y_centre(j), -0.5 * dt);
-    }
-  solver.initialise_faces(r.state);
-  CellField fx(g), fy(g);
-  const long n_steps = std::lround(end_time / dt);
-  for (long s = 0; s < n_steps; ++s) {
-    const double t_half = r.state.time + 0.5 * dt;
-    for (int j = 0; j < n; ++j)
-      for (int i = 0; i < n; ++i) {
-        fx(i, j) = ms.force_x(g.x_centre(i), g.y_centre(j), t_half);
-        fy(i, j) = ms.force_y(g.x_centre(i), g.y_centre(j), t_half);
-      }
-    solver.predict_momentum(r.state, dt, &fx, &fy);
-    const ProjectionStats stats = solver.project_smac(r.state, dt);
-    ++r.steps;
-    if (steady_tolerance > 0 && stats.max_velocity_change / (dt * stats.max_velocity) < steady_tolerance) break;
-  }
-  // Errors against the exact field; pressure p^{n+1} approximates p(t^{n+1/2}) (incremental
-  // CN projection, Brown, Cortez & Minion 2001), both with zero mean.
-  const double t = r.state.time, t_p = t - 0.5 * dt;
-  double mean_p = 0;
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) mean_p += r.state.pressure(i, j);
-  mean_p /= n * n;
-  double su = 0, sv = 0, sp = 0;
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      const double x = g.x_centre(i), y = g.y_centre(j);
-      const double eu = std::abs(r.state.velocity_x(i, j) - ms.u(x, y, t));
-      const double ev = std::abs(r.state.velocity_y(i, j) - ms.v(x, y, t));
-      const double ep = std::abs(r.state.pressure(i, j) - mean_p - ms.p(x, y, t_p));
-      su += eu * eu; sv += ev * ev; sp += ep * ep;
-      // fmax with a NaN error would hide a blow-up: make it infinite instead.
-      r.errors.u_max = std::max(r.errors.u_max, std::isfinite(eu) ? eu : HUGE_VAL);
-      r.errors.v_max = std::max(r.errors.v_max, std::isfinite(ev) ? ev : HUGE_VAL);
-      r.errors.p_max = std::max(r.errors.p_max, std::isfinite(ep) ? ep : HUGE_VAL);
-    }
-  r.errors.u_l2 = std::sqrt(su / (n * n));
-  r.errors.v_l2 = std::sqrt(sv / (n * n));
-  r.errors.p_l2 = std::sqrt(sp / (n * n));
+  r.steps = verification::run_manufactured(ms, g, solver, r.state, dt, end_time, steady_tolerance);
+  r.errors = verification::manufactured_errors(ms, g, r.state, dt, /*remove_pressure_mean=*/true);
   return r;
 }
 

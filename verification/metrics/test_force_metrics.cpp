@@ -1,4 +1,4 @@
-// The periodic force figures (sim/force_metrics.hpp) on synthetic histories: the Strouhal number of
+// The periodic force figures (metrics/force_metrics.hpp) on synthetic histories: the Strouhal number of
 // c_L = sin(2 pi f t) is f D / U, also when every step carries a jitter that crosses zero near the
 // lift's zero crossings (a coupling that corrects every other step leaves one of 5 % of the
 // amplitude); max c_D and max c_L are the maxima over the window.
@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "core/constants.hpp"
-#include "sim/force_metrics.hpp"
+#include "metrics/force_metrics.hpp"
 
 namespace {
 

@@ -72,16 +72,16 @@ Outcome run(const char* substeps, const char* time_stepping = "shared") {
   constexpr int n_steps = 80;
   for (int n = 0; n < n_steps; ++n) {
     SubstepGroups groups;
-    sim.plan_substep_groups(dt, groups);
+    sim.substep_planner().plan(dt, groups);
     const bool apart = !groups.group_of.empty() && groups.group_of[0] != groups.group_of[1];
     advance_one_step(sim, dt);
-    out.max_overlap = std::max(out.max_overlap, sim.last_contact_stats.max_overlap);
-    if (out.first_contact_step < 0 && sim.last_contact_stats.max_overlap > 0.0) out.first_contact_step = n;
+    out.max_overlap = std::max(out.max_overlap, sim.stats.last_contact_stats.max_overlap);
+    if (out.first_contact_step < 0 && sim.stats.last_contact_stats.max_overlap > 0.0) out.first_contact_step = n;
     if (n == 0) out.pair_apart_at_start = apart;
     if (out.first_contact_step == n) out.pair_joined_at_contact = !apart;
   }
-  out.body_substeps = sim.total_body_substeps;
-  out.inner_steps = sim.total_contact_inner_steps;
+  out.body_substeps = sim.stats.total_body_substeps;
+  out.inner_steps = sim.stats.total_contact_inner_steps;
   for (const MassSpringBody& body : sim.bodies()) out.centre.push_back(centre_of_mass(body));
   return out;
 }

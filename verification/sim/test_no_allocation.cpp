@@ -57,8 +57,8 @@ long allocations_in_steps(const char* scene_path, int warm_up, int counted,
   counting = false;
   BOOST_TEST_MESSAGE(scene_path << ": " << n_allocations << " allocations in steps " << warm_up << " to "
                                 << warm_up + counted << ", contact pairs last step "
-                                << sim.last_contact_stats.n_active_pairs << ", wall contacts "
-                                << sim.last_contact_stats.n_wall_contacts);
+                                << sim.stats.last_contact_stats.n_active_pairs << ", wall contacts "
+                                << sim.stats.last_contact_stats.n_wall_contacts);
   return n_allocations;
 }
 

@@ -64,7 +64,7 @@ SlipRecord slip_over_steps(const char* scene_path, const std::vector<std::string
       record.largest_mismatch = std::max(record.largest_mismatch, std::abs(body_largest - reported));
     }
   }
-  record.products = sim.total_coupling_iterations;
+  record.products = sim.stats.total_coupling_iterations;
   return record;
 }
 

@@ -35,8 +35,8 @@ BOOST_AUTO_TEST_CASE(swelling_disk_in_quiescent_fluid_induces_only_the_target_re
     for (int j = 0; j < g.ny; ++j)
       for (int i = 0; i < g.nx; ++i)
         max_fluid = std::max(max_fluid, std::hypot(sim.fluid().velocity_x(i, j), sim.fluid().velocity_y(i, j)));
-    max_removed_mean = std::max(max_removed_mean, std::abs(sim.last_projection.removed_mean));
-    max_rhs_scale = std::max(max_rhs_scale, sim.last_projection.max_divergence_before / dt);
+    max_removed_mean = std::max(max_removed_mean, std::abs(sim.stats.last_projection.removed_mean));
+    max_rhs_scale = std::max(max_rhs_scale, sim.stats.last_projection.max_divergence_before / dt);
   }
   const double swelling_speed = 0.5 * rate;  // rim speed of the uniform dilation D'/2
   BOOST_TEST_MESSAGE("final D = " << sim.bodies()[0].diameter << ", swelling rim speed D'/2 = " << swelling_speed);

@@ -54,8 +54,8 @@ BOOST_AUTO_TEST_CASE(run_output_carries_wall_seconds_and_calls_per_stage) {
   long substeps = 0, body_substeps = 0;
   read_scalar(file, "/timing/solid_substeps", substeps);
   read_scalar(file, "/timing/body_substeps", body_substeps);
-  BOOST_TEST(substeps == sim.total_substeps);
-  BOOST_TEST(body_substeps == sim.total_body_substeps);
+  BOOST_TEST(substeps == sim.stats.total_substeps);
+  BOOST_TEST(body_substeps == sim.stats.total_body_substeps);
   BOOST_TEST(substeps >= summary.steps);
   BOOST_TEST(body_substeps >= substeps);
   // The printed table names every stage that ran and the totals.

@@ -1,5 +1,5 @@
 // Force-history figures (force_metrics.hpp).
-#include "sim/force_metrics.hpp"
+#include "metrics/force_metrics.hpp"
 
 #include <algorithm>
 #include <stdexcept>
