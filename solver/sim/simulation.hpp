@@ -140,12 +140,6 @@ class Simulation {
   NoSlipArrays no_slip;           // allocated when ibm.coupling = "no_slip"
   SolidSubstepWork solid_work;
 
-  // bench/bench_bodies.cpp reads these three counters by these names: the same as stats.total_substeps,
-  // stats.total_body_substeps and stats.total_contact_inner_steps.
-  const long& total_substeps = stats.total_substeps;
-  const long& total_body_substeps = stats.total_body_substeps;
-  const long& total_contact_inner_steps = stats.total_contact_inner_steps;
-
  private:
   Scene scene_;
   Grid grid_;
