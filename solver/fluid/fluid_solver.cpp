@@ -219,20 +219,19 @@ void FluidSolver::complete_prediction(FluidState& state, double dt) {
   //    converged iteration's (u~ = u~_e = u^n there);
   //  - above it: wall_closure_sweeps sweeps from u^n (the explicit estimate's viscous half grows
   //    with D), which leave (4/9)^sweeps of the first guess's defect, whatever the viscous number.
-  if (one_sweep) {
-    add_wall_closure(phi_, work_, t_new, 0.5 * nu_ * dt, star_x_, star_y_);
-    solve_helmholtz_component(dt, star_x_);
-    solve_helmholtz_component(dt, star_y_);
-    return;
-  }
-  phi_ = star_x_;  // r (phi_, work_ and lap_ are free until project_smac)
-  work_ = star_y_;
   const double half = 0.5 * nu_ * dt;
-  add_wall_closure(state.velocity_x, state.velocity_y, t_new, half, star_x_, star_y_);  // first guess u^n
+  const int sweeps = one_sweep ? 1 : wall_closure_sweeps;
+  if (one_sweep) {
+    add_wall_closure(phi_, work_, t_new, half, star_x_, star_y_);  // first guess u~_e + dt f
+  } else {
+    phi_ = star_x_;  // r (phi_, work_ and lap_ are free until project_smac)
+    work_ = star_y_;
+    add_wall_closure(state.velocity_x, state.velocity_y, t_new, half, star_x_, star_y_);  // first guess u^n
+  }
   for (int sweep = 0;; ++sweep) {
     solve_helmholtz_component(dt, star_x_);
     solve_helmholtz_component(dt, star_y_);
-    if (sweep + 1 == wall_closure_sweeps) break;
+    if (sweep + 1 == sweeps) break;
     lap_x_ = phi_;
     lap_y_ = work_;
     add_wall_closure(star_x_, star_y_, t_new, half, lap_x_, lap_y_);  // r + (nu dt/2) C(u~ of this sweep)

@@ -282,7 +282,8 @@ std::vector<std::string> Simulation::stage_names() const {
                    " convection, Crank-Nicolson diffusion by DST Helmholtz" +
                    (scene_.fluid.wall_closure == FluidSpec::WallClosure::quadratic
                         ? ", quadratic wall closure by " + std::to_string(FluidSolver::wall_closure_sweeps) +
-                              " defect-correction sweeps from u^n, one from the explicit estimate up to nu dt/h^2 = 0.25)"
+                              " defect-correction sweeps from u^n, one from the explicit estimate up to nu dt/h^2 = " +
+                              fmt::format("{:g}", fluid_solver_.schemes().single_sweep_viscous_number) + ")"
                         : ")"));
   if (has_bodies() && enforces_no_slip())
     stages.push_back("immersed-boundary forcing (" + kernel +
