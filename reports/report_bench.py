@@ -249,7 +249,8 @@ def body_work_precision(out, build, fig_dir, source, cases):
                                                                ratio_text))
 
 
-_SYMBOL = {"stable": ("o", "tab:green"), "unstable": ("^", "tab:orange"), "blow-up": ("x", "tab:red")}
+_SYMBOL = {"stable": ("o", "tab:green"), "unstable": ("^", "tab:orange"), "blow-up": ("x", "tab:red"),
+           "too-deep": ("s", "tab:purple")}
 
 
 def stability_section(out, build, fig_dir):
@@ -267,8 +268,10 @@ def stability_section(out, build, fig_dir):
                "once per fluid step (fixed). Circles: stable; triangles: unstable (rim area changed "
                "by more than 50\\,\\%, or a body point faster than twice the initial approach speed, "
                "and the run reached its end: the solver did not stop it); "
-               "crosses: stopped by the solver's blow-up check with its message (after crossing a bound, if it did). The bench's source "
-               "states each scene.\n")
+               "crosses: stopped by the solver's blow-up check with its message (after crossing a bound, if it did); "
+               "squares: stopped because a contact overlap exceeded the contact-sphere radius (a contact too "
+               "soft for its spheres at this approach speed: the model's limit, not counted as an instability). "
+               "The bench's source states each scene.\n")
     table = []
     for f in files:
         rows = _rows(f) or []
@@ -300,12 +303,13 @@ def stability_section(out, build, fig_dir):
             count = lambda k: sum(r["outcome"] == k for r in sel)  # noqa: E731
             subs = [int(_float(r["substeps"])) for r in sel if not math.isnan(_float(r["substeps"]))]
             table.append([r"\texttt{%s}" % esc(name), mode, str(len(sel)), str(count("stable")),
-                          str(count("unstable")), str(count("blow-up")), str(max(subs)) if subs else "--"])
+                          str(count("unstable")), str(count("blow-up")), str(count("too-deep")),
+                          str(max(subs)) if subs else "--"])
         blow = next((r["message"] for r in rows if r["outcome"] == "blow-up" and r["message"]), None)
         if blow:
             out.append(r"\noindent Example stop message: \texttt{%s}" % esc(blow[:220]) + "\n")
-    out.append(longtable(r"llrrrrr", ["map", "solid steps", "runs", "stable", "unstable", "blow-up",
-                                      "max sub-steps"], table, caption="Stability map summary."))
+    out.append(longtable(r"llrrrrrr", ["map", "solid steps", "runs", "stable", "unstable", "blow-up",
+                                       "too deep", "max sub-steps"], table, caption="Stability map summary."))
     fluid_stability_maps(out, fluid_files, fig_dir)
 
 

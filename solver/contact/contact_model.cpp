@@ -56,9 +56,18 @@ double lightest_cds_point_mass(const std::vector<MassSpringBody>& bodies, const 
   return lightest;
 }
 
-double contact_substep(const ContactModel& model, const std::vector<MassSpringBody>& bodies, const BodyMask& members) {
+namespace {
+
+struct SubstepBounds {
+  double resolution = std::numeric_limits<double>::infinity();  // t_c / steps_per_contact [time]
+  double dashpot = std::numeric_limits<double>::infinity();     // dashpot stability [time]
+};
+
+SubstepBounds contact_substep_bounds(const ContactModel& model, const std::vector<MassSpringBody>& bodies,
+                                     const BodyMask& members) {
   constexpr double dashpot_safety = 0.5;      // docs/method.md §5.3 safety factor on a stability limit
-  if (!model.enabled() || bodies.empty()) return std::numeric_limits<double>::infinity();
+  SubstepBounds bounds;
+  if (!model.enabled() || bodies.empty()) return bounds;
   const double lightest_point = lightest_cds_point_mass(bodies, members);
   double heaviest_body = 0.0, heaviest_point = 0.0;
   std::size_t n_members = 0;
@@ -69,7 +78,7 @@ double contact_substep(const ContactModel& model, const std::vector<MassSpringBo
     heaviest_body = std::max(heaviest_body, bodies[b].total_mass());
     for (int k = 0; k < bodies[b].n_surface; ++k) heaviest_point = std::max(heaviest_point, cds_point_mass(bodies[b], k));
   }
-  if (!std::isfinite(lightest_point)) return std::numeric_limits<double>::infinity();  // prescribed only
+  if (!std::isfinite(lightest_point)) return bounds;  // prescribed only
   // Two equal lightest points in a pair have m_eff = m_p / 2; against a wall m_eff = m_p.
   const double m_eff = n_members > 1 ? 0.5 * lightest_point : lightest_point;
   const double n_active = model.active_pairs_safety;
@@ -88,11 +97,21 @@ double contact_substep(const ContactModel& model, const std::vector<MassSpringBo
       n_active * damping_from_restitution(model.restitution_coefficient, damping_mass, per_pair_stiffness);
   // t_c = sqrt(m_eff / k) sqrt(pi^2 + ln^2 e) (A8), here from the undamped point oscillator
   // (the shortest duration; damping lengthens it).
-  const double duration = contact_duration(m_eff, stiffness, /*damping=*/0.0);
-  double substep = duration / model.steps_per_contact;
-  if (total_damping > 0.0)
-    substep = std::min(substep, dashpot_safety * 2.0 * lightest_point / total_damping);
-  return substep;
+  bounds.resolution = contact_duration(m_eff, stiffness, /*damping=*/0.0) / model.steps_per_contact;
+  if (total_damping > 0.0) bounds.dashpot = dashpot_safety * 2.0 * lightest_point / total_damping;
+  return bounds;
+}
+
+}  // namespace
+
+double contact_substep(const ContactModel& model, const std::vector<MassSpringBody>& bodies, const BodyMask& members) {
+  const SubstepBounds bounds = contact_substep_bounds(model, bodies, members);
+  return std::min(bounds.resolution, bounds.dashpot);
+}
+
+double contact_dashpot_substep(const ContactModel& model, const std::vector<MassSpringBody>& bodies,
+                               const BodyMask& members) {
+  return contact_substep_bounds(model, bodies, members).dashpot;
 }
 
 namespace {

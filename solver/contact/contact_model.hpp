@@ -25,6 +25,11 @@ enum class ContactEffectiveMass { body, point };
 //                  so that a single-pair contact lasts T_c whatever m_eff (docs/method.md §5.5; Kempe &
 //                  Froehlich 2012, Biegert, Vowinckel & Meiburg 2017). c follows from e_D as for linear.
 enum class ContactLawKind { linear, collision_time };
+// Step of the contacts' inner loop (contact_subcycle.hpp). listed_pairs: steps_per_contact steps per
+// contact duration of the fastest contact mode the listed CDS pairs can form, bounded from above
+// by Gershgorin's theorem (a single pair: A8's t_c / steps_per_contact exactly); lightest_point: the
+// group's bound of contact_substep (the lightest CDS point in active_pairs_safety pairs at once).
+enum class InnerStepBound { listed_pairs, lightest_point };
 
 struct ContactModel {
   ContactLawKind law = ContactLawKind::linear;
@@ -45,9 +50,12 @@ struct ContactModel {
   // Simultaneously active pairs assumed by the sub-step bound (docs/method.md §1.9: "safety factor ~4").
   double active_pairs_safety = 4.0;      // [-]
   // Sub-steps per contact duration (A8: >= 20, "preferably 50 for accurate e"). Measured for two free
-  // CDS points at this bound with safety 4 (about 40 steps per real contact): e = 0.1 -> 0.092,
-  // 0.5 -> 0.508, 0.9 -> 0.905, 1 -> 0.99997; raise it when e_D < 1 must be met within 1 %.
+  // CDS points at contact_substep's bound with safety 4 (about 40 steps per real contact): e = 0.1 ->
+  // 0.092, 0.5 -> 0.508, 0.9 -> 0.905, 1 -> 0.99997; raise it when e_D < 1 must be met within 1 %.
+  // The inner loop's listed_pairs step applies it to the fastest mode of the listed pairs (a single
+  // pair: 20 steps per contact).
   double steps_per_contact = 20.0;       // [-]
+  InnerStepBound inner_step = InnerStepBound::listed_pairs;
 
   // std::invalid_argument naming the first inconsistent parameter.
   void check() const;
@@ -86,6 +94,10 @@ struct WallBox {
 // members: the bodies of one contact group (contact_groups below); empty = all bodies.
 double contact_substep(const ContactModel& model, const std::vector<MassSpringBody>& bodies,
                        const BodyMask& members = {});
+// The dashpot part of contact_substep alone: pure dashpot dt <= 2 m / c of the lightest CDS point
+// in active_pairs_safety pairs, safety 0.5. Infinity without damping [time].
+double contact_dashpot_substep(const ContactModel& model, const std::vector<MassSpringBody>& bodies,
+                               const BodyMask& members = {});
 
 // Mass a CDS point brings to a contact [mass/length]: its lumped mass, or for a rigid body m/3, the
 // smallest effective mass of a rim point of a uniform rigid disk (pushed along its rim tangent,

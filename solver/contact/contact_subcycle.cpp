@@ -5,6 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/constants.hpp"
 #include "solid/spring_dashpot.hpp"
 #include "solid/spring_forces.hpp"
 
@@ -18,7 +19,12 @@ constexpr double near_margin = 1e-9;         // relative to r_a + r_b: round-off
 
 // The candidates' kick and drift (ContactSubcycler::kick_and_drift) on arrays that do not overlap,
 // without a running sum, so that the compiler puts it on vector registers; moved: the squared
-// displacement since the list was built.
+// displacement since the list was built. Compiled also for AVX2 (chosen at run time where the CPU
+// has it): twice the vector width, the same operations in the same order (no FMA), so the same
+// bits.
+#if defined(__GNUC__) && defined(__x86_64__) && !defined(__clang__)
+__attribute__((target_clones("avx2", "default")))
+#endif
 void kick_and_drift_candidates(int n, double dt, double drift_time, double kick_time, double* __restrict x,
                                double* __restrict y, double* __restrict u, double* __restrict v,
                                double* __restrict moved, const double* __restrict force_x,
@@ -301,6 +307,36 @@ void ContactSubcycler::contact_forces(const ContactModel& model, double time, do
   forced_.erase(std::unique(forced_.begin(), forced_.end()), forced_.end());
 }
 
+double ContactSubcycler::listed_pairs_step(const ContactModel& model) {
+  // The contact modes of the listed pairs solve M x'' + C x' + K x = 0. Their rates |lambda| are
+  // at most sqrt(omega_K^2) + omega_C with omega_K^2 and omega_C the largest eigenvalues of
+  // M^-1/2 K M^-1/2 and M^-1/2 C M^-1/2 (one oscillator: |lambda| <= c / m + sqrt(k / m)), each at
+  // most its largest Gershgorin row sum: for candidate i, sum over its pairs of
+  // k (1 / m_i + 1 / sqrt(m_i m_j)), plus k / m_i per wall (a pair's k n n^T has the eigenvalue k
+  // along n and 0 across), and the same with the pairs' dashpots c (unshared: an upper bound).
+  // One undamped pair of masses m_a, m_b gives k / m_eff exactly: A8's t_c.
+  if (points_.empty()) return HUGE_VAL;
+  stiffness_sum_.assign(points_.size(), 0.0);
+  damping_sum_.assign(points_.size(), 0.0);
+  const double* const inverse_mass = points_.inverse_mass.data();
+  for (const Pair& pair : pairs_) {
+    const double shared = std::sqrt(inverse_mass[pair.a] * inverse_mass[pair.b]);
+    stiffness_sum_[pair.a] += pair.stiffness * (inverse_mass[pair.a] + shared);
+    stiffness_sum_[pair.b] += pair.stiffness * (inverse_mass[pair.b] + shared);
+    damping_sum_[pair.a] += pair.damping * (inverse_mass[pair.a] + shared);
+    damping_sum_[pair.b] += pair.damping * (inverse_mass[pair.b] + shared);
+  }
+  for (const Wall& wall : walls_) {
+    stiffness_sum_[wall.a] += wall.stiffness * inverse_mass[wall.a];
+    damping_sum_[wall.a] += wall.damping * inverse_mass[wall.a];
+  }
+  const double omega_k = std::sqrt(*std::max_element(stiffness_sum_.begin(), stiffness_sum_.end()));
+  const double omega_c = *std::max_element(damping_sum_.begin(), damping_sum_.end());
+  // t_c = pi / |lambda|, steps_per_contact steps in it.
+  const double rate = omega_k + omega_c;
+  return rate > 0.0 ? pi / (model.steps_per_contact * rate) : HUGE_VAL;
+}
+
 double ContactSubcycler::kick_and_drift(double dt, double time, double& work) {
   // Symplectic Euler for the contact force, the slow force a + r t integrated exactly.
   const double drift_time = 0.5 * time + dt / 6.0, kick_time = time + 0.5 * dt;
@@ -334,9 +370,8 @@ double ContactSubcycler::kick_and_drift(double dt, double time, double& work) {
   return std::max(std::max(m0, m1), std::max(m2, m3));
 }
 
-void ContactSubcycler::move_off_list(const BodyMask& members, std::vector<MassSpringBody>& bodies, double dt_inner,
-                                     int from, int to) {
-  const double span = (to - from) * dt_inner, start = from * dt_inner;
+void ContactSubcycler::move_off_list(const BodyMask& members, std::vector<MassSpringBody>& bodies, double start,
+                                     double span) {
   for (std::size_t b = 0; b < bodies.size(); ++b) {
     if (!selected(members, b)) continue;
     MassSpringBody& body = bodies[b];
@@ -389,6 +424,8 @@ ContactSubcycleResult ContactSubcycler::advance(const ContactModel& model, const
     // Room for every point of the scene and many pairs each: no growth inside later steps.
     points_.reserve(offset_.back());
     moved_.resize(offset_.back());
+    stiffness_sum_.reserve(offset_.back());
+    damping_sum_.reserve(offset_.back());
     forced_.reserve(2 * 10 * offset_.back());
     touched_.reserve(8 * bodies.size() + 8);
     pairs_.reserve(8 * offset_.back());
@@ -436,7 +473,8 @@ ContactSubcycleResult ContactSubcycler::advance(const ContactModel& model, const
   double growth = 0.0;  // fastest CDS radius growth [length/time]: two radii close a gap at twice it
   for (std::size_t b = 0; b < bodies.size(); ++b)
     if (selected(members, b)) growth = std::max(growth, std::abs(radius_rate_[b]));
-  const double dt_inner = dt_outer / n_inner;
+  const bool listed_pairs = model.inner_step == InnerStepBound::listed_pairs;
+  const double dashpot_limit = listed_pairs ? contact_dashpot_substep(model, bodies, members) : HUGE_VAL;
   // Skin for the time left: the travel bound V T + A T^2 / 2 of a point without contact.
   const auto travel = [](const std::array<double, 2>& largest, double time) {
     return largest[0] * time + 0.5 * largest[1] * time * time;
@@ -445,36 +483,55 @@ ContactSubcycleResult ContactSubcycler::advance(const ContactModel& model, const
                          skin_floor);
   build_list(model, box, skin, members, bodies, 0.0);
   result.list_builds = 1;
+  // The inner steps run in segments of equal steps h from segment_start: one segment of n_inner
+  // steps (lightest_point), or a new segment at every list, its step from the listed pairs.
+  double segment_start = 0.0;
+  int segment_steps = n_inner;
+  const auto plan_segment = [&] {
+    if (!listed_pairs) return;
+    const double left = dt_outer - segment_start;
+    const double limit = std::min(listed_pairs_step(model), dashpot_limit);
+    segment_steps = std::isfinite(limit) ? std::max(1, static_cast<int>(std::ceil(left / limit * (1.0 - 1e-12)))) : 1;
+  };
+  plan_segment();
+  double h = (dt_outer - segment_start) / segment_steps;
   std::array<double, 2> off_list = fastest(members, bodies, /*off_list_only=*/true);
-  int step_built = 0;   // inner step at which the list was built
-  int step_synced = 0;  // inner step the off-list points' stored state belongs to
+  int step_built = 0;   // inner step of the segment at which the list was built
+  int step_synced = 0;  // inner step of the segment the off-list points' stored state belongs to
   double moved_squared = 0.0;  // largest squared displacement of a candidate since the list was built
-  for (int j = 0; j < n_inner && !points_.empty(); ++j) {
+  for (int j = 0; j < segment_steps && !points_.empty(); ++j) {
     if (j > step_built) {
       // The list holds while no two points can have closed the skin since it was built.
-      const double moved = std::max(std::sqrt(moved_squared), travel(off_list, (j - step_built) * dt_inner)) +
-                           growth * (j - step_built) * dt_inner;
+      const double moved = std::max(std::sqrt(moved_squared), travel(off_list, (j - step_built) * h)) +
+                           growth * (j - step_built) * h;
       if (2.0 * moved >= skin) {
         // Every point to this inner step, then a new list for the time left.
-        move_off_list(members, bodies, dt_inner, step_synced, j);
-        step_synced = j;
+        move_off_list(members, bodies, segment_start + step_synced * h, (j - step_synced) * h);
+        const double now = segment_start + j * h;
         release_list(bodies);
         skin = std::max(2.0 * skin_travel_factor *
-                            (travel(fastest(members, bodies, false), dt_outer - j * dt_inner) + growth * (dt_outer - j * dt_inner)),
+                            (travel(fastest(members, bodies, false), dt_outer - now) + growth * (dt_outer - now)),
                         skin_floor);
-        build_list(model, box, skin, members, bodies, j * dt_inner);
+        build_list(model, box, skin, members, bodies, now);
         moved_squared = 0.0;
         ++result.list_builds;
         off_list = fastest(members, bodies, true);
-        step_built = j;
+        step_synced = step_built = j;
+        if (listed_pairs) {
+          segment_start = now;
+          plan_segment();
+          h = (dt_outer - segment_start) / segment_steps;
+          step_synced = step_built = j = 0;
+        }
         if (points_.empty()) break;
       }
     }
-    contact_forces(model, j * dt_inner, std::sqrt(moved_squared), result.stats);
-    moved_squared = kick_and_drift(dt_inner, j * dt_inner, result.work);
+    const double now = segment_start + j * h;
+    contact_forces(model, now, std::sqrt(moved_squared), result.stats);
+    moved_squared = kick_and_drift(h, now, result.work);
     ++result.inner_steps;
   }
-  move_off_list(members, bodies, dt_inner, step_synced, n_inner);
+  move_off_list(members, bodies, segment_start + step_synced * h, (segment_steps - step_synced) * h);
   release_list(bodies);
   // Step 4: U += dt (F_s(x^{k+1}, U*) - F_s(x^k, U^k) - dt r) / (2 m): the velocity change over
   // the step becomes dt (F^k + F^{k+1}) / (2 m), what the extrapolated rate r gave taken back.

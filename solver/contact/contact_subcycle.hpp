@@ -13,8 +13,14 @@
 //      skin s = 3 (V T + A T^2 / 2), T the time left, V and A the largest point speed and slow
 //      acceleration of the members (s >= a tenth of the smallest CDS radius); their points are
 //      the candidates;
-//   2. n inner steps, on the candidates only: F_c at the current x, U; U += dt_i (a + F_c / m);
-//      x += dt_i (U - dt_i a / 2) (symplectic Euler for the contact, the held slow force exact);
+//   2. inner steps dt_i, on the candidates only: F_c at the current x, U; U += dt_i (a + F_c / m);
+//      x += dt_i (U - dt_i a / 2) (symplectic Euler for the contact, the held slow force exact).
+//      dt_i (ContactModel::inner_step): listed_pairs, the time left divided into equal steps of at
+//      most t_c / steps_per_contact, t_c = pi / |lambda| of the fastest contact mode the listed
+//      pairs and walls can form (|lambda| <= sqrt(max Gershgorin row of M^-1/2 K M^-1/2) + max row
+//      of M^-1/2 C M^-1/2; one undamped pair: A8's t_c exactly), and at most the dashpot's stable
+//      step; chosen again for the time left whenever the list is rebuilt. lightest_point: the
+//      caller's n steps of dt / n (the group's bound, the lightest CDS point in four pairs);
 //   3. every other point moves as a candidate would without contact, in closed form:
 //      x += dt U^k + dt^2 a / 2, U += dt a;
 //   4. the springs again at the new x and the predicted U: U += dt (F_s^{k+1} - F_s^k) / (2 m)
@@ -71,8 +77,8 @@ struct ContactSubcycleResult {
 // allocation happens once its vectors have grown.
 class ContactSubcycler {
  public:
-  // Advances the points of the member bodies (members; empty = all) over dt_outer in n_inner inner
-  // steps as described above. external_force: the frozen force on every point other than springs
+  // Advances the points of the member bodies (members; empty = all) over dt_outer in inner steps as
+  // described above (n_inner of them with InnerStepBound::lightest_point; its own with listed_pairs). external_force: the frozen force on every point other than springs
   // and contacts, one vector of n_points per body (only members read) [force/length].
   // continues: this step follows the previous call's step for the same members within one fluid
   // step; the slow force then varies linearly over the step at the rate between the two steps'
@@ -144,14 +150,18 @@ class ContactSubcycler {
   // One inner step of the candidates; clears their contact forces for the next step and returns
   // the largest squared displacement of a candidate since the list was built.
   double kick_and_drift(double dt, double time, double& work);
-  // Off-list points from inner step `from` to `to` in closed form (step 3 above).
-  void move_off_list(const BodyMask& members, std::vector<MassSpringBody>& bodies, double dt_inner, int from, int to);
+  // Off-list points from inner time `start` over `span` in closed form (step 3 above).
+  void move_off_list(const BodyMask& members, std::vector<MassSpringBody>& bodies, double start, double span);
+  // Inner step that gives steps_per_contact steps per contact duration of the fastest mode the
+  // listed pairs and walls can form (InnerStepBound::listed_pairs) [time]; infinity with none.
+  double listed_pairs_step(const ContactModel& model);
   // Largest speed and slow acceleration of the members' points (off_list_only: of the points off the list).
   std::array<double, 2> fastest(const BodyMask& members, const std::vector<MassSpringBody>& bodies,
                                 bool off_list_only) const;
 
   Candidates points_;
   std::vector<double> moved_;     // per candidate: squared displacement since the list was built
+  std::vector<double> stiffness_sum_, damping_sum_;  // per candidate: Gershgorin row sums of the listed pairs
   std::vector<int> forced_;       // candidates with a contact force in the current inner step
   std::vector<int> touched_;      // shares with an active pair in the current inner step
   std::vector<Pair> pairs_;

@@ -173,6 +173,7 @@ struct BodySpec {
 struct ContactSpec {
   enum class TimeStepping { inner_loop, shared };
   enum class Model { linear, collision_time };
+  enum class InnerStep { listed_pairs, lightest_point };
   double stiffness = 0.0;            // k_Dn [force/length^2 per unit depth]; 0 = contacts off
   double restitution_coefficient = 1.0;  // e_D in (0, 1] [-]
   double cds_radius = 0.0;           // absolute CDS radius [length]; 0: use cds_radius_fraction
@@ -182,6 +183,10 @@ struct ContactSpec {
   // sub-step, the contact sub-step only in an inner loop over the points near a contact
   // (contact/contact_subcycle.hpp); "shared": every point of the group at the contact sub-step.
   TimeStepping time_stepping = TimeStepping::inner_loop;
+  // The inner loop's step: "listed_pairs", steps_per_contact (20) steps per contact duration of the
+  // fastest mode its listed CDS pairs can form (a Gershgorin bound; docs/method.md §5.4);
+  // "lightest_point", the group's bound (the lightest CDS point in four pairs at once).
+  InnerStep inner_step = InnerStep::listed_pairs;
   // "linear": the papers' law at k_Dn = stiffness. "collision_time": the same law with k and c
   // chosen per contact from m_eff and e_D so that a single-pair contact lasts
   // T_c = collision_steps fluid steps (docs/method.md §5.5); stiffness is then not given.

@@ -268,6 +268,7 @@ Scene scene_from_table(const toml::table& root, SceneDiagnostics& diagnostics) {
                     non_negative);
   contact.read_bool("walls", scene.contact.walls);
   contact.read_choice("time_stepping", scene.contact.time_stepping);
+  contact.read_choice("inner_step", scene.contact.inner_step);
   contact.read_choice("model", scene.contact.model);
   // Finite and > 0 here; the lower bound of one fluid step, with its reason, in scene_checks.cpp.
   contact.read_real("collision_steps", scene.contact.collision_steps, Need::optional, positive);

@@ -64,7 +64,7 @@ inline constexpr std::string_view prescribed_body_keys[] = {
 inline constexpr std::string_view swelling_keys[] = {"onset_time", "rate", "max_diameter"};
 inline constexpr std::string_view contact_keys[] = {"stiffness", "restitution_coefficient",
                                                     "cds_radius", "cds_radius_fraction", "walls",
-                                                    "time_stepping", "model", "collision_steps"};
+                                                    "time_stepping", "inner_step", "model", "collision_steps"};
 inline constexpr std::string_view output_keys[] = {"file", "series_every", "snapshot_interval",
                                                    "centreline_profiles", "progress", "checkpoint_every",
                                                    "probes"};
@@ -120,6 +120,8 @@ IBMS_SCENE_CHOICES(BodySpec::SpringIntegrator, {BodySpec::SpringIntegrator::auto
                    {BodySpec::SpringIntegrator::implicit_euler, "implicit"});
 IBMS_SCENE_CHOICES(ContactSpec::TimeStepping, {ContactSpec::TimeStepping::inner_loop, "inner_loop"},
                    {ContactSpec::TimeStepping::shared, "shared"});
+IBMS_SCENE_CHOICES(ContactSpec::InnerStep, {ContactSpec::InnerStep::listed_pairs, "listed_pairs"},
+                   {ContactSpec::InnerStep::lightest_point, "lightest_point"});
 IBMS_SCENE_CHOICES(ContactSpec::Model, {ContactSpec::Model::linear, "linear"},
                    {ContactSpec::Model::collision_time, "collision_time"});
 

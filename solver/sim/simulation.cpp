@@ -80,6 +80,8 @@ ContactModel contact_model_of(const ContactSpec& spec) {
   model.cds_radius = spec.cds_radius;
   model.cds_radius_fraction = spec.cds_radius_fraction;
   model.walls = spec.walls;
+  model.inner_step = spec.inner_step == ContactSpec::InnerStep::lightest_point ? InnerStepBound::lightest_point
+                                                                              : InnerStepBound::listed_pairs;
   model.check();
   return model;
 }

@@ -172,3 +172,39 @@ BOOST_AUTO_TEST_CASE(soft_wheel_pair_inner_loop_matches_shared_substep) {
 BOOST_AUTO_TEST_CASE(soft_wheel_on_wall_inner_loop_matches_shared_substep) {
   compare_schemes("wheel-wall, soft", wheel_on_wall, soft_spring_stiffness);
 }
+
+// The inner step of contact.inner_step = "listed_pairs" (contact_subcycle.hpp): with a single CDS
+// pair in the list it is A8's bound exactly, t_c / steps_per_contact with t_c = pi sqrt(m_eff / k_Dn)
+// of the two rim points; "lightest_point" takes the group's bound, which assumes that point in four
+// pairs at once (twice as many inner steps). Two soft wheels at rest, rim points facing on the x
+// axis with CDS 1e-4 apart: the neighbouring rim points lie 0.09 beyond the skin, so the list holds
+// one pair.
+BOOST_AUTO_TEST_CASE(listed_pairs_inner_step_is_the_single_pair_contact_duration) {
+  const double k = 1e7, cds = 0.05, gap = 1e-4, dt_outer = 1e-3;
+  const double c = 0.5 + cds + 0.5 * gap;
+  const std::vector<MassSpringBody> start{make_wheel({-c, 0.0}, {0.0, 0.0}, soft_spring_stiffness / k, 0.0, k),
+                                          make_wheel({c, 0.0}, {0.0, 0.0}, soft_spring_stiffness / k, M_PI, k)};
+  const std::vector<std::vector<std::array<double, 2>>> no_external{
+      std::vector<std::array<double, 2>>(start[0].n_points(), {0.0, 0.0}),
+      std::vector<std::array<double, 2>>(start[1].n_points(), {0.0, 0.0})};
+  const double m_eff = 0.5 * start[0].mass[0];  // two equal rim points
+  const double duration = M_PI * std::sqrt(m_eff / k);
+  ContactModel model = make_contact_model(1.0, cds, k);
+  const int n_group = static_cast<int>(std::ceil(dt_outer / contact_substep(model, start) * (1.0 - 1e-12)));
+  ContactSubcycler subcycler;
+  std::vector<MassSpringBody> bodies = start;
+  const ContactSubcycleResult listed =
+      advance_bodies_inner_loop(model, open_box, dt_outer, n_group, no_external, bodies, subcycler, false);
+  const int expected = static_cast<int>(std::ceil(dt_outer / (duration / model.steps_per_contact) * (1.0 - 1e-12)));
+  BOOST_TEST_MESSAGE("single listed pair: " << listed.inner_steps << " inner steps (t_c / 20: " << expected
+                                            << "), group bound " << n_group);
+  BOOST_TEST(listed.list_builds == 1);
+  BOOST_TEST(listed.inner_steps == expected);
+  model.inner_step = InnerStepBound::lightest_point;
+  bodies = start;
+  ContactSubcycler fixed;
+  const ContactSubcycleResult lightest =
+      advance_bodies_inner_loop(model, open_box, dt_outer, n_group, no_external, bodies, fixed, false);
+  BOOST_TEST(lightest.inner_steps == n_group);
+  BOOST_TEST(std::abs(n_group - 2 * expected) <= 1);
+}
