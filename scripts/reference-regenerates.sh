@@ -4,7 +4,9 @@
 # (ONLY=CASE, REFERENCE_OUT=WORK_DIR/out) and compares each with the shipped
 # validation/CASE/reference/ibms_*.csv by scripts/compare-reference.py within |d| <= ABS + REL |shipped|
 # per cell, or, with ABS = mean-path:T0:T1 (chaotic particle trajectories), the mean centroid path
-# length over T0 <= t <= T1 within the relative tolerance REL.
+# length over T0 <= t <= T1 within the relative tolerance REL; with ABS = extrema:T0 (periodic
+# force histories whose phase round-off sets) the largest, smallest and mean value of each column
+# over t >= T0 within REL of the column's largest |value|.
 # usage: scripts/reference-regenerates.sh IBMS_BINARY WORK_DIR CASE ABS REL [RUN_OUTPUT=NAME ...]
 # WORK_DIR is emptied first (no stale run is reused); each RUN_OUTPUT=NAME links an existing run
 # output of a ctest fixture (e.g. build/validation/cavity_deformable_objects/k10.h5) as
@@ -33,6 +35,8 @@ for f in "${shipped[@]}"; do
   if [[ $tol_abs == mean-path:* ]]; then
     IFS=: read -r _ t0 t1 <<< "$tol_abs"
     /usr/bin/python3 "$src/scripts/compare-reference.py" --mean-path "$t0" "$t1" "$f" "$regenerated" "$tol_rel" || status=1
+  elif [[ $tol_abs == extrema:* ]]; then
+    /usr/bin/python3 "$src/scripts/compare-reference.py" --extrema "${tol_abs#extrema:}" "$f" "$regenerated" "$tol_rel" || status=1
   else
     /usr/bin/python3 "$src/scripts/compare-reference.py" "$f" "$regenerated" "$tol_abs" "$tol_rel" || status=1
   fi

@@ -44,6 +44,36 @@ cases = {  # name: (file body, expected exit code)
     "extra column": ([header.rstrip("\n") + ",extra\n"] + [r.rstrip("\n") + ",0\n" for r in rows], 2),
 }
 failed = 0
+# --extrema (periodic histories, tolerance 1e-3): a shift of the rows by one step (another phase)
+# passes, a column scaled by 1 + 1e-2 fails.
+extrema_rel = 1e-3
+def scaled(row, k, factor):
+    cells = row.rstrip("\n").split(",")
+    cells[k] = "%.17g" % (float(cells[k]) * factor)
+    return ",".join(cells) + "\n"
+
+
+def shifted(rows):
+    values = [r.rstrip("\n").split(",") for r in rows]
+    return [",".join([a[0]] + b[1:]) + "\n" for a, b in zip(values, values[1:] + values[:1])]
+
+
+t0 = first_value(rows[0], 0)
+extrema_cases = {
+    "extrema: rows shifted by one step": ([header] + shifted(rows), 0),
+    "extrema: last column scaled by 1 + 1e-2": ([header] + [scaled(r, last, 1 + 10 * extrema_rel) for r in rows], 1),
+}
+for n, (name, (text, expected)) in enumerate(extrema_cases.items()):
+    path = os.path.join(work, "extrema_%d.csv" % n)
+    with open(path, "w") as f:
+        f.writelines(comments + text)
+    got = subprocess.run([sys.executable, compare, "--extrema", str(t0), shipped, path, str(extrema_rel)],
+                         stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    ok = got.returncode == expected
+    failed += not ok
+    print("%s: %s (exit %d, expected %d)" % ("ok" if ok else "WRONG", name, got.returncode, expected))
+    if not ok:
+        print(got.stdout)
 for n, (name, (text, expected)) in enumerate(cases.items()):
     path = os.path.join(work, "mutation_%d.csv" % n)
     with open(path, "w") as f:
