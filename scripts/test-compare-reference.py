@@ -63,26 +63,24 @@ extrema_cases = {
     "extrema: rows shifted by one step": ([header] + shifted(rows), 0),
     "extrema: last column scaled by 1 + 1e-2": ([header] + [scaled(r, last, 1 + 10 * extrema_rel) for r in rows], 1),
 }
+def check(name, path, text, arguments, expected):
+    """Writes text to path, runs the comparer with arguments; True if it exits with expected."""
+    with open(path, "w") as f:
+        f.writelines(text)
+    got = subprocess.run([sys.executable, compare] + arguments, stdout=subprocess.PIPE,
+                         stderr=subprocess.STDOUT, text=True)
+    ok = got.returncode == expected
+    print("%s: %s (exit %d, expected %d)" % ("ok" if ok else "WRONG", name, got.returncode, expected))
+    if not ok:
+        print(got.stdout)
+    return ok
+
+
 for n, (name, (text, expected)) in enumerate(extrema_cases.items()):
     path = os.path.join(work, "extrema_%d.csv" % n)
-    with open(path, "w") as f:
-        f.writelines(comments + text)
-    got = subprocess.run([sys.executable, compare, "--extrema", str(t0), shipped, path, str(extrema_rel)],
-                         stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-    ok = got.returncode == expected
-    failed += not ok
-    print("%s: %s (exit %d, expected %d)" % ("ok" if ok else "WRONG", name, got.returncode, expected))
-    if not ok:
-        print(got.stdout)
+    failed += not check(name, path, comments + text, ["--extrema", str(t0), shipped, path, str(extrema_rel)], expected)
 for n, (name, (text, expected)) in enumerate(cases.items()):
     path = os.path.join(work, "mutation_%d.csv" % n)
-    with open(path, "w") as f:
-        f.writelines(text if n == 0 else comments + text)
-    got = subprocess.run([sys.executable, compare, shipped, path, str(tol_abs), str(tol_rel)],
-                         stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-    ok = got.returncode == expected
-    failed += not ok
-    print("%s: %s (exit %d, expected %d)" % ("ok" if ok else "WRONG", name, got.returncode, expected))
-    if not ok:
-        print(got.stdout)
+    failed += not check(name, path, text if n == 0 else comments + text,
+                        [shipped, path, str(tol_abs), str(tol_rel)], expected)
 sys.exit(1 if failed else 0)
