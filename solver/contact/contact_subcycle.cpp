@@ -307,31 +307,66 @@ void ContactSubcycler::contact_forces(const ContactModel& model, double time, do
   forced_.erase(std::unique(forced_.begin(), forced_.end()), forced_.end());
 }
 
+// Collatz-Wielandt bound of the spectral radius of the symmetric non-negative matrix B with
+// diagonal diagonal[i] and the entry weight[p] sqrt(m_a^-1 m_b^-1) for each listed pair p = (a, b):
+// rho(B) <= max_i (B x)_i / x_i for every x > 0; x after a few power iterations from 1 (iteration
+// 0 is Gershgorin's row sum). x and y are scratch of the candidates' size.
+double ContactSubcycler::perron_bound(const std::vector<double>& diagonal, bool damping, std::vector<double>& x,
+                                      std::vector<double>& y) const {
+  constexpr int iterations = 8;
+  const double* const inverse_mass = points_.inverse_mass.data();
+  const std::size_t n = diagonal.size();
+  x.assign(n, 1.0);
+  double bound = HUGE_VAL;
+  for (int it = 0; it <= iterations; ++it) {
+    for (std::size_t i = 0; i < n; ++i) y[i] = diagonal[i] * x[i];
+    for (const Pair& pair : pairs_) {
+      const double w = (damping ? pair.damping : pair.stiffness) * std::sqrt(inverse_mass[pair.a] * inverse_mass[pair.b]);
+      y[pair.a] += w * x[pair.b];
+      y[pair.b] += w * x[pair.a];
+    }
+    double ratio = 0.0, largest = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+      ratio = std::max(ratio, y[i] / x[i]);
+      largest = std::max(largest, y[i]);
+    }
+    bound = std::min(bound, ratio);
+    if (!(largest > 0.0)) return 0.0;
+    for (std::size_t i = 0; i < n; ++i) x[i] = y[i] / largest;  // stays > 0: every diagonal is > 0
+  }
+  return bound;
+}
+
 double ContactSubcycler::listed_pairs_step(const ContactModel& model) {
   // The contact modes of the listed pairs solve M x'' + C x' + K x = 0. Their rates |lambda| are
   // at most sqrt(omega_K^2) + omega_C with omega_K^2 and omega_C the largest eigenvalues of
-  // M^-1/2 K M^-1/2 and M^-1/2 C M^-1/2 (one oscillator: |lambda| <= c / m + sqrt(k / m)), each at
-  // most its largest Gershgorin row sum: for candidate i, sum over its pairs of
-  // k (1 / m_i + 1 / sqrt(m_i m_j)), plus k / m_i per wall (a pair's k n n^T has the eigenvalue k
-  // along n and 0 across), and the same with the pairs' dashpots c (unshared: an upper bound).
+  // M^-1/2 K M^-1/2 and M^-1/2 C M^-1/2 (one oscillator: |lambda| <= c / m + sqrt(k / m)). Each is
+  // at most the spectral radius of its matrix of 2x2 block norms (||A|| <= ||B|| for a symmetric A
+  // and its block-norm matrix B): diagonal sum over the candidate's pairs and walls of k / m_i (a
+  // pair's k n n^T has norm k), off-diagonal k / sqrt(m_i m_j), and the same with the pairs'
+  // dashpots c (unshared: an upper bound); perron_bound bounds that radius from above.
   // One undamped pair of masses m_a, m_b gives k / m_eff exactly: A8's t_c.
   if (points_.empty()) return HUGE_VAL;
   stiffness_sum_.assign(points_.size(), 0.0);
   damping_sum_.assign(points_.size(), 0.0);
   const double* const inverse_mass = points_.inverse_mass.data();
+  bool damped = false;
   for (const Pair& pair : pairs_) {
-    const double shared = std::sqrt(inverse_mass[pair.a] * inverse_mass[pair.b]);
-    stiffness_sum_[pair.a] += pair.stiffness * (inverse_mass[pair.a] + shared);
-    stiffness_sum_[pair.b] += pair.stiffness * (inverse_mass[pair.b] + shared);
-    damping_sum_[pair.a] += pair.damping * (inverse_mass[pair.a] + shared);
-    damping_sum_[pair.b] += pair.damping * (inverse_mass[pair.b] + shared);
+    stiffness_sum_[pair.a] += pair.stiffness * inverse_mass[pair.a];
+    stiffness_sum_[pair.b] += pair.stiffness * inverse_mass[pair.b];
+    damping_sum_[pair.a] += pair.damping * inverse_mass[pair.a];
+    damping_sum_[pair.b] += pair.damping * inverse_mass[pair.b];
+    damped = damped || pair.damping > 0.0;
   }
   for (const Wall& wall : walls_) {
     stiffness_sum_[wall.a] += wall.stiffness * inverse_mass[wall.a];
     damping_sum_[wall.a] += wall.damping * inverse_mass[wall.a];
+    damped = damped || wall.damping > 0.0;
   }
-  const double omega_k = std::sqrt(*std::max_element(stiffness_sum_.begin(), stiffness_sum_.end()));
-  const double omega_c = *std::max_element(damping_sum_.begin(), damping_sum_.end());
+  perron_x_.resize(points_.size());
+  perron_y_.resize(points_.size());
+  const double omega_k = std::sqrt(perron_bound(stiffness_sum_, false, perron_x_, perron_y_));
+  const double omega_c = damped ? perron_bound(damping_sum_, true, perron_x_, perron_y_) : 0.0;
   // t_c = pi / |lambda|, steps_per_contact steps in it.
   const double rate = omega_k + omega_c;
   return rate > 0.0 ? pi / (model.steps_per_contact * rate) : HUGE_VAL;
@@ -425,6 +460,8 @@ ContactSubcycleResult ContactSubcycler::advance(const ContactModel& model, const
     points_.reserve(offset_.back());
     moved_.resize(offset_.back());
     stiffness_sum_.reserve(offset_.back());
+    perron_x_.reserve(offset_.back());
+    perron_y_.reserve(offset_.back());
     damping_sum_.reserve(offset_.back());
     forced_.reserve(2 * 10 * offset_.back());
     touched_.reserve(8 * bodies.size() + 8);

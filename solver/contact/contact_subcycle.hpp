@@ -17,8 +17,9 @@
 //      x += dt_i (U - dt_i a / 2) (symplectic Euler for the contact, the held slow force exact).
 //      dt_i (ContactModel::inner_step): listed_pairs, the time left divided into equal steps of at
 //      most t_c / steps_per_contact, t_c = pi / |lambda| of the fastest contact mode the listed
-//      pairs and walls can form (|lambda| <= sqrt(max Gershgorin row of M^-1/2 K M^-1/2) + max row
-//      of M^-1/2 C M^-1/2; one undamped pair: A8's t_c exactly), and at most the dashpot's stable
+//      pairs and walls can form (|lambda| <= sqrt(rho_K) + rho_C, the spectral radii of M^-1/2 K M^-1/2
+//      and M^-1/2 C M^-1/2 bounded from above by Collatz-Wielandt on their block-norm matrices; one
+//      undamped pair: A8's t_c exactly), and at most the dashpot's stable
 //      step; chosen again for the time left whenever the list is rebuilt. lightest_point: the
 //      caller's n steps of dt / n (the group's bound, the lightest CDS point in four pairs);
 //   3. every other point moves as a candidate would without contact, in closed form:
@@ -155,13 +156,16 @@ class ContactSubcycler {
   // Inner step that gives steps_per_contact steps per contact duration of the fastest mode the
   // listed pairs and walls can form (InnerStepBound::listed_pairs) [time]; infinity with none.
   double listed_pairs_step(const ContactModel& model);
+  double perron_bound(const std::vector<double>& diagonal, bool damping, std::vector<double>& x,
+                      std::vector<double>& y) const;
   // Largest speed and slow acceleration of the members' points (off_list_only: of the points off the list).
   std::array<double, 2> fastest(const BodyMask& members, const std::vector<MassSpringBody>& bodies,
                                 bool off_list_only) const;
 
   Candidates points_;
   std::vector<double> moved_;     // per candidate: squared displacement since the list was built
-  std::vector<double> stiffness_sum_, damping_sum_;  // per candidate: Gershgorin row sums of the listed pairs
+  std::vector<double> stiffness_sum_, damping_sum_;  // per candidate: diagonal k / m (c / m) of its pairs and walls
+  std::vector<double> perron_x_, perron_y_;          // power-iteration scratch of perron_bound
   std::vector<int> forced_;       // candidates with a contact force in the current inner step
   std::vector<int> touched_;      // shares with an active pair in the current inner step
   std::vector<Pair> pairs_;
