@@ -307,10 +307,11 @@ void ContactSubcycler::contact_forces(const ContactModel& model, double time, do
   forced_.erase(std::unique(forced_.begin(), forced_.end()), forced_.end());
 }
 
-// Collatz-Wielandt bound of the spectral radius of the symmetric non-negative matrix B with
-// diagonal diagonal[i] and the entry weight[p] sqrt(m_a^-1 m_b^-1) for each listed pair p = (a, b):
-// rho(B) <= max_i (B x)_i / x_i for every x > 0; x after a few power iterations from 1 (iteration
-// 0 is Gershgorin's row sum). x and y are scratch of the candidates' size.
+// Collatz-Wielandt bound of the spectral radius of the symmetric non-negative matrix B with the
+// given diagonal and, for each listed pair p = (a, b), the entry w_p / sqrt(m_a m_b), w_p the pair's
+// stiffness (damping: its dashpot): rho(B) <= max_i (B x)_i / x_i for every x > 0, B reducible or
+// not; x after a few power iterations from 1 (iteration 0 is Gershgorin's row sum). x and y are
+// scratch of the candidates' size.
 double ContactSubcycler::perron_bound(const std::vector<double>& diagonal, bool damping, std::vector<double>& x,
                                       std::vector<double>& y) const {
   constexpr int iterations = 8;
