@@ -13,7 +13,7 @@
 #            setting, the two convergence sweeps (workflow/config/quick.yaml)
 #   default  every validation case at test resolution, benches at their default setting, every
 #            sweep (workflow/config/default.yaml)
-#   paper    also the `slow` label: the cases at the papers' resolution (hours)
+#   paper    also the `slow` label: the cases at the papers' resolution (about an hour)
 # Reruns run only what is out of date: Snakemake compares each job's outputs with its declared
 # inputs (scene, binaries, case code, references, the job's command) and reruns a job whose inputs
 # changed, plus every job after it; jobs that failed last time run again. The same workflow runs
