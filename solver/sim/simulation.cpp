@@ -328,9 +328,12 @@ std::vector<std::string> Simulation::stage_names() const {
     if (has_contacts())
       stages.push_back(scene_.contact.time_stepping == ContactSpec::TimeStepping::inner_loop
                            ? "  contacts (DEM spring-dashpots on CDS, " + law +
-                                 ", walls; groups of explicit mass-spring bodies: inner loop at the contact sub-step "
-                                 "over the points near a contact, springs and fluid held over outer steps of 1/16 of "
-                                 "the springs' sub-step)"
+                                 ", walls; groups of explicit mass-spring bodies: inner loop over the points near a "
+                                 "contact at " +
+                                 (scene_.contact.inner_step == ContactSpec::InnerStep::listed_pairs
+                                      ? std::string("t_c / 20 of the fastest mode its listed CDS pairs can form")
+                                      : std::string("the group's contact sub-step")) +
+                                 ", springs and fluid held over outer steps of 1/16 of the springs' sub-step)"
                            : "  contacts (DEM spring-dashpots on CDS, " + law + ", every sub-step; walls)");
     if (has_pair_search()) stages.push_back("  pair search (CDS: body-box broad phase, cell list in periodic boxes; every sub-step)");
   }
