@@ -18,9 +18,10 @@ ends inside), |regenerated / shipped - 1| <= REL.
 --extrema (periodic force histories `time, ...`, whose phase round-off sets: the vortex shedding
 of DFG 2D-2 grows from the round-off of the start, and FFTW's measured plans differ between runs of
 one binary, so the shedding's phase at t = 8 differs by ~1e-3 of a period between two runs): the same
-header and numeric cells are required, the row count may differ; gated are the largest, smallest
-and mean value of every column but the first over t >= T0, each within REL times the largest
-|value| of the shipped column there.
+header (first column time) and numeric cells are required, the row count may differ but both
+series must start and end within one output interval of each other; gated are the largest,
+smallest and mean value of every column but the first over t >= T0, each within REL times the
+largest |value| of the shipped column there (REL itself for a column of zeros).
 Exit 0: every cell passes; 1: a cell is outside the tolerance; 2: different structure or a
 non-numeric cell (either file).
 """
@@ -102,17 +103,24 @@ def main_extrema():
     h1, r1 = read(regenerated)
     if h0 != h1:
         fail("headers differ: %s has %r, %s has %r" % (shipped, h0, regenerated, h1))
+    if not h0[0].startswith("time"):
+        fail("%s: the first column is not time: %r" % (shipped, h0[0]))
     a = [r for _, r in r0 if r[0] >= t0]
     b = [r for _, r in r1 if r[0] >= t0]
-    if not a or not b:
-        fail("no rows at t >= %g (%d shipped, %d regenerated)" % (t0, len(a), len(b)))
+    if len(a) < 2 or len(b) < 2:
+        fail("fewer than two rows at t >= %g (%d shipped, %d regenerated)" % (t0, len(a), len(b)))
+    spacing = max(y[0] - x[0] for x, y in zip(a, a[1:]))
+    if abs(b[-1][0] - a[-1][0]) > spacing or abs(b[0][0] - a[0][0]) > spacing:
+        print("FAIL: the regenerated series spans %.10g .. %.10g, the shipped %.10g .. %.10g (largest spacing %.3g)"
+              % (b[0][0], b[-1][0], a[0][0], a[-1][0], spacing))
+        sys.exit(1)
     bad = 0
     print("%s: t >= %g, %d and %d rows; tolerance %.3g of each column's largest |value|" % (shipped, t0, len(a), len(b), tol_rel))
     for k in range(1, len(h0)):
         col0 = [r[k] for r in a]
         col1 = [r[k] for r in b]
         scale = max(abs(v) for v in col0)
-        allowance = tol_rel * scale
+        allowance = tol_rel * scale if scale > 0.0 else tol_rel
         for name, f in (("max", max), ("min", min), ("mean", lambda c: sum(c) / len(c))):
             x, y = f(col0), f(col1)
             ok = abs(y - x) <= allowance

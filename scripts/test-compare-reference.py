@@ -44,8 +44,9 @@ cases = {  # name: (file body, expected exit code)
     "extra column": ([header.rstrip("\n") + ",extra\n"] + [r.rstrip("\n") + ",0\n" for r in rows], 2),
 }
 failed = 0
-# --extrema (periodic histories, tolerance 1e-3): a shift of the rows by one step (another phase)
-# passes, a column scaled by 1 + 1e-2 fails.
+# --extrema (periodic histories, tolerance 1e-3, window from the middle row on): the values moved
+# by one row against the times (another phase: not identical, within the tolerance) pass, a column
+# scaled by 1 + 1e-2 fails, a series cut at three quarters fails.
 extrema_rel = 1e-3
 def scaled(row, k, factor):
     cells = row.rstrip("\n").split(",")
@@ -55,13 +56,14 @@ def scaled(row, k, factor):
 
 def shifted(rows):
     values = [r.rstrip("\n").split(",") for r in rows]
-    return [",".join([a[0]] + b[1:]) + "\n" for a, b in zip(values, values[1:] + values[:1])]
+    return [",".join([a[0]] + b[1:]) + "\n" for a, b in zip(values, values[1:])] + [rows[-1]]
 
 
-t0 = first_value(rows[0], 0)
+t0 = first_value(rows[mid], 0)
 extrema_cases = {
-    "extrema: rows shifted by one step": ([header] + shifted(rows), 0),
+    "extrema: values one row later (another phase)": ([header] + shifted(rows), 0),
     "extrema: last column scaled by 1 + 1e-2": ([header] + [scaled(r, last, 1 + 10 * extrema_rel) for r in rows], 1),
+    "extrema: series cut at three quarters": ([header] + rows[:3 * len(rows) // 4], 1),
 }
 def check(name, path, text, arguments, expected):
     """Writes text to path, runs the comparer with arguments; True if it exits with expected."""

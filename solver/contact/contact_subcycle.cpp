@@ -22,7 +22,7 @@ constexpr double near_margin = 1e-9;         // relative to r_a + r_b: round-off
 // displacement since the list was built. Compiled also for AVX2 (chosen at run time where the CPU
 // has it): twice the vector width, the same operations in the same order (no FMA), so the same
 // bits.
-#if defined(__GNUC__) && defined(__x86_64__) && !defined(__clang__)
+#if defined(__GNUC__) && defined(__x86_64__) && !defined(__clang__) && defined(__linux__) && defined(__GLIBC__)
 __attribute__((target_clones("avx2", "default")))
 #endif
 void kick_and_drift_candidates(int n, double dt, double drift_time, double kick_time, double* __restrict x,
@@ -345,7 +345,9 @@ double ContactSubcycler::listed_pairs_step(const ContactModel& model) {
   // at most the spectral radius of its matrix of 2x2 block norms (||A|| <= ||B|| for a symmetric A
   // and its block-norm matrix B): diagonal sum over the candidate's pairs and walls of k / m_i (a
   // pair's k n n^T has norm k), off-diagonal k / sqrt(m_i m_j), and the same with the pairs'
-  // dashpots c (unshared: an upper bound); perron_bound bounds that radius from above.
+  // dashpots c (unshared: an upper bound while S >= 1, i.e. unless two pairs of one body pair have
+  // normals more than 90 degrees apart, which convex rims do not form; the dashpot bound of
+  // contact_substep assumes the same); perron_bound bounds that radius from above.
   // One undamped pair of masses m_a, m_b gives k / m_eff exactly: A8's t_c.
   if (points_.empty()) return HUGE_VAL;
   stiffness_sum_.assign(points_.size(), 0.0);
@@ -529,7 +531,14 @@ ContactSubcycleResult ContactSubcycler::advance(const ContactModel& model, const
     if (!listed_pairs) return;
     const double left = dt_outer - segment_start;
     const double limit = std::min(listed_pairs_step(model), dashpot_limit);
-    segment_steps = std::isfinite(limit) ? std::max(1, static_cast<int>(std::ceil(left / limit * (1.0 - 1e-12)))) : 1;
+    if (!(limit > 0.0)) throw std::runtime_error("contact inner loop: the listed pairs give no positive inner step");
+    if (!std::isfinite(limit)) {
+      segment_steps = 1;
+      return;
+    }
+    const double steps = std::ceil(left / limit * (1.0 - 1e-12));
+    if (!(steps < 1e9)) throw std::runtime_error("contact inner loop: more than 1e9 inner steps in one outer step");
+    segment_steps = std::max(1, static_cast<int>(steps));
   };
   plan_segment();
   double h = (dt_outer - segment_start) / segment_steps;
