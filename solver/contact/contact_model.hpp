@@ -27,7 +27,7 @@ enum class ContactEffectiveMass { body, point };
 enum class ContactLawKind { linear, collision_time };
 // Step of the contacts' inner loop (contact_subcycle.hpp). listed_pairs: steps_per_contact steps per
 // contact duration of the fastest contact mode the listed CDS pairs can form, bounded from above
-// by Gershgorin's theorem (a single pair: A8's t_c / steps_per_contact exactly); lightest_point: the
+// by Collatz-Wielandt (a single pair: A8's t_c / steps_per_contact exactly); lightest_point: the
 // group's bound of contact_substep (the lightest CDS point in active_pairs_safety pairs at once).
 enum class InnerStepBound { listed_pairs, lightest_point };
 

@@ -184,7 +184,7 @@ struct ContactSpec {
   // (contact/contact_subcycle.hpp); "shared": every point of the group at the contact sub-step.
   TimeStepping time_stepping = TimeStepping::inner_loop;
   // The inner loop's step: "listed_pairs", steps_per_contact (20) steps per contact duration of the
-  // fastest mode its listed CDS pairs can form (a Gershgorin bound; docs/method.md §5.4);
+  // fastest mode its listed CDS pairs can form (a Collatz-Wielandt bound; docs/method.md §5.4);
   // "lightest_point", the group's bound (the lightest CDS point in four pairs at once).
   InnerStep inner_step = InnerStep::listed_pairs;
   // "linear": the papers' law at k_Dn = stiffness. "collision_time": the same law with k and c

@@ -215,8 +215,8 @@ BOOST_AUTO_TEST_CASE(listed_pairs_inner_step_is_the_single_pair_contact_duration
   // sqrt(k / m_eff) + c / m_eff (the two 2x2 systems' radii, exact for one pair), and the step is
   // also kept below the group's dashpot limit.
   ContactModel damped = make_contact_model(0.5, cds, k);
-  const double dashpot = 2.0 * damping_ratio_from_restitution(0.5) *
-                   std::sqrt(contact_effective_mass(damped, start, 0, 0, 1, 0) * k);
+  const double dashpot =
+      2.0 * damping_ratio_from_restitution(0.5) * std::sqrt(contact_effective_mass(damped, start, 0, 0, 1, 0) * k);
   const double rate = std::sqrt(k / m_eff) + dashpot / m_eff;
   const double limit = std::min(M_PI / (damped.steps_per_contact * rate), contact_dashpot_substep(damped, start));
   const int expected_damped = static_cast<int>(std::ceil(dt_outer / limit * (1.0 - 1e-12)));
