@@ -24,6 +24,15 @@ SpectralBoundary helmholtz_kind(SideKind k) {
 
 }  // namespace
 
+double upwind_kappa(ConvectionScheme scheme) {
+  switch (scheme) {
+    case ConvectionScheme::quick: return 0.5;
+    case ConvectionScheme::fromm: return 0.0;
+    case ConvectionScheme::central: break;
+  }
+  return 1.0;
+}
+
 FluidSolver::FluidSolver(const Grid& grid, double kinematic_viscosity, const FluidBoundaries& boundaries,
                          FluidSchemes schemes)
     : grid_(grid), nu_(kinematic_viscosity), boundaries_(boundaries), schemes_(schemes),
@@ -146,9 +155,14 @@ void FluidSolver::predict_explicit(FluidState& state, double dt) {
   fill_velocity_ghosts(grid_, boundaries_, state.time, u, v);
   fill_pressure_ghosts(grid_, boundaries_, p);
 
-  const auto convect = schemes_.quick_convection ? convection_quick : convection;
-  convect(grid_, state.velocity_face_x, state.velocity_face_y, u, conv_x_);  // N^n
-  convect(grid_, state.velocity_face_x, state.velocity_face_y, v, conv_y_);
+  if (schemes_.convection == ConvectionScheme::central) {
+    convection(grid_, state.velocity_face_x, state.velocity_face_y, u, conv_x_);  // N^n
+    convection(grid_, state.velocity_face_x, state.velocity_face_y, v, conv_y_);
+  } else {
+    const double kappa = upwind_kappa(schemes_.convection);
+    convection_upwind_biased(grid_, state.velocity_face_x, state.velocity_face_y, u, conv_x_, kappa);
+    convection_upwind_biased(grid_, state.velocity_face_x, state.velocity_face_y, v, conv_y_, kappa);
+  }
 
   laplacian(grid_, u, lap_x_);
   laplacian(grid_, v, lap_y_);

@@ -46,9 +46,13 @@ struct ProjectionStats {
 
 // Spatial options (scene keys fluid.convection and fluid.wall_closure; the defaults are central
 // convection and the linear ghost):
-//  quick_convection: face values of the convected velocity by QUICK (Leonard 1979: quadratic
-//    upwind-biased, (6 q_up + 3 q_down - q_upup) / 8) instead of the central mean; a fourth-
-//    derivative dissipation of order |U| h^3 in place of the central scheme's dispersion;
+//  convection: face values of the convected velocity by the central mean, or upwind-biased
+//    (convection_upwind_biased): QUICK (Leonard 1979, kappa = 1/2: (6 q_up + 3 q_down - q_upup) / 8,
+//    a fourth-derivative dissipation of order |U| h^3 in place of the central scheme's dispersion)
+//    or Fromm (kappa = 0: q_up + (q_down - q_upup) / 4, the steady face value of the unlimited
+//    Bell-Colella-Glaz scheme at small Courant numbers; its h^2 dispersion has the sign opposite to
+//    the central mean's, and AB2 keeps it stable only up to a CFL number of 0.49,
+//    docs/fluid-stability.md §1);
 //  quadratic_wall: the viscous term's ghost of the tangential velocity at every side where it is
 //    given (walls and inflows, not outflows) from the quadratic through the side value and the two
 //    first cells, u_g = (8 u_w - 6 u_1 + u_2) / 3, instead of the
@@ -60,8 +64,13 @@ struct ProjectionStats {
 //    sweep shrinks the defect by < 4/9 at any viscous number; an explicit AB2 treatment of the
 //    difference is unstable above nu dt / h^2 ~ 0.5 on the manufactured solution).
 // Measured on the Re 1000 cavity against Botella & Peyret (docs/fluid-accuracy.md).
+enum class ConvectionScheme { central, quick, fromm };
+
+// kappa of an upwind-biased scheme (convection_upwind_biased); central: 1 (the central mean).
+double upwind_kappa(ConvectionScheme scheme);
+
 struct FluidSchemes {
-  bool quick_convection = false;
+  ConvectionScheme convection = ConvectionScheme::central;
   bool quadratic_wall = false;
   // Up to this viscous number nu dt / h^2 the quadratic closure takes one sweep from the explicit
   // estimate (complete_prediction); 0: always wall_closure_sweeps sweeps from u^n.

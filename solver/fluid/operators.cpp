@@ -35,18 +35,21 @@ void convection(const Grid& grid, const FaceField& velocity_face_x, const FaceFi
 
 namespace {
 
-// QUICK face value between cells a (lower index) and b = a + 1 along one direction, given the
-// cells a - 1 and b + 1 (valid: inside the ghost layer or wrapped) and the face velocity.
-inline double quick_face(double velocity, double q_aa, double q_a, double q_b, double q_bb, bool has_aa, bool has_bb) {
-  if (velocity > 0.0 && has_aa) return 0.125 * (6.0 * q_a + 3.0 * q_b - q_aa);
-  if (velocity < 0.0 && has_bb) return 0.125 * (6.0 * q_b + 3.0 * q_a - q_bb);
+// Upwind-biased face value of the kappa family between cells a (lower index) and b = a + 1 along
+// one direction, given the cells a - 1 and b + 1 (valid: inside the ghost layer or wrapped) and the
+// face velocity: q_up + (1 - kappa)/4 (q_up - q_upup) + (1 + kappa)/4 (q_down - q_up).
+inline double upwind_biased_face(double kappa, double velocity, double q_aa, double q_a, double q_b, double q_bb,
+                                 bool has_aa, bool has_bb) {
+  const double behind = 0.25 * (1.0 - kappa), ahead = 0.25 * (1.0 + kappa);
+  if (velocity > 0.0 && has_aa) return q_a + behind * (q_a - q_aa) + ahead * (q_b - q_a);
+  if (velocity < 0.0 && has_bb) return q_b + behind * (q_b - q_bb) + ahead * (q_a - q_b);
   return 0.5 * (q_a + q_b);
 }
 
 }  // namespace
 
-void convection_quick(const Grid& grid, const FaceField& velocity_face_x, const FaceField& velocity_face_y,
-                      const CellField& q, CellField& out) {
+void convection_upwind_biased(const Grid& grid, const FaceField& velocity_face_x, const FaceField& velocity_face_y,
+                              const CellField& q, CellField& out, double kappa) {
   const double inv_dx = 1.0 / grid.dx(), inv_dy = 1.0 / grid.dy();
   const int nx = grid.nx, ny = grid.ny;
   // Cell k along a direction of n cells: wrapped when periodic; valid if in [-1, n] (ghost layer).
@@ -62,8 +65,8 @@ void convection_quick(const Grid& grid, const FaceField& velocity_face_x, const 
         const bool px = grid.periodic_x;
         const double q_aa = valid(a - 1, nx, px) ? q(index(a - 1, nx, px), j) : 0.0;
         const double q_bb = valid(a + 2, nx, px) ? q(index(a + 2, nx, px), j) : 0.0;
-        flux[side] = velocity * quick_face(velocity, q_aa, q(a, j), q(a + 1, j), q_bb, valid(a - 1, nx, px),
-                                           valid(a + 2, nx, px));
+        flux[side] = velocity * upwind_biased_face(kappa, velocity, q_aa, q(a, j), q(a + 1, j), q_bb,
+                                                   valid(a - 1, nx, px), valid(a + 2, nx, px));
       }
       for (int side = 0; side < 2; ++side) {  // y-faces j (south) and j + 1 (north)
         const int a = j - 1 + side;
@@ -71,8 +74,8 @@ void convection_quick(const Grid& grid, const FaceField& velocity_face_x, const 
         const bool py = grid.periodic_y;
         const double q_aa = valid(a - 1, ny, py) ? q(i, index(a - 1, ny, py)) : 0.0;
         const double q_bb = valid(a + 2, ny, py) ? q(i, index(a + 2, ny, py)) : 0.0;
-        flux[2 + side] = velocity * quick_face(velocity, q_aa, q(i, a), q(i, a + 1), q_bb, valid(a - 1, ny, py),
-                                               valid(a + 2, ny, py));
+        flux[2 + side] = velocity * upwind_biased_face(kappa, velocity, q_aa, q(i, a), q(i, a + 1), q_bb,
+                                                       valid(a - 1, ny, py), valid(a + 2, ny, py));
       }
       out(i, j) = (flux[1] - flux[0]) * inv_dx + (flux[3] - flux[2]) * inv_dy;
     }

@@ -15,12 +15,13 @@ void laplacian(const Grid& grid, const CellField& q, CellField& out);
 void convection(const Grid& grid, const FaceField& velocity_face_x, const FaceField& velocity_face_y,
                 const CellField& q, CellField& out);
 
-// The same with QUICK face values (Leonard 1979): upwind-biased quadratic through the two upwind
-// cells and the downwind one, q_f = (6 q_up + 3 q_down - q_upup) / 8, by the sign of the face
-// velocity; where the second upwind cell lies beyond the ghost layer (next to a wall) the central
-// mean. Periodic directions wrap. FluidSchemes::quick_convection.
-void convection_quick(const Grid& grid, const FaceField& velocity_face_x, const FaceField& velocity_face_y,
-                      const CellField& q, CellField& out);
+// The same with upwind-biased face values of the kappa family (van Leer 1985), by the sign of the
+// face velocity: q_f = q_up + (1 - kappa)/4 (q_up - q_upup) + (1 + kappa)/4 (q_down - q_up);
+// kappa = 1/2 is QUICK (Leonard 1979, (6 q_up + 3 q_down - q_upup) / 8), kappa = 0 Fromm's scheme
+// (q_up + (q_down - q_upup) / 4). Where the second upwind cell lies beyond the ghost layer (next to a
+// wall) the central mean. Periodic directions wrap. FluidSchemes::convection.
+void convection_upwind_biased(const Grid& grid, const FaceField& velocity_face_x, const FaceField& velocity_face_y,
+                              const CellField& q, CellField& out, double kappa);
 
 // Wide cell-centre gradient G_c p = ((p_{i+1} - p_{i-1})/(2 dx), (p_{j+1} - p_{j-1})/(2 dy)).
 void centre_gradient(const Grid& grid, const CellField& p, CellField& grad_x, CellField& grad_y);

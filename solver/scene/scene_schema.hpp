@@ -92,7 +92,7 @@ IBMS_SCENE_CHOICES(RunSpec::SolidSubsteps, {RunSpec::SolidSubsteps::per_group, "
 IBMS_SCENE_CHOICES(RunSpec::OnInstability, {RunSpec::OnInstability::stop, "stop"},
                    {RunSpec::OnInstability::warn, "warn"});
 IBMS_SCENE_CHOICES(FluidSpec::Convection, {FluidSpec::Convection::central, "central"},
-                   {FluidSpec::Convection::quick, "quick"});
+                   {FluidSpec::Convection::quick, "quick"}, {FluidSpec::Convection::fromm, "fromm"});
 IBMS_SCENE_CHOICES(FluidSpec::WallClosure, {FluidSpec::WallClosure::linear, "linear"},
                    {FluidSpec::WallClosure::quadratic, "quadratic"});
 IBMS_SCENE_CHOICES(WallSpec::Kind, {WallSpec::Kind::wall, "wall"}, {WallSpec::Kind::inflow, "inflow"},

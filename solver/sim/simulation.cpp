@@ -114,6 +114,15 @@ BodyParameters body_parameters_of(const BodySpec& spec) {
   return p;
 }
 
+ConvectionScheme convection_scheme(FluidSpec::Convection convection) {
+  switch (convection) {
+    case FluidSpec::Convection::quick: return ConvectionScheme::quick;
+    case FluidSpec::Convection::fromm: return ConvectionScheme::fromm;
+    case FluidSpec::Convection::central: break;
+  }
+  return ConvectionScheme::central;
+}
+
 // The motion of a rigid or prescribed body from its [[bodies]] table.
 PrescribedMotion motion_of(const BodySpec& spec) {
   return {spec.centre,          spec.velocity,          spec.angular_velocity, spec.oscillation_amplitude,
@@ -130,7 +139,7 @@ Simulation::Simulation(const Scene& scene)
     : scene_(scene),
       grid_(grid_from_scene(scene)),
       fluid_solver_(grid_, scene.fluid.kinematic_viscosity, boundaries_from_scene(scene),
-                    FluidSchemes{scene.fluid.convection == FluidSpec::Convection::quick,
+                    FluidSchemes{convection_scheme(scene.fluid.convection),
                                  scene.fluid.wall_closure == FluidSpec::WallClosure::quadratic}),
       fluid_(fluid_solver_.make_state()),
       kernel_(kernel_kind(scene.ibm.kernel)),
@@ -278,9 +287,11 @@ std::vector<std::string> Simulation::stage_names() const {
   std::vector<std::string> stages;
   if (has_bodies()) stages.push_back("schedules (wall velocities, swelling)");
   else stages.push_back("schedules (wall velocities)");
-  const bool quick = scene_.fluid.convection == FluidSpec::Convection::quick;
+  const char* convection = scene_.fluid.convection == FluidSpec::Convection::quick   ? "QUICK"
+                           : scene_.fluid.convection == FluidSpec::Convection::fromm ? "Fromm"
+                                                                                     : "central";
   const std::string kernel(scene_schema::name_of(scene_.ibm.kernel));
-  stages.push_back(std::string("predictor (AB2 ") + (quick ? "QUICK" : "central") +
+  stages.push_back(std::string("predictor (AB2 ") + convection +
                    " convection, Crank-Nicolson diffusion by DST Helmholtz" +
                    (scene_.fluid.wall_closure == FluidSpec::WallClosure::quadratic
                         ? ", quadratic wall closure by " + std::to_string(FluidSolver::wall_closure_sweeps) +

@@ -118,7 +118,7 @@ FluidBoundaries channel(TimeFactor factor = {}) {
 
 BOOST_AUTO_TEST_CASE(plane_poiseuille_is_a_discrete_steady_state_to_round_off) {
   const Grid g(48, 24, length, 1.0);
-  FluidSolver solver(g, nu, channel(), FluidSchemes{false, /*quadratic_wall=*/true});
+  FluidSolver solver(g, nu, channel(), FluidSchemes{ConvectionScheme::central, /*quadratic_wall=*/true});
   FluidState s = solver.make_state();
   for (int j = 0; j < g.ny; ++j)
     for (int i = 0; i < g.nx; ++i) {
