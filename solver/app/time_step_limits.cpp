@@ -110,9 +110,10 @@ std::string describe_time_step_limits(const Scene& scene, const Simulation& sim)
   const double speed = speed_scale(sim);
   if (speed > 0 && scene.fluid.kinematic_viscosity > 0) {
     const double cell_reynolds = speed * h / scene.fluid.kinematic_viscosity;
-    const double cfl_limit = ab2_cn_cfl_limit(cell_reynolds);
-    text += fmt::format("  cell Reynolds number U h / nu = {:.3g}: von Neumann limit of AB2 + CN (central) CFL <= {:.3g}\n",
-                        cell_reynolds, cfl_limit);
+    const ConvectionScheme convection = sim.fluid_solver().schemes().convection;
+    const double cfl_limit = ab2_cn_cfl_limit(cell_reynolds, upwind_kappa(convection));
+    text += fmt::format("  cell Reynolds number U h / nu = {:.3g}: von Neumann limit of AB2 + CN ({}) CFL <= {:.3g}\n",
+                        cell_reynolds, convection_name(convection), cfl_limit);
     const double cfl = fixed ? dt * speed / h : scene.run.cfl;
     if (cfl > cfl_limit)
       text += fmt::format("note: CFL {:.3g} is above that limit: a flow carried at speed U along a grid axis may go "

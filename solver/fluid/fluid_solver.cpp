@@ -33,6 +33,15 @@ double upwind_kappa(ConvectionScheme scheme) {
   return 1.0;
 }
 
+const char* convection_name(ConvectionScheme scheme) {
+  switch (scheme) {
+    case ConvectionScheme::quick: return "QUICK";
+    case ConvectionScheme::fromm: return "Fromm";
+    case ConvectionScheme::central: break;
+  }
+  return "central";
+}
+
 FluidSolver::FluidSolver(const Grid& grid, double kinematic_viscosity, const FluidBoundaries& boundaries,
                          FluidSchemes schemes)
     : grid_(grid), nu_(kinematic_viscosity), boundaries_(boundaries), schemes_(schemes),

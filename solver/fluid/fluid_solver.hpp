@@ -68,6 +68,8 @@ enum class ConvectionScheme { central, quick, fromm };
 
 // kappa of an upwind-biased scheme (convection_upwind_biased); central: 1 (the central mean).
 double upwind_kappa(ConvectionScheme scheme);
+// "central", "QUICK" or "Fromm", for the run's and ibms info's texts.
+const char* convection_name(ConvectionScheme scheme);
 
 struct FluidSchemes {
   ConvectionScheme convection = ConvectionScheme::central;

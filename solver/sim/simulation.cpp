@@ -287,9 +287,7 @@ std::vector<std::string> Simulation::stage_names() const {
   std::vector<std::string> stages;
   if (has_bodies()) stages.push_back("schedules (wall velocities, swelling)");
   else stages.push_back("schedules (wall velocities)");
-  const char* convection = scene_.fluid.convection == FluidSpec::Convection::quick   ? "QUICK"
-                           : scene_.fluid.convection == FluidSpec::Convection::fromm ? "Fromm"
-                                                                                     : "central";
+  const char* convection = convection_name(fluid_solver_.schemes().convection);
   const std::string kernel(scene_schema::name_of(scene_.ibm.kernel));
   stages.push_back(std::string("predictor (AB2 ") + convection +
                    " convection, Crank-Nicolson diffusion by DST Helmholtz" +

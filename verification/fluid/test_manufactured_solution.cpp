@@ -64,9 +64,9 @@ void spatial_study(bool steady, FluidSchemes schemes = {}, std::vector<int> grid
   // A10b expects O(h^1.5) for p near walls on a collocated grid; measured 1.94-1.99 in both norms,
   // so the design's rule applies to p as well.
   const std::string kind = std::string(steady ? "steady MMS, " : "unsteady MMS (t = 1), ") +
-                           (schemes.convection == ConvectionScheme::quick   ? "QUICK convection, "
-                            : schemes.convection == ConvectionScheme::fromm ? "Fromm convection, "
-                                                                            : "") +
+                           (schemes.convection == ConvectionScheme::central
+                                ? std::string()
+                                : convection_name(schemes.convection) + std::string(" convection, ")) +
                            (schemes.quadratic_wall ? "quadratic wall closure, " : "");
   check_order(kind + "u, L2 norm", grids, ul2, 1.9);
   check_order(kind + "u, max norm", grids, umax, 1.9);

@@ -30,13 +30,16 @@ double mode_amplitude(const Grid& g, const FluidState& s, double k) {
 
 // Measured growth per step of the mode with `waves` wavelengths in the box, steps 40 to 80 (the
 // parasitic AB2 root, |G_2| <= C/2 here, has died out by step 40).
-double measured_factor(double cfl, double viscous_number, int waves) {
+double measured_factor(double cfl, double viscous_number, int waves,
+                       ConvectionScheme convection = ConvectionScheme::central) {
   constexpr int n = 16;
   const double h = 1.0 / n, speed = 1.0, dt = cfl * h / speed, nu = viscous_number * h * h / dt;
   const Grid g(n, 4, 1.0, 4 * h, /*per_x=*/true, /*per_y=*/true);
   FluidBoundaries walls;
   walls.periodic_x = walls.periodic_y = true;
-  FluidSolver solver(g, nu, walls);
+  FluidSchemes schemes;
+  schemes.convection = convection;
+  FluidSolver solver(g, nu, walls, schemes);
   FluidState s = solver.make_state();
   const double k = 2 * pi * waves;
   for (int j = 0; j < g.ny; ++j)
@@ -75,5 +78,29 @@ BOOST_AUTO_TEST_CASE(boundary_of_the_python_table_is_the_boundary_here) {
   for (const auto& [cfl, d_min] : {std::pair{0.5, 0.012676}, std::pair{1.0, 0.56524}}) {
     BOOST_TEST(ab2_cn_max_amplification(cfl, 0.99 * d_min) > 1.0 + 1e-9);
     BOOST_TEST(ab2_cn_max_amplification(cfl, 1.01 * d_min) <= 1.0 + 1e-12);
+  }
+}
+
+// Fromm's face values (kappa = 0, the cavity scenes' scheme): the solver's growth factor is the
+// analysed one with the upwind-biased symbol, and AB2 + CN keeps them stable only up to a CFL
+// number of 0.49-0.50 at every cell Reynolds number (docs/fluid-stability.md §1): below it at
+// C = 0.45, above it at C = 0.55, also with some diffusion.
+BOOST_AUTO_TEST_CASE(fromm_face_values_amplify_by_their_upwind_biased_factor_and_limit_the_cfl_to_one_half) {
+  struct Case { double cfl, viscous_number; int waves; bool grows; };
+  const Case cases[] = {{0.45, 0.0, 6, false}, {0.55, 0.0, 6, true}, {0.55, 0.05, 5, true}, {0.45, 0.05, 4, false}};
+  for (const Case& c : cases) {
+    const double theta = 2 * pi * c.waves / 16;
+    const double measured = measured_factor(c.cfl, c.viscous_number, c.waves, ConvectionScheme::fromm);
+    const double theory = ab2_cn_amplification(c.cfl, c.viscous_number, theta, upwind_kappa(ConvectionScheme::fromm));
+    BOOST_TEST_MESSAGE("Fromm, C = " << c.cfl << ", D = " << c.viscous_number << ", theta = " << theta
+                                     << ": measured |G| " << measured << ", theory " << theory);
+    BOOST_TEST(std::abs(measured - theory) < 1e-9);
+    BOOST_TEST((measured > 1.0) == c.grows);
+  }
+  for (double cell_reynolds : {0.5, 4.0, 16.0, 1e6}) {
+    const double limit = ab2_cn_cfl_limit(cell_reynolds, 0.0);
+    BOOST_TEST_MESSAGE("Fromm: CFL limit at Re_h = " << cell_reynolds << ": " << limit);
+    BOOST_TEST(limit >= 0.49);
+    BOOST_TEST(limit <= 0.50);
   }
 }
