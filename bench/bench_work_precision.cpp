@@ -47,6 +47,7 @@
 
 #include "fluid/fluid_solver.hpp"
 #include "scene/scene_reader.hpp"
+#include "scene/scene_schema.hpp"
 #include "sim/diagnostics.hpp"
 #include "metrics/force_metrics.hpp"
 #include "sim/run.hpp"
@@ -66,6 +67,7 @@ namespace {
 
 const std::string source_dir = IBMS_SOURCE_DIR;
 std::vector<std::string> cavity_sets;  // --set key=value of the command line, for the cavities' scenes
+std::string cavity_scheme;             // the fluid scheme of the last cavity run, for its CSV
 
 // One resolution's run: n the case's resolution (cells, or D/h for the cylinders), seconds the
 // wall time; cpu_seconds the process's CPU time over the same span, value the measured figure the
@@ -113,6 +115,10 @@ Point run_cavity(const std::string& case_name, int n, const std::string& work_di
                                 "run.steady_tolerance=1e-6"};
   sets.insert(sets.end(), cavity_sets.begin(), cavity_sets.end());
   Scene scene = read_scene_file(dir + "/scene.toml", sets);
+  std::ostringstream scheme;
+  scheme << "fluid.convection = " << scene_schema::name_of(scene.fluid.convection)
+         << ", fluid.wall_closure = " << scene_schema::name_of(scene.fluid.wall_closure) << ", run.cfl = " << scene.run.cfl;
+  cavity_scheme = scheme.str();
   const auto start = clock_type::now();
   const std::clock_t cpu_start = std::clock();
   Simulation sim(scene);
@@ -365,6 +371,26 @@ Selection parse_selection(const std::string& arg) {
   return out;
 }
 
+// Basilisk's recorded points of the cavity at Reynolds number `re` (bench/reference/basilisk_cavity.csv,
+// one core of this machine) against this run: ibms's time to Basilisk's error (seconds_to_reach, wall
+// time) over Basilisk's time.
+void print_basilisk_ratios(int re, const std::vector<Point>& points) {
+  const CsvTable basilisk = read_csv(source_dir + "/bench/reference/basilisk_cavity.csv");
+  for (std::size_t k = 0; k < basilisk.rows(); ++k) {
+    if (std::lround(basilisk.column("re")[k]) != re) continue;
+    const double n = basilisk.column("n")[k], seconds = basilisk.column("seconds")[k];
+    const double error = basilisk.column("error")[k];
+    bool at_coarsest = false;
+    const double ibms = seconds_to_reach(points, error, &at_coarsest);
+    if (std::isnan(ibms))
+      std::printf("  Basilisk %.0f^2: error %.3g in %.3g s; ibms: %s\n", n, error, seconds,
+                  time_to_reach(points, error).c_str());
+    else
+      std::printf("  Basilisk %.0f^2: error %.3g in %.3g s; ibms %s%.3g s: ratio %s%.2f\n", n, error, seconds,
+                  at_coarsest ? "<= " : "", ibms, at_coarsest ? "<= " : "", ibms / seconds);
+  }
+}
+
 // work_precision_<case>.csv: `points` (every row of this invocation and, when kept, rows of an
 // earlier one) with the slope over all of them.
 void write_case_csv(const std::string& path, const Case& c, const std::string& level, const std::vector<Point>& points,
@@ -372,6 +398,7 @@ void write_case_csv(const std::string& path, const Case& c, const std::string& l
   const double slope = points.size() >= 2 ? work_precision_slope(points) : NAN;
   std::ofstream csv(path);
   csv << "# bench_work_precision " << c.name << " (level " << level << "): error = " << c.error_definition << "\n";
+  if (c.name.rfind("cavity", 0) == 0 && !cavity_scheme.empty()) csv << "# fluid scheme: " << cavity_scheme << "\n";
   if (c.name.rfind("cavity", 0) == 0 && !cavity_sets.empty()) {
     csv << "# scene keys set:";
     for (const std::string& kv : cavity_sets) csv << " " << kv;
@@ -481,6 +508,7 @@ int main(int argc, char** argv) {
                                                                  : std::vector<double>{};
     for (double target : marks)
       std::printf("  time to error %.0e: %s\n", target, time_to_reach(points, target).c_str());
+    if (!marks.empty()) print_basilisk_ratios(c.name == "cavity_re1000" ? 1000 : 100, points);
     slopes << c.name << "," << slope << "," << points.size() << ",\"" << c.error_definition << "\"\n";
   }
   compare_dfg_2d2_couplings(out_dir);

@@ -107,7 +107,8 @@ def _toml(text):
 
 def run_parameters(build, case):
     """One dict per HDF5 output of the case (its folder and sub-folders): run name, grid, h, dt
-    rule, markers, kernel, forcing passes, coupling, run time, from the resolved scene the solver
+    rule, fluid scheme (convection / wall closure), markers, kernel, forcing passes, coupling, run
+    time, from the resolved scene the solver
     stores in the file (root attribute `scene`) and /timing/run."""
     rows = []
     case_dir = os.path.join(build, "validation", case)
@@ -125,6 +126,7 @@ def run_parameters(build, case):
             continue
         scene = _toml(text) or {}
         run, dom, ibm = scene.get("run", {}), scene.get("domain", {}), scene.get("ibm", {})
+        fluid = scene.get("fluid", {})
         nx, ny = dom.get("cells_x"), dom.get("cells_y")
         h = dom.get("length_x", math.nan) / nx if nx else math.nan
         if run.get("time_step", 0) and run["time_step"] > 0:
@@ -145,6 +147,7 @@ def run_parameters(build, case):
                 startup = 2.0 * side.get("ramp_time", 0.0)
         rows.append(dict(
             run=os.path.relpath(path, case_dir)[:-3], nx=nx, ny=ny, h=h, dt=dt,
+            scheme="%s / %s" % (fluid.get("convection", "central"), fluid.get("wall_closure", "linear")),
             bodies=len(bodies), markers=", ".join(str(m) for m in markers) if markers else "--",
             kernel=ibm.get("kernel", "--") if bodies else "--",
             passes=str(ibm.get("forcing_passes", "--")) if bodies else "--",
@@ -400,14 +403,17 @@ def parameter_table(out, params):
     if not params:
         out.append(r"{\small\emph{Run parameters: no HDF5 output of this case in the build directory (not run).}}" + "\n")
         return
-    rows = [[tt(p["run"]), "%s$\\times$%s" % (p["nx"], p["ny"]), num(p["h"], 3), p["dt"],
+    rows = [[tt(p["run"]), "%s$\\times$%s" % (p["nx"], p["ny"]), num(p["h"], 3), p["dt"], esc(p["scheme"]),
              str(p["bodies"]), p["markers"], esc(p["kernel"]), p["passes"], esc(p["coupling"]),
              num(p["seconds"], 3)] for p in params]
-    out.append(longtable(r">{\raggedright\arraybackslash}p{2.8cm}lr>{\raggedright\arraybackslash}p{3.2cm}rp{1.1cm}llll",
-                                              ["run", "grid", "$h$", "time step", "bodies", "markers", "kernel",
+    out.append(longtable(r">{\raggedright\arraybackslash}p{2.6cm}lr>{\raggedright\arraybackslash}p{2.8cm}"
+                         r">{\raggedright\arraybackslash}p{1.4cm}rp{1.1cm}llll",
+                                              ["run", "grid", "$h$", "time step", "convection / wall", "bodies",
+                                               "markers", "kernel",
                                                "passes", "coupling", "run [s]"], rows,
                                               caption="Run parameters from each output's resolved scene "
-                                                      "(\\texttt{ibm.coupling}: \\emph{uhlmann} where the scene "
+                                                      "(\\texttt{fluid.convection} / \\texttt{fluid.wall\\_closure}; "
+                                                      "\\texttt{ibm.coupling}: \\emph{uhlmann} where the scene "
                                                       "has no such key) and its \\texttt{/timing/run}.", size="footnotesize"))
 
 

@@ -135,6 +135,9 @@ def work_precision_section(out, build, fig_dir, source=None):
         name = os.path.basename(f)[len("work_precision_"):-len(".csv")]
         slope = log_log_slope([p[0] for p in pts], [p[1] for p in pts])
         definition = next((c.split("error = ", 1)[1] for c in _comments(f) if "error = " in c), "")
+        scheme = next((c.split("fluid scheme: ", 1)[1] for c in _comments(f) if "fluid scheme: " in c), "")
+        if scheme:
+            definition += "; ibms's scheme: " + scheme
         cases.append((name, pts, slope))
         table.append([r"\texttt{%s}" % esc(name), ", ".join(p[2] for p in pts), num(slope, 3),
                       num(pts[-1][1], 3), num(pts[-1][0], 3), esc(definition)])
