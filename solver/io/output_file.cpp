@@ -65,6 +65,10 @@ OutputFile::OutputFile(const std::string& path, const std::string& resolved_scen
 }
 
 OutputFile::~OutputFile() {
+  try {  // rows held back when a run ends by an exception
+    flush();
+  } catch (...) {
+  }
   series_.clear();  // datasets before the file
   file_.reset();
 }
@@ -127,22 +131,33 @@ void OutputFile::append_series(const std::vector<SeriesValue>& values) {
     }
     series_dataset(value);
   }
-  const hsize_t row = n_series_rows_;
-  const hsize_t n_rows = row + 1;
+  pending_rows_.push_back(values);
+  if (pending_rows_.size() >= series_block_rows ||
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - last_series_block_).count() >=
+          series_block_seconds)
+    flush();
+}
+
+void OutputFile::write_pending_series() {
+  last_series_block_ = std::chrono::steady_clock::now();
+  if (pending_rows_.empty()) return;
+  const hsize_t first = n_series_rows_, count = pending_rows_.size(), n_rows = first + count;
+  // One column per known series, NaN where a row had no value.
+  std::map<std::string, std::vector<double>> columns;
+  for (const auto& entry : series_) columns[entry.first].assign(count, std::numeric_limits<double>::quiet_NaN());
+  for (hsize_t r = 0; r < count; ++r)
+    for (const SeriesValue& value : pending_rows_[r]) columns.at(value.name)[r] = value.value;
+  const Hdf5Handle memory = checked_handle(H5Screate_simple(1, &count, nullptr), H5Sclose, path_, "cannot append series");
   for (auto& [name, dataset] : series_) {
+    const std::string what = fmt::format("cannot append to series '{}'", name);
     check_hdf5(H5Dset_extent(dataset.get(), &n_rows), path_, fmt::format("cannot extend series '{}'", name));
-  }
-  const hsize_t one = 1;
-  const Hdf5Handle memory = checked_handle(H5Screate_simple(1, &one, nullptr), H5Sclose, path_, "cannot append series");
-  for (const SeriesValue& value : values) {
-    const hid_t dataset = series_.at(value.name).get();
-    const std::string what = fmt::format("cannot append to series '{}'", value.name);
-    const Hdf5Handle space = checked_handle(H5Dget_space(dataset), H5Sclose, path_, what);
-    check_hdf5(H5Sselect_hyperslab(space.get(), H5S_SELECT_SET, &row, nullptr, &one, nullptr), path_, what);
-    check_hdf5(H5Dwrite(dataset, H5T_NATIVE_DOUBLE, memory.get(), space.get(), H5P_DEFAULT, &value.value), path_, what);
+    const Hdf5Handle space = checked_handle(H5Dget_space(dataset.get()), H5Sclose, path_, what);
+    check_hdf5(H5Sselect_hyperslab(space.get(), H5S_SELECT_SET, &first, nullptr, &count, nullptr), path_, what);
+    check_hdf5(H5Dwrite(dataset.get(), H5T_NATIVE_DOUBLE, memory.get(), space.get(), H5P_DEFAULT,
+                        columns.at(name).data()), path_, what);
   }
   n_series_rows_ = n_rows;
-  flush();
+  pending_rows_.clear();
 }
 
 void OutputFile::write_snapshot(long step, double time, const std::vector<SnapshotArray>& arrays) {
@@ -241,6 +256,7 @@ void OutputFile::write_checkpoint(const std::map<std::string, std::vector<double
 }
 
 void OutputFile::flush() {
+  write_pending_series();
   // Buffered writes reach the disk here: a failure is an output failure (disk full), not bad input.
   errno = 0;
   if (H5Fflush(file_.get(), H5F_SCOPE_GLOBAL) < 0) {

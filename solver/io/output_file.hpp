@@ -7,8 +7,12 @@
 //                body arrays body_NNN/<name> (n)
 //   /checkpoint  the latest restart state (checkpoint.hpp)
 // Every dataset has a `units` attribute. The file is flushed after each write, so a killed run
-// leaves a readable file; an XDMF sidecar (<path without .h5>.xmf) is rewritten after each snapshot.
+// leaves a readable file; /series rows are held back and written in blocks (series_block_rows rows,
+// or series_block_seconds after the last block, and at every flush: snapshots, checkpoints, the
+// end), so its series lag the run by at most one block. An XDMF sidecar (<path without .h5>.xmf)
+// is rewritten after each snapshot.
 #pragma once
+#include <chrono>
 #include <cstddef>
 #include <map>
 #include <string>
@@ -45,8 +49,11 @@ class OutputFile {
 
   // One row of /series: each value into /series/<name> (created with its units on first use).
   // Series known from earlier rows but absent here get NaN in this row, so all series stay
-  // aligned row by row. A name twice in one call is an error.
+  // aligned row by row. A name twice in one call is an error. The row reaches the file with its
+  // block (see above).
   void append_series(const std::vector<SeriesValue>& values);
+  static constexpr std::size_t series_block_rows = 256;
+  static constexpr double series_block_seconds = 1.0;
 
   // /snapshots/NNNNNN with the arrays; then rewrites the XDMF sidecar. A step written twice,
   // an empty dims or a null data pointer is an error.
@@ -67,20 +74,23 @@ class OutputFile {
   };
   void write_timing(const std::vector<TimingEntry>& entries);
 
-  void flush();  // H5Fflush; already called after each write
+  void flush();  // the series rows held back, then H5Fflush; already called after each write
   const std::string& path() const { return path_; }
   const std::string& xdmf_path() const { return xdmf_path_; }
 
  private:
   void write_grid(const Grid& grid);
   hid_t series_dataset(const SeriesValue& value);
+  void write_pending_series();  // the rows held back, into /series (no flush)
 
   std::string path_;
   std::string xdmf_path_;
   Grid grid_;
   Hdf5Handle file_;
   std::map<std::string, Hdf5Handle> series_;  // open /series datasets by name
-  hsize_t n_series_rows_ = 0;
+  hsize_t n_series_rows_ = 0;                 // rows in the file
+  std::vector<std::vector<SeriesValue>> pending_rows_;  // rows held back
+  std::chrono::steady_clock::time_point last_series_block_ = std::chrono::steady_clock::now();
   std::vector<XdmfSnapshot> snapshots_;       // what the sidecar lists
 };
 

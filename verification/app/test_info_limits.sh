@@ -16,12 +16,22 @@ work=$(mktemp -d); trap 'rm -rf "$work"' EXIT
 expect "cavity: CFL limit listed" "$work/adaptive.txt" "^  CFL \(advective.* 0.0078" yes
 expect "cavity: viscous limit listed" "$work/adaptive.txt" "^  viscous" yes
 expect "cavity adaptive: no warning" "$work/adaptive.txt" "WARNING" no
-# Re_h = 100 / 128: von Neumann CFL limit 1.27 (docs/fluid-stability.md), above cfl 0.5: no note.
-expect "cavity: von Neumann limit listed" "$work/adaptive.txt" "cell Reynolds number U h / nu = 0.781: .*CFL <= 1.27" yes
-expect "cavity: cfl within the von Neumann limit" "$work/adaptive.txt" "^note: CFL" no
+# The scene's own scheme, Fromm at run.cfl = 0.45: limit 0.50 at Re_h = 100 / 128 (docs/fluid-stability.md
+# §1), above 0.45: no note.
+expect "cavity (Fromm): von Neumann limit listed" "$work/adaptive.txt" "cell Reynolds number U h / nu = 0.781: .*\(Fromm\) CFL <= 0.5$" yes
+expect "cavity (Fromm): cfl within the von Neumann limit" "$work/adaptive.txt" "^note: CFL" no
+"$ibms" info "$cavity" --set domain.cells_x=128 --set domain.cells_y=128 --set run.cfl=0.55 > "$work/fromm_high.txt" \
+  || failures=$((failures + 1))
+expect "cavity (Fromm) at cfl 0.55: note on the von Neumann limit" "$work/fromm_high.txt" "^note: CFL 0.55 is above that limit" yes
+# Central convection: Re_h = 100 / 128: limit 1.27, above cfl 0.5: no note.
+central=(--set fluid.convection=central --set fluid.wall_closure=linear --set run.cfl=0.5)
+"$ibms" info "$cavity" --set domain.cells_x=128 --set domain.cells_y=128 "${central[@]}" > "$work/central.txt" \
+  || failures=$((failures + 1))
+expect "cavity (central): von Neumann limit listed" "$work/central.txt" "cell Reynolds number U h / nu = 0.781: .*\(central\) CFL <= 1.27" yes
+expect "cavity (central): cfl within the von Neumann limit" "$work/central.txt" "^note: CFL" no
 # Re_h = 78.1: limit 0.413, below cfl 0.5: a note (not a warning).
 "$ibms" info "$cavity" --set domain.cells_x=128 --set domain.cells_y=128 --set fluid.kinematic_viscosity=0.0001 \
-  > "$work/high_re.txt" || failures=$((failures + 1))
+  "${central[@]}" > "$work/high_re.txt" || failures=$((failures + 1))
 expect "cavity Re_h 78: note on the von Neumann limit" "$work/high_re.txt" "^note: CFL 0.5 is above that limit" yes
 expect "cavity Re_h 78: no warning" "$work/high_re.txt" "WARNING" no
 # dt = 0.05 at h = 1/128, lid speed 1: CFL 6.4, far above the safe fraction 0.5.

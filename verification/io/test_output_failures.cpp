@@ -103,7 +103,8 @@ BOOST_AUTO_TEST_CASE(failed_hdf5_dataset_writes_are_output_errors_before_any_flu
   for (const std::string kind : {"snapshot", "checkpoint"}) {
     const std::string outcome = in_child([&]() {
       ibms::OutputFile out(h5.string(), "(scene)", grid, "test", "none");
-      out.append_series({{"time", "time", 0.0}});  // flushed: the file is complete up to here
+      out.append_series({{"time", "time", 0.0}});
+      out.flush();  // the row written: the file is complete up to here
       const FileSizeLimit limit(fs::file_size(h5) + 4096);
       return outcome_of([&]() {
         if (kind == "snapshot") out.write_snapshot(0, 0.0, {{"u", "length/time", {128, 128}, field.data()}});
