@@ -167,6 +167,8 @@ Scene cavity_scene(int cells, double dt, double nu, double end_time, const std::
                          {"domain.cells_x=" + std::to_string(cells), "domain.cells_y=" + std::to_string(cells),
                           "fluid.kinematic_viscosity=" + std::to_string(nu), "run.time_step=" + std::to_string(dt),
                           "run.end_time=" + std::to_string(end_time), "run.steady_tolerance=0",
+                          // the central scheme of the von Neumann limit the maps are set against
+                          "fluid.convection=central", "fluid.wall_closure=linear",
                           "output.file=\"" + out_dir + "/fluid_stability.h5\""});
 }
 

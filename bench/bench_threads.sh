@@ -17,7 +17,7 @@ cores=$(nproc)
 
 declare -A scene=(
   [settling_disk]="$src/validation/settling_disk/scene.toml"
-  [cavity_re1000_128]="$src/validation/lid_driven_cavity_re1000/scene.toml --set domain.cells_x=128 --set domain.cells_y=128"
+  [cavity_re1000_128]="$src/validation/lid_driven_cavity_re1000/scene.toml --set domain.cells_x=128 --set domain.cells_y=128 --set fluid.convection=central --set fluid.wall_closure=linear"
 )
 
 # run MODE SCENE STEPS: prints the wall time of the whole run (start-up and FFT planning included)
@@ -63,6 +63,7 @@ measure idle
 setsid bash -c 'while true; do
     OMP_NUM_THREADS=$0 "$1" run "$2/validation/lid_driven_cavity_re1000/scene.toml" \
       --set domain.cells_x=256 --set domain.cells_y=256 --set run.steady_tolerance=0 -o "$3/load.h5" --quiet \
+      --set fluid.convection=central --set fluid.wall_closure=linear \
       > /dev/null 2>&1 || true
   done' "$cores" "$ibms" "$src" "$work" &
 load_group=$!
