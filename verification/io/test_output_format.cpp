@@ -5,6 +5,8 @@
 #include <boost/test/unit_test.hpp>
 
 #include <hdf5.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -215,4 +217,41 @@ BOOST_AUTO_TEST_CASE(failures_throw_input_error_naming_the_path) {
                         });
   BOOST_CHECK_THROW(ibms::write_csv((tiny_run().directory / "bad.csv").string(), {}, {"a"}, {{1.0}, {2.0}}),
                     ibms::InputError);
+}
+
+// Series rows reach the file in blocks (OutputFile::series_block_rows rows, or series_block_seconds
+// after the last block, and at every flush): a process that ends without closing the file (a kill)
+// leaves the complete blocks, aligned, and nothing of the rows held back.
+BOOST_AUTO_TEST_CASE(series_rows_reach_the_file_in_blocks_and_a_kill_keeps_the_complete_ones) {
+  const fs::path dir = fs::temp_directory_path() / ("ibms_series_blocks_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const std::size_t block = ibms::OutputFile::series_block_rows;
+  struct Case { std::size_t rows; bool flush; hsize_t kept; };
+  const Case cases[] = {{block - 1, false, 0}, {block + 10, false, block}, {10, true, 10}};
+  int k = 0;
+  for (const Case& c : cases) {
+    const fs::path h5 = dir / ("killed_" + std::to_string(k++) + ".h5");
+    const pid_t child = fork();
+    if (child == 0) {  // writes, then ends as a killed run would: no destructor, no close
+      auto* out = new ibms::OutputFile(h5.string(), "(scene)", tiny_grid, "test", "none");
+      for (std::size_t r = 0; r < c.rows; ++r)
+        out->append_series({{"step", "-", static_cast<double>(r + 1)}, {"time", "time", 0.1 * (r + 1)}});
+      if (c.flush) out->flush();
+      _exit(0);
+    }
+    int status = 0;
+    waitpid(child, &status, 0);
+    BOOST_TEST_REQUIRE((WIFEXITED(status) && WEXITSTATUS(status) == 0));
+    const ibms::Hdf5Handle file = open_file(h5);
+    const bool has_series = H5Lexists(file.get(), "/series/step", H5P_DEFAULT) > 0;
+    const hsize_t rows = has_series ? dims_of(file.get(), "/series/step")[0] : 0;
+    BOOST_TEST_MESSAGE(c.rows << " rows appended" << (c.flush ? " and flushed" : "") << ": " << rows << " in the file");
+    BOOST_TEST(rows == c.kept);
+    if (has_series) {
+      BOOST_TEST(dims_of(file.get(), "/series/time")[0] == rows);
+      const std::vector<double> steps = values_of(file.get(), "/series/step");
+      for (std::size_t r = 0; r < steps.size(); ++r) BOOST_TEST(steps[r] == static_cast<double>(r + 1));
+    }
+  }
+  fs::remove_all(dir);
 }
