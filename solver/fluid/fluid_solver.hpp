@@ -155,7 +155,8 @@ class FluidSolver {
   double kinetic_energy(const FluidState& state) const;
 
  private:
-  void solve_helmholtz_component(double dt, CellField& rhs_and_solution);
+  // (I - nu dt/2 L) q = r for both velocity components, in place (wall data already in r).
+  void solve_helmholtz_pair(double dt, CellField& x, CellField& y);
   // Normal velocity of the Dirichlet sides (walls: 0, inflows: the profile) at `time` on their faces.
   void set_given_faces(double time, FaceField& face_x, FaceField& face_y) const;
   // Faces the projection corrects, inclusive ranges of x-face index i and y-face index j.
@@ -171,11 +172,13 @@ class FluidSolver {
   void add_wall_closure(const CellField& u, const CellField& v, double t, double scale, CellField& out_x,
                         CellField& out_y) const;
   std::unique_ptr<SpectralSolver> poisson_;    // Neumann/periodic
-  std::unique_ptr<SpectralSolver> helmholtz_;  // Dirichlet/periodic
+  // Dirichlet/periodic, one per velocity component: the same transforms (FFTW reuses the first
+  // plan's wisdom), so that with two threads the two solves run side by side.
+  std::unique_ptr<SpectralSolver> helmholtz_, helmholtz_y_;
   // Work fields, allocated once.
   CellField star_x_, star_y_, conv_x_, conv_y_, lap_x_, lap_y_, grad_x_, grad_y_, phi_, work_;
   FaceField star_face_x_, star_face_y_;
-  std::vector<double> buffer_;
+  std::vector<double> buffer_, buffer_y_;
 };
 
 }  // namespace ibms

@@ -19,7 +19,7 @@ namespace {
 // that run them are those of the loops now.
 extern "C" void run_fft_jobs(void* (*work)(char*), char* job_data, std::size_t job_size, int jobs, void*) {
   const int threads = std::min(jobs, omp_get_max_threads());
-#pragma omp parallel for schedule(static) num_threads(threads)
+#pragma omp parallel for schedule(static) num_threads(threads) if(!omp_in_parallel())
   for (int k = 0; k < jobs; ++k) work(job_data + job_size * static_cast<std::size_t>(k));
 }
 
@@ -45,6 +45,7 @@ int set_thread_count(int n) {
 }
 
 int thread_count() { return run_threads > 0 ? run_threads : omp_get_max_threads(); }
+int loop_threads() { return omp_get_max_threads(); }
 void prepare_fft_threads() {
   if (fftw_threads_ready()) fftw_plan_with_nthreads(thread_count());
 }
@@ -53,6 +54,7 @@ bool built_with_openmp() { return true; }
 void set_loop_threads(int) {}
 int set_thread_count(int) { return 1; }
 int thread_count() { return 1; }
+int loop_threads() { return 1; }
 bool built_with_openmp() { return false; }
 void prepare_fft_threads() {}
 #endif

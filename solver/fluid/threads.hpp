@@ -4,6 +4,10 @@
 // result does not depend on the thread count (test_threads). Without OpenMP everything is serial.
 #pragma once
 
+#if defined(_OPENMP)
+#include <omp.h>
+#endif
+
 namespace ibms {
 
 // Sets the threads of later parallel loops and of FFTW plans made afterwards (a SpectralSolver
@@ -11,6 +15,8 @@ namespace ibms {
 // OpenMP).
 int set_thread_count(int n);
 int thread_count();
+// The threads the next parallel loop will have (1 without OpenMP).
+int loop_threads();
 bool built_with_openmp();
 // Makes FFTW plan with thread_count() threads from now on (called before planning). A plan's jobs
 // run on as many threads as the loops have when it executes (at most its planned count), so
@@ -60,9 +66,26 @@ class ThreadGovernor {
 
 }  // namespace ibms
 
-// One OpenMP static loop over the following for statement (rows of a field); nothing without OpenMP.
+// Runs the callables a and b side by side on two threads (one after the other without OpenMP).
 #if defined(_OPENMP)
-#define IBMS_PARALLEL_ROWS _Pragma("omp parallel for schedule(static)")
+#define IBMS_PARALLEL_PAIR(a, b)          \
+  _Pragma("omp parallel sections num_threads(2)") \
+  {                                        \
+    _Pragma("omp section") a();            \
+    _Pragma("omp section") b();            \
+  }
+#else
+#define IBMS_PARALLEL_PAIR(a, b) \
+  {                              \
+    a();                         \
+    b();                         \
+  }
+#endif
+
+// One OpenMP static loop over the following for statement (rows of a field); nothing without OpenMP.
+// Inside a parallel region (a section of IBMS_PARALLEL_PAIR) the loop runs on the calling thread.
+#if defined(_OPENMP)
+#define IBMS_PARALLEL_ROWS _Pragma("omp parallel for schedule(static) if(!omp_in_parallel())")
 #else
 #define IBMS_PARALLEL_ROWS
 #endif
