@@ -254,10 +254,11 @@ void FluidSolver::complete_prediction(FluidState& state, double dt) {
   //    u~_e + dt f, which differs from u~ by O(dt^2): the defect left, rho O(dt^2) = O(dt^3) per
   //    step, keeps the scheme second order in time, and a steady state is the same as the
   //    converged iteration's (u~ = u~_e = u^n there);
-  //  - above it: wall_closure_sweeps sweeps from u^n (the explicit estimate's viscous half grows
-  //    with D), which leave (4/9)^sweeps of the first guess's defect, whatever the viscous number.
+  //  - above it: closure_sweeps(D) sweeps from u^n (the explicit estimate's viscous half grows
+  //    with D), which leave at most (4/9)^wall_closure_sweeps of the first guess's defect, whatever
+  //    the viscous number; a steady state is again the converged iteration's (u^n = u~ there).
   const double half = 0.5 * nu_ * dt;
-  const int sweeps = one_sweep ? 1 : wall_closure_sweeps;
+  const int sweeps = one_sweep ? 1 : closure_sweeps(nu_ * dt / (h * h));
   if (one_sweep) {
     add_wall_closure(phi_, work_, t_new, half, star_x_, star_y_);  // first guess u~_e + dt f
   } else {
@@ -274,6 +275,14 @@ void FluidSolver::complete_prediction(FluidState& state, double dt) {
     std::swap(star_x_, lap_x_);
     std::swap(star_y_, lap_y_);
   }
+}
+
+int FluidSolver::closure_sweeps(double viscous_number) {
+  const double rho = (2.0 / 3.0) * viscous_number / (1.0 + 1.5 * viscous_number);
+  const double bound = std::pow(4.0 / 9.0, wall_closure_sweeps);
+  int sweeps = 1;
+  for (double left = rho; left > bound && sweeps < wall_closure_sweeps; left *= rho) ++sweeps;
+  return sweeps;
 }
 
 void FluidSolver::predict_momentum(FluidState& state, double dt, const CellField* force_x,

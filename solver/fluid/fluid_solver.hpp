@@ -97,7 +97,11 @@ class FluidSolver {
   FluidSolver(const Grid& grid, double kinematic_viscosity, const FluidBoundaries& boundaries,
               FluidSchemes schemes = {});
   const FluidSchemes& schemes() const { return schemes_; }
-  static constexpr int wall_closure_sweeps = 3;  // Helmholtz solves per component with quadratic_wall
+  static constexpr int wall_closure_sweeps = 3;  // Helmholtz solves per component with quadratic_wall, at most
+  // The sweeps from u^n at viscous number nu dt / h^2 = d: the fewest whose contraction rho(d)^k
+  // reaches (4/9)^wall_closure_sweeps, what wall_closure_sweeps sweeps guarantee at any viscous
+  // number (complete_prediction): 2 for d up to 4/3 (where rho = (4/9)^(3/2)), 3 above.
+  static int closure_sweeps(double viscous_number);
 
   const Grid& grid() const { return grid_; }
   const FluidBoundaries& boundaries() const { return boundaries_; }

@@ -292,9 +292,11 @@ std::vector<std::string> Simulation::stage_names() const {
   stages.push_back(std::string("predictor (AB2 ") + convection +
                    " convection, Crank-Nicolson diffusion by DST Helmholtz" +
                    (scene_.fluid.wall_closure == FluidSpec::WallClosure::quadratic
-                        ? ", quadratic wall closure by " + std::to_string(FluidSolver::wall_closure_sweeps) +
-                              " defect-correction sweeps from u^n, one from the explicit estimate up to nu dt/h^2 = " +
-                              fmt::format("{:g}", fluid_solver_.schemes().single_sweep_viscous_number) + ")"
+                        ? ", quadratic wall closure by defect correction: one sweep from the explicit estimate up "
+                          "to nu dt/h^2 = " +
+                              fmt::format("{:g}", fluid_solver_.schemes().single_sweep_viscous_number) +
+                              ", above it 2 sweeps from u^n up to 4/3, " +
+                              std::to_string(FluidSolver::wall_closure_sweeps) + " beyond)"
                         : ")"));
   if (has_bodies() && enforces_no_slip())
     stages.push_back("immersed-boundary forcing (" + kernel +

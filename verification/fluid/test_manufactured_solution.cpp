@@ -254,3 +254,21 @@ BOOST_AUTO_TEST_CASE(single_sweep_wall_closure_keeps_second_order_in_time_and_th
                      << a.errors.u_max);
   BOOST_TEST(max_difference(a.state, b.state) < 1e-3 * a.errors.u_max);
 }
+
+// The sweeps from u^n above the single-sweep threshold: the fewest k with rho(d)^k <= (4/9)^3, the
+// contraction three sweeps guarantee at any viscous number d (rho(d) = (2/3) d / (1 + (3/2) d) < 4/9):
+// 2 up to d = 4/3 (the Re 100 cavity at 128^2 and 256^2: 0.58, 1.15), 3 above.
+BOOST_AUTO_TEST_CASE(closure_sweeps_keep_the_contraction_of_three_sweeps_at_any_viscous_number) {
+  const double bound = std::pow(4.0 / 9.0, FluidSolver::wall_closure_sweeps);
+  for (double d = 0.26; d < 1e4; d *= 1.1) {
+    const double rho = (2.0 / 3.0) * d / (1.0 + 1.5 * d);
+    const int k = FluidSolver::closure_sweeps(d);
+    BOOST_TEST(std::pow(rho, k) <= bound * (1 + 1e-12));
+    if (k > 1) BOOST_TEST(std::pow(rho, k - 1) > bound);  // the fewest
+    BOOST_TEST(k <= FluidSolver::wall_closure_sweeps);
+  }
+  BOOST_TEST(FluidSolver::closure_sweeps(0.58) == 2);
+  BOOST_TEST(FluidSolver::closure_sweeps(1.15) == 2);
+  BOOST_TEST(FluidSolver::closure_sweeps(1.3) == 2);
+  BOOST_TEST(FluidSolver::closure_sweeps(1.4) == 3);
+}
