@@ -60,8 +60,8 @@ struct ProjectionStats {
 //    wall-cell Laplacian has an O(1) truncation error (-u''/4). Crank-Nicolson on the quadratic
 //    closure: the explicit half directly; the implicit half by defect correction around the linear
 //    operator the DST diagonalises: one Helmholtz solve per component from the explicit estimate
-//    up to nu dt / h^2 = single_sweep_viscous_number (0.25), wall_closure_sweeps from u^n above it (each
-//    sweep shrinks the defect by < 4/9 at any viscous number; an explicit AB2 treatment of the
+//    up to nu dt / h^2 = single_sweep_viscous_number (0.25), FluidSolver::closure_sweeps from u^n
+//    above it (each sweep shrinks the defect by < 4/9 at any viscous number; an explicit AB2 treatment of the
 //    difference is unstable above nu dt / h^2 ~ 0.5 on the manufactured solution).
 // Measured on the Re 1000 cavity against Botella & Peyret (docs/fluid-accuracy.md).
 enum class ConvectionScheme { central, quick, fromm };
@@ -75,7 +75,7 @@ struct FluidSchemes {
   ConvectionScheme convection = ConvectionScheme::central;
   bool quadratic_wall = false;
   // Up to this viscous number nu dt / h^2 the quadratic closure takes one sweep from the explicit
-  // estimate (complete_prediction); 0: always wall_closure_sweeps sweeps from u^n.
+  // estimate (complete_prediction); 0: always FluidSolver::closure_sweeps sweeps from u^n.
   double single_sweep_viscous_number = 0.25;
 };
 

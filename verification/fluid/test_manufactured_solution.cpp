@@ -207,13 +207,13 @@ BOOST_AUTO_TEST_CASE(fromm_convection_and_quadratic_wall_closure_keep_second_ord
 // The quadratic closure's single sweep from the explicit estimate (complete_prediction, taken up to
 // nu dt / h^2 = FluidSchemes::single_sweep_viscous_number): at nu = 0.004 on 64^2 every step of the
 // time study below has nu dt / h^2 <= 0.205, so every step takes it. The velocity stays second
-// order in time (>= 1.8, as the three-sweep path above), the runs differ from the three-sweep
-// path's (the path is taken), and a steady state is the three-sweep path's: both are fixed points
-// of the same discrete equations.
+// order in time (>= 1.8, as the swept path above), the runs differ from those of the path that
+// sweeps from u^n (FluidSolver::closure_sweeps; the single sweep is taken), and a steady state is
+// that path's: both are fixed points of the same discrete equations.
 BOOST_AUTO_TEST_CASE(single_sweep_wall_closure_keeps_second_order_in_time_and_the_steady_state) {
   const FluidSchemes single{ConvectionScheme::quick, /*quadratic_wall=*/true};
   FluidSchemes swept = single;
-  swept.single_sweep_viscous_number = 0.0;  // always wall_closure_sweeps sweeps from u^n
+  swept.single_sweep_viscous_number = 0.0;  // always closure_sweeps sweeps from u^n
   ManufacturedSolution ms;
   ms.steady = false;
   ms.viscosity = 0.004;
@@ -240,7 +240,7 @@ BOOST_AUTO_TEST_CASE(single_sweep_wall_closure_keeps_second_order_in_time_and_th
       h, e, {2.0, 1.8, INFINITY, "dt"}));
   BOOST_TEST(verification::finest_three_slope(h, e) >= 1.8);
   const double path_difference = max_difference(finals[0], run(ms, 64, 1.0 / steps[0], 1.0, 0.0, swept).state);
-  BOOST_TEST_MESSAGE("one sweep against three sweeps at dt = 1/80: max |u difference| = " << path_difference
+  BOOST_TEST_MESSAGE("one sweep against the swept path at dt = 1/80: max |u difference| = " << path_difference
                      << " (time error at that dt: " << e[0] << ")");
   BOOST_TEST(path_difference > 1e-12);
   BOOST_TEST(path_difference < e[0]);
@@ -249,7 +249,7 @@ BOOST_AUTO_TEST_CASE(single_sweep_wall_closure_keeps_second_order_in_time_and_th
   steady.steady = true;
   const double dt = 0.002;  // nu dt / h^2 = 0.2048 on 32^2 at nu = 0.1
   const Run a = run(steady, 32, dt, 40.0, 1e-10, single), b = run(steady, 32, dt, 40.0, 1e-10, swept);
-  BOOST_TEST_MESSAGE("steady MMS 32^2: one sweep " << a.steps << " steps, three sweeps " << b.steps
+  BOOST_TEST_MESSAGE("steady MMS 32^2: one sweep " << a.steps << " steps, swept path " << b.steps
                      << " steps, max |u difference| = " << max_difference(a.state, b.state) << ", u error "
                      << a.errors.u_max);
   BOOST_TEST(max_difference(a.state, b.state) < 1e-3 * a.errors.u_max);
