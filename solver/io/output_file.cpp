@@ -131,8 +131,16 @@ void OutputFile::append_series(const std::vector<SeriesValue>& values) {
     }
     series_dataset(value);
   }
-  pending_rows_.push_back(values);
-  if (pending_rows_.size() >= series_block_rows ||
+  // This row's value into each of its series' held-back columns; a column that misses rows before
+  // it (a series new in this block, or absent from them) is padded with NaN.
+  constexpr double missing = std::numeric_limits<double>::quiet_NaN();
+  for (const SeriesValue& value : values) {
+    std::vector<double>& column = pending_[value.name];
+    column.resize(pending_rows_, missing);
+    column.push_back(value.value);
+  }
+  ++pending_rows_;
+  if (pending_rows_ >= series_block_rows ||
       std::chrono::duration<double>(std::chrono::steady_clock::now() - last_series_block_).count() >=
           series_block_seconds)
     flush();
@@ -140,24 +148,22 @@ void OutputFile::append_series(const std::vector<SeriesValue>& values) {
 
 void OutputFile::write_pending_series() {
   last_series_block_ = std::chrono::steady_clock::now();
-  if (pending_rows_.empty()) return;
-  const hsize_t first = n_series_rows_, count = pending_rows_.size(), n_rows = first + count;
-  // One column per known series, NaN where a row had no value.
-  std::map<std::string, std::vector<double>> columns;
-  for (const auto& entry : series_) columns[entry.first].assign(count, std::numeric_limits<double>::quiet_NaN());
-  for (hsize_t r = 0; r < count; ++r)
-    for (const SeriesValue& value : pending_rows_[r]) columns.at(value.name)[r] = value.value;
+  if (pending_rows_ == 0) return;
+  const hsize_t first = n_series_rows_, count = pending_rows_, n_rows = first + count;
   const Hdf5Handle memory = checked_handle(H5Screate_simple(1, &count, nullptr), H5Sclose, path_, "cannot append series");
   for (auto& [name, dataset] : series_) {
     const std::string what = fmt::format("cannot append to series '{}'", name);
+    std::vector<double>& column = pending_[name];  // NaN where the block's rows had no value
+    column.resize(count, std::numeric_limits<double>::quiet_NaN());
     check_hdf5(H5Dset_extent(dataset.get(), &n_rows), path_, fmt::format("cannot extend series '{}'", name));
     const Hdf5Handle space = checked_handle(H5Dget_space(dataset.get()), H5Sclose, path_, what);
     check_hdf5(H5Sselect_hyperslab(space.get(), H5S_SELECT_SET, &first, nullptr, &count, nullptr), path_, what);
-    check_hdf5(H5Dwrite(dataset.get(), H5T_NATIVE_DOUBLE, memory.get(), space.get(), H5P_DEFAULT,
-                        columns.at(name).data()), path_, what);
+    check_hdf5(H5Dwrite(dataset.get(), H5T_NATIVE_DOUBLE, memory.get(), space.get(), H5P_DEFAULT, column.data()),
+               path_, what);
   }
   n_series_rows_ = n_rows;
-  pending_rows_.clear();
+  for (auto& entry : pending_) entry.second.clear();  // capacity kept: no allocation in later blocks
+  pending_rows_ = 0;
 }
 
 void OutputFile::write_snapshot(long step, double time, const std::vector<SnapshotArray>& arrays) {

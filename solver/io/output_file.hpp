@@ -89,7 +89,8 @@ class OutputFile {
   Hdf5Handle file_;
   std::map<std::string, Hdf5Handle> series_;  // open /series datasets by name
   hsize_t n_series_rows_ = 0;                 // rows in the file
-  std::vector<std::vector<SeriesValue>> pending_rows_;  // rows held back
+  std::size_t pending_rows_ = 0;                         // rows held back
+  std::map<std::string, std::vector<double>> pending_;  // their values, one column per series
   std::chrono::steady_clock::time_point last_series_block_ = std::chrono::steady_clock::now();
   std::vector<XdmfSnapshot> snapshots_;       // what the sidecar lists
 };
