@@ -5,6 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/collatz_wielandt.hpp"
 #include "core/constants.hpp"
 #include "solid/spring_dashpot.hpp"
 #include "solid/spring_forces.hpp"
@@ -307,37 +308,6 @@ void ContactSubcycler::contact_forces(const ContactModel& model, double time, do
   forced_.erase(std::unique(forced_.begin(), forced_.end()), forced_.end());
 }
 
-// Collatz-Wielandt bound of the spectral radius of the symmetric non-negative matrix B with the
-// given diagonal and, for each listed pair p = (a, b), the entry w_p / sqrt(m_a m_b), w_p the pair's
-// stiffness (damping: its dashpot): rho(B) <= max_i (B x)_i / x_i for every x > 0, B reducible or
-// not; x after a few power iterations from 1 (iteration 0 is Gershgorin's row sum). x and y are
-// scratch of the candidates' size.
-double ContactSubcycler::perron_bound(const std::vector<double>& diagonal, bool damping, std::vector<double>& x,
-                                      std::vector<double>& y) const {
-  constexpr int iterations = 8;
-  const double* const inverse_mass = points_.inverse_mass.data();
-  const std::size_t n = diagonal.size();
-  x.assign(n, 1.0);
-  double bound = HUGE_VAL;
-  for (int it = 0; it <= iterations; ++it) {
-    for (std::size_t i = 0; i < n; ++i) y[i] = diagonal[i] * x[i];
-    for (const Pair& pair : pairs_) {
-      const double w = (damping ? pair.damping : pair.stiffness) * std::sqrt(inverse_mass[pair.a] * inverse_mass[pair.b]);
-      y[pair.a] += w * x[pair.b];
-      y[pair.b] += w * x[pair.a];
-    }
-    double ratio = 0.0, largest = 0.0;
-    for (std::size_t i = 0; i < n; ++i) {
-      ratio = std::max(ratio, y[i] / x[i]);
-      largest = std::max(largest, y[i]);
-    }
-    bound = std::min(bound, ratio);
-    if (!(largest > 0.0)) return 0.0;
-    for (std::size_t i = 0; i < n; ++i) x[i] = y[i] / largest;  // stays > 0: every diagonal is > 0
-  }
-  return bound;
-}
-
 double ContactSubcycler::listed_pairs_step(const ContactModel& model) {
   // The contact modes of the listed pairs solve M x'' + C x' + K x = 0. Their rates |lambda| are
   // at most sqrt(omega_K^2) + omega_C with omega_K^2 and omega_C the largest eigenvalues of
@@ -347,7 +317,7 @@ double ContactSubcycler::listed_pairs_step(const ContactModel& model) {
   // pair's k n n^T has norm k), off-diagonal k / sqrt(m_i m_j), and the same with the pairs'
   // dashpots c (unshared: an upper bound while S >= 1, i.e. unless two pairs of one body pair have
   // normals more than 90 degrees apart, which convex rims do not form; the dashpot bound of
-  // contact_substep assumes the same); perron_bound bounds that radius from above.
+  // contact_substep assumes the same); collatz_wielandt_bound bounds that radius from above.
   // One undamped pair of masses m_a, m_b gives k / m_eff exactly: A8's t_c.
   if (points_.empty()) return HUGE_VAL;
   stiffness_sum_.assign(points_.size(), 0.0);
@@ -366,10 +336,23 @@ double ContactSubcycler::listed_pairs_step(const ContactModel& model) {
     damping_sum_[wall.a] += wall.damping * inverse_mass[wall.a];
     damped = damped || wall.damping > 0.0;
   }
-  perron_x_.resize(points_.size());
-  perron_y_.resize(points_.size());
-  const double omega_k = std::sqrt(perron_bound(stiffness_sum_, false, perron_x_, perron_y_));
-  const double omega_c = damped ? perron_bound(damping_sum_, true, perron_x_, perron_y_) : 0.0;
+  // The block-norm matrix with the given diagonal and, for each listed pair p = (a, b), the entry
+  // w_p / sqrt(m_a m_b), w_p the pair's stiffness (damping: its dashpot); x stays > 0 (every
+  // diagonal is > 0), so no floor.
+  constexpr int iterations = 8;
+  const auto radius = [&](const std::vector<double>& diagonal, bool damping) {
+    return collatz_wielandt_bound(points_.size(), iterations, /*floor=*/0.0, perron_x_, perron_y_,
+                                  [&](const std::vector<double>& x, std::vector<double>& y) {
+      for (std::size_t i = 0; i < x.size(); ++i) y[i] = diagonal[i] * x[i];
+      for (const Pair& pair : pairs_) {
+        const double w = (damping ? pair.damping : pair.stiffness) * std::sqrt(inverse_mass[pair.a] * inverse_mass[pair.b]);
+        y[pair.a] += w * x[pair.b];
+        y[pair.b] += w * x[pair.a];
+      }
+    });
+  };
+  const double omega_k = std::sqrt(radius(stiffness_sum_, false));
+  const double omega_c = damped ? radius(damping_sum_, true) : 0.0;
   // t_c = pi / |lambda|, steps_per_contact steps in it.
   const double rate = omega_k + omega_c;
   return rate > 0.0 ? pi / (model.steps_per_contact * rate) : HUGE_VAL;

@@ -156,8 +156,6 @@ class ContactSubcycler {
   // Inner step that gives steps_per_contact steps per contact duration of the fastest mode the
   // listed pairs and walls can form (InnerStepBound::listed_pairs) [time]; infinity with none.
   double listed_pairs_step(const ContactModel& model);
-  double perron_bound(const std::vector<double>& diagonal, bool damping, std::vector<double>& x,
-                      std::vector<double>& y) const;
   // Largest speed and slow acceleration of the members' points (off_list_only: of the points off the list).
   std::array<double, 2> fastest(const BodyMask& members, const std::vector<MassSpringBody>& bodies,
                                 bool off_list_only) const;
@@ -165,7 +163,7 @@ class ContactSubcycler {
   Candidates points_;
   std::vector<double> moved_;     // per candidate: squared displacement since the list was built
   std::vector<double> stiffness_sum_, damping_sum_;  // per candidate: diagonal k / m (c / m) of its pairs and walls
-  std::vector<double> perron_x_, perron_y_;          // power-iteration scratch of perron_bound
+  std::vector<double> perron_x_, perron_y_;          // power-iteration scratch of listed_pairs_step
   std::vector<int> forced_;       // candidates with a contact force in the current inner step
   std::vector<int> touched_;      // shares with an active pair in the current inner step
   std::vector<Pair> pairs_;

@@ -7,6 +7,8 @@
 // within 4-6 % of omega_max. Iteration 0 (x = 1) is the plain Gershgorin bound.
 #include "solid/stable_substep.hpp"
 
+#include "core/collatz_wielandt.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -26,35 +28,24 @@ double perron_bound(const MassSpringBody& body, const std::vector<Block>& diag,
   constexpr int n_iterations = 20;    // converged to 1e-4 for the wheel by iteration 10
   constexpr double positive_floor = 1e-12;  // keeps x > 0 so every iterate gives a valid bound
   const int n = body.n_points();
-  x.assign(2*n, 1.0);
-  y.assign(2*n, 0.0);
-  double best = std::numeric_limits<double>::infinity();
-  for (int iteration = 0; iteration <= n_iterations; ++iteration) {
-    std::fill(y.begin(), y.end(), 0.0);
+  return collatz_wielandt_bound(2 * n, n_iterations, positive_floor, x, y,
+                                [&](const std::vector<double>& v, std::vector<double>& w) {
+    std::fill(w.begin(), w.end(), 0.0);
     for (int p = 0; p < n; ++p) {
       const Block a = absolute(diag[p]);
-      y[2*p] += a[0]*x[2*p] + a[1]*x[2*p + 1];
-      y[2*p + 1] += a[2]*x[2*p] + a[3]*x[2*p + 1];
+      w[2*p] += a[0]*v[2*p] + a[1]*v[2*p + 1];
+      w[2*p + 1] += a[2]*v[2*p] + a[3]*v[2*p + 1];
     }
     for (std::size_t s = 0; s < body.springs.size(); ++s) {
       const Block a = absolute(element[s]);
       const int i = body.springs[s].i, j = body.springs[s].j;
-      y[2*i] += a[0]*x[2*j] + a[1]*x[2*j + 1];
-      y[2*i + 1] += a[2]*x[2*j] + a[3]*x[2*j + 1];
-      y[2*j] += a[0]*x[2*i] + a[1]*x[2*i + 1];
-      y[2*j + 1] += a[2]*x[2*i] + a[3]*x[2*i + 1];
+      w[2*i] += a[0]*v[2*j] + a[1]*v[2*j + 1];
+      w[2*i + 1] += a[2]*v[2*j] + a[3]*v[2*j + 1];
+      w[2*j] += a[0]*v[2*i] + a[1]*v[2*i + 1];
+      w[2*j + 1] += a[2]*v[2*i] + a[3]*v[2*i + 1];
     }
-    double bound = 0.0, y_max = 0.0;
-    for (int r = 0; r < 2*n; ++r) {
-      y[r] /= body.mass[r / 2];
-      bound = std::max(bound, y[r] / x[r]);
-      y_max = std::max(y_max, y[r]);
-    }
-    best = std::min(best, bound);
-    if (y_max == 0.0) return 0.0;
-    for (int r = 0; r < 2*n; ++r) x[r] = y[r] / y_max + positive_floor;
-  }
-  return best;
+    for (int r = 0; r < 2*n; ++r) w[r] /= body.mass[r / 2];
+  });
 }
 
 }  // namespace
