@@ -28,7 +28,7 @@
 #include <vector>
 
 #include "scene/scene_reader.hpp"
-#include "sim/run.hpp"
+#include "sim/run/run.hpp"
 #include "sim/simulation.hpp"
 
 using namespace ibms;
@@ -64,9 +64,9 @@ Figures run_and_time(const std::string& scene_path, const std::vector<std::strin
   f.solid = t.seconds(Stage::bodies) - f.contacts;
   f.other = t.seconds(Stage::schedules) + t.seconds(Stage::diagnostics) + t.seconds(Stage::output);
   f.wall = summary.wall_seconds;
-  f.substeps = sim.stats.total_substeps;
-  f.body_substeps = sim.stats.total_body_substeps;
-  f.inner_steps = sim.stats.total_contact_inner_steps;
+  f.substeps = sim.stats().total_substeps;
+  f.body_substeps = sim.stats().total_body_substeps;
+  f.inner_steps = sim.stats().total_contact_inner_steps;
   return f;
 }
 

@@ -16,7 +16,7 @@
 #include "fluid/fluid_solver.hpp"
 #include "fluid/spectral_solver.hpp"
 #include "scene/scene_reader.hpp"
-#include "sim/run.hpp"
+#include "sim/run/run.hpp"
 #include "sim/simulation.hpp"
 
 using namespace ibms;

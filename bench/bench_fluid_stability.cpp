@@ -10,7 +10,7 @@
 // Each point is stepped with advance_one_step and the solver's blow-up check (check_for_blow_up) as
 // run_simulation does, and gives two outcomes (the check only reads the state, so one run serves both):
 //   default_guard  the shipped run.max_cfl (RunSpec default), the fluid guard (energy budget and
-//                  speed bound, sim/fluid_guard.hpp) and the non-finite check;
+//                  speed bound, sim/checks/fluid_guard.hpp) and the non-finite check;
 //   no_cfl_guard   only the non-finite check (the run goes on after a guard fired).
 // Outcome "stable": finite to the end, no velocity component above 2 U, and the kinetic energy
 // E = 0.5 sum |u|^2 dx dy never above its bound: cavity 0.5 U^2 L^2 (the whole box moving at the lid
@@ -41,9 +41,11 @@
 #include "core/errors.hpp"
 #include "fluid/time_scheme_stability.hpp"
 #include "scene/scene_reader.hpp"
-#include "sim/diagnostics.hpp"
-#include "sim/fluid_guard.hpp"
+#include "sim/checks/blow_up.hpp"
+#include "sim/time_step_limits.hpp"
+#include "sim/checks/fluid_guard.hpp"
 #include "sim/simulation.hpp"
+#include "sim/time_step.hpp"
 
 #include "bench_paths.hpp"
 
@@ -73,7 +75,7 @@ struct Outcome {
   // run.max_cfl would stop), and the first step above the energy or speed bound; -1: never.
   long first_above_cfl_1 = -1, first_above_cfl_2 = -1, first_above_bound = -1;
   double mean_dt = 0.0;            // end time reached / steps (the adaptive step varies)
-  // The fluid guard's figures over the run (sim/fluid_guard.hpp): the largest max |u| / V_f and
+  // The fluid guard's figures over the run (sim/checks/fluid_guard.hpp): the largest max |u| / V_f and
   // E / budget (the guard stops at speed_factor and 1).
   double max_speed_over_scale = 0.0, max_energy_over_budget = 0.0;
 };
@@ -123,8 +125,8 @@ Outcome run_point(const MapCase& c, const Scene& scene, bool adaptive) {
         break;
       }
     }
-    out.max_speed_over_scale = std::max(out.max_speed_over_scale, scan.max_speed / sim.instability.fluid_guard.speed_scale);
-    out.max_energy_over_budget = std::max(out.max_energy_over_budget, scan.kinetic_energy / sim.instability.fluid_guard.energy_budget());
+    out.max_speed_over_scale = std::max(out.max_speed_over_scale, scan.max_speed / sim.instability().fluid_guard.speed_scale);
+    out.max_energy_over_budget = std::max(out.max_energy_over_budget, scan.kinetic_energy / sim.instability().fluid_guard.energy_budget());
     const double cfl = dt * scan.max_rate;
     out.max_cfl_measured = std::max(out.max_cfl_measured, cfl);
     if (cfl > 1.0 && out.first_above_cfl_1 < 0) out.first_above_cfl_1 = step;

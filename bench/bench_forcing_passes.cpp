@@ -22,7 +22,8 @@
 
 #include "bench/bench_paths.hpp"
 #include "scene/scene_reader.hpp"
-#include "sim/diagnostics.hpp"
+#include "sim/time_step.hpp"
+#include "sim/time_step_limits.hpp"
 #include "verification/bodies/circular_couette.hpp"
 
 using namespace ibms;

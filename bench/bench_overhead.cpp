@@ -16,6 +16,7 @@
 
 #include "scene/scene_reader.hpp"
 #include "sim/simulation.hpp"
+#include "sim/time_step.hpp"
 
 #include "bench_paths.hpp"
 
@@ -53,8 +54,8 @@ void write_stages(std::ofstream& csv, const std::string& scene, Simulation& sim,
     std::printf("  %-12s %14.3e %10ld\n", std::string(stage_names[s]).c_str(), per_step, sim.timers().calls(stage));
     csv << scene << "," << stage_names[s] << "," << per_step << "," << sim.timers().calls(stage) << "\n";
   }
-  std::printf("  CDS pair checks over the run: %ld\n", sim.stats.total_pair_checks);
-  csv << scene << ",pair_checks_total,," << sim.stats.total_pair_checks << "\n";
+  std::printf("  CDS pair checks over the run: %ld\n", sim.stats().total_pair_checks);
+  csv << scene << ",pair_checks_total,," << sim.stats().total_pair_checks << "\n";
 }
 
 }  // namespace

@@ -1,6 +1,6 @@
 // Stability maps: time step against spring stiffness and against DEM stiffness,
 // with the solid sub-stepped automatically (docs/method.md §5.3: n_sub = ceil(dt / dt_s)) or with a
-// fixed single solid step per fluid step (Simulation::solid_work.fixed_substeps = 1).
+// fixed single solid step per fluid step (Simulation::set_fixed_substeps(1)).
 //   settling_spring   one disk settling in a closed 2 x 6 cm channel (the settling-disk scene on a
 //                     40 x 120 grid, 16 rim points) to t = 0.1 s; dt x spring stiffness k_s;
 //   collision_dem     two disks (D = 0.25 cm, rho_s = 2, k_s = 1e2, rim gap 0.05 cm) meeting head-on at
@@ -36,8 +36,11 @@
 
 #include "core/errors.hpp"
 #include "scene/scene_reader.hpp"
-#include "sim/diagnostics.hpp"
-#include "sim/run.hpp"
+#include "sim/time_step.hpp"
+#include "sim/checks/blow_up.hpp"
+#include "sim/checks/fluid_guard.hpp"
+#include "sim/time_step_limits.hpp"
+#include "sim/run/run.hpp"
 #include "solid/mass_spring_body.hpp"
 #include "metrics/body_series.hpp"
 #include "metrics/csv_reader.hpp"
@@ -59,22 +62,23 @@ struct Outcome {
 // Steps `scene` with fixed dt to its end_time, checking for blow-up after each step as run_simulation does.
 Outcome run_case(const Scene& scene, bool fixed_steps, bool check_speed) {
   Simulation sim(scene);
-  sim.solid_work.fixed_substeps = fixed_steps ? 1 : 0;
+  sim.set_fixed_substeps(fixed_steps ? 1 : 0);
+  start_fluid_guard(sim);  // as run_simulation does before the first step
   Outcome out;
   std::vector<double> area0;
   for (const MassSpringBody& b : sim.bodies()) area0.push_back(polygon_area(b));
-  const double speed0 = max_body_point_speed(sim);
+  const double speed0 = max_point_speed(sim.bodies());
   const double dt = scene.run.time_step;
   const long n_steps = std::lround(scene.run.end_time / dt);
   try {
     for (long s = 0; s < n_steps; ++s) {
       advance_one_step(sim, dt);
       check_for_blow_up(sim, dt, scan_velocity(sim.grid(), sim.fluid()));
-      out.max_substeps = std::max(out.max_substeps, sim.stats.last_n_substeps);
-      out.max_active_pairs = std::max(out.max_active_pairs, sim.stats.last_contact_stats.n_active_pairs);
+      out.max_substeps = std::max(out.max_substeps, sim.stats().last_n_substeps);
+      out.max_active_pairs = std::max(out.max_active_pairs, sim.stats().last_contact_stats.n_active_pairs);
       for (std::size_t b = 0; b < sim.bodies().size(); ++b)
         out.max_area_change = std::max(out.max_area_change, std::abs(polygon_area(sim.bodies()[b]) / area0[b] - 1));
-      out.max_speed_ratio = std::max(out.max_speed_ratio, max_body_point_speed(sim) / speed0);
+      out.max_speed_ratio = std::max(out.max_speed_ratio, max_point_speed(sim.bodies()) / speed0);
       // The bounds mark the run, which goes on: the solver's own check may still stop it later.
       if (out.kind == "stable" && out.max_area_change > 0.5) {
         out.kind = "unstable";
@@ -183,7 +187,7 @@ int main(int argc, char** argv) {
   if (only.empty() || std::find(only.begin(), only.end(), "demo") != only.end()) {
     Scene s = settling_scene(1e-3, 1e6);
     Simulation sim(s);
-    sim.solid_work.fixed_substeps = 1;
+    sim.set_fixed_substeps(1);
     const std::string path = out_dir + "/demo_unstable_fixed_step.h5";
     try {
       run_simulation(sim, {path, /*quiet=*/true});

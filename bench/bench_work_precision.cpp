@@ -48,9 +48,10 @@
 #include "fluid/fluid_solver.hpp"
 #include "scene/scene_reader.hpp"
 #include "scene/scene_schema.hpp"
-#include "sim/diagnostics.hpp"
+#include "sim/run/centreline_profiles.hpp"
+#include "sim/time_step_limits.hpp"
 #include "metrics/force_metrics.hpp"
-#include "sim/run.hpp"
+#include "sim/run/run.hpp"
 #include "metrics/profile.hpp"
 #include "metrics/grid_convergence.hpp"
 #include "metrics/body_series.hpp"
@@ -153,7 +154,7 @@ Point run_settling(int n_x, const std::string& work_dir) {
 }
 
 // The two immersed-boundary couplings (docs/method.md §3.5, §3.7) as scene overrides.
-struct Coupling {
+struct CouplingSettings {
   std::string name;
   std::vector<std::string> overrides;
 };
@@ -161,14 +162,14 @@ struct Coupling {
 // uhlmann: the papers' direct forcing as the 2D-1 case calibrated it (its README): 3 passes,
 // markers retracted by 0.25 h (the Couette calibration), nu dt / h^2 <= 0.2 (its slip grows with
 // that number); constrained_velocity is not read under it and is set to its default.
-const Coupling uhlmann_coupling{
+const CouplingSettings uhlmann_coupling{
     "uhlmann", {"ibm.coupling=\"uhlmann\"", "ibm.constrained_velocity=\"cells\"", "ibm.forcing_passes=3",
                 "ibm.marker_retraction=0.25", "run.max_viscous_number=0.2"}};
 // no_slip: the forces as the Lagrange multipliers of no-slip on the face velocities, as
 // validation/dfg_cylinder_2d2/scene.toml ships it: slip tolerance 1e-4, no retraction, no cap on
 // nu dt / h^2, one forcing pass for the first step's guess (the 2D-1 scene ships it with 0.25 h
 // retraction; this bench keeps one set of keys for both cases).
-const Coupling no_slip_coupling{
+const CouplingSettings no_slip_coupling{
     "no_slip", {"ibm.coupling=\"no_slip\"", "ibm.constrained_velocity=\"faces\"", "ibm.slip_tolerance=1e-4",
                 "ibm.forcing_passes=1", "ibm.marker_retraction=0", "run.max_viscous_number=0"}};
 
@@ -183,7 +184,7 @@ std::vector<std::string> dfg_grid(int n) {
 // uhlmann stops at the steady criterion 1e-3 (the papers' set-up of the case). no_slip runs to
 // t = 10 without it, as the scene ships: its marker system's slip floor (2-4e-5 U, docs/method.md
 // §3.7) keeps the steady residual above the criterion, and c_D at t = 10 is within 5.4e-5 (D/h = 10) and 3.6e-6 (D/h = 20) of its value at t = 15.
-Point run_dfg_2d1(const Coupling& coupling, int n, const std::string& work_dir) {
+Point run_dfg_2d1(const CouplingSettings& coupling, int n, const std::string& work_dir) {
   const std::string dir = source_dir + "/validation/dfg_cylinder_2d1";
   std::vector<std::string> overrides = dfg_grid(n);
   overrides.insert(overrides.end(), coupling.overrides.begin(), coupling.overrides.end());
@@ -203,7 +204,7 @@ Point run_dfg_2d1(const Coupling& coupling, int n, const std::string& work_dir) 
 
 // DFG 2D-2 (Re 100) at D/h = n under `coupling` to the scene's t = 12; error |max c_D over t >= 8
 // (metrics/force_metrics.hpp, as the case's check) / midpoint of Schaefer & Turek's bounds - 1|.
-Point run_dfg_2d2(const Coupling& coupling, int n, const std::string& work_dir) {
+Point run_dfg_2d2(const CouplingSettings& coupling, int n, const std::string& work_dir) {
   const std::string dir = source_dir + "/validation/dfg_cylinder_2d2";
   std::vector<std::string> overrides = dfg_grid(n);
   overrides.insert(overrides.end(), coupling.overrides.begin(), coupling.overrides.end());
@@ -454,8 +455,8 @@ int main(int argc, char** argv) {
       {"settling_disk", "|max settling speed / ibms 400x1200 reference - 1| (run to t = 0.7 s)",
        {40, 50, 60, 75}, {50, 75, 100, 150}, {}, run_settling, ""}};
   // The cylinders, D/h = 10-30 (full: 40; a D/h = 40 run of 2D-2 takes 20-45 CPU minutes).
-  for (const Coupling* coupling : {&uhlmann_coupling, &no_slip_coupling}) {
-    const Coupling& k = *coupling;
+  for (const CouplingSettings* coupling : {&uhlmann_coupling, &no_slip_coupling}) {
+    const CouplingSettings& k = *coupling;
     cases.push_back({"dfg_2d1_" + k.name, dfg_2d1_error + ", coupling " + k.name, {10, 20}, {10, 20, 30},
                      {10, 20, 30, 40}, [&k](int n, const std::string& w) { return run_dfg_2d1(k, n, w); }, "dfg_2d1"});
     cases.push_back({"dfg_2d2_" + k.name, dfg_2d2_error + ", coupling " + k.name, {10, 20}, {10, 20, 30},

@@ -9,7 +9,7 @@
 
 #include "scene/scene_reader.hpp"
 #include "scene/scene_schema.hpp"
-#include "sim/diagnostics.hpp"
+#include "sim/time_step_limits.hpp"
 #include "sim/simulation.hpp"
 #include "solid/stable_substep.hpp"
 

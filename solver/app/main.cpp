@@ -19,8 +19,8 @@
 #include "core/errors.hpp"
 #include "fluid/threads.hpp"
 #include "scene/scene_reader.hpp"
-#include "sim/run.hpp"
-#include "sim/simulation_checkpoint.hpp"
+#include "sim/run/run.hpp"
+#include "sim/run/simulation_checkpoint.hpp"
 #include "sim/simulation.hpp"
 
 
@@ -44,9 +44,9 @@ void install_stop_handlers() {
   sigaction(SIGTERM, &action, nullptr);
 }
 
-// The fluid guard's largest ratios over the run (sim/fluid_guard.hpp): how close it came to a stop.
+// The fluid guard's largest ratios over the run (sim/checks/fluid_guard.hpp): how close it came to a stop.
 void print_fluid_guard(const ibms::Simulation& sim) {
-  const ibms::FluidGuard& guard = sim.instability.fluid_guard;
+  const ibms::FluidGuard& guard = sim.instability().fluid_guard;
   std::fprintf(stderr, "ibms: fluid guard: largest speed %.3g V_f (V_f = %.4g; stops above %g V_f), largest kinetic "
                "energy %.3g of its budget (stops above 1)\n", guard.largest_speed_ratio, guard.speed_scale,
                ibms::FluidGuard::speed_factor, guard.largest_energy_ratio);

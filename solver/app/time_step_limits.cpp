@@ -8,8 +8,8 @@
 
 #include "core/constants.hpp"
 #include "fluid/time_scheme_stability.hpp"
-#include "sim/body_update.hpp"
-#include "sim/diagnostics.hpp"
+#include "sim/bodies/body_update.hpp"
+#include "sim/time_step_limits.hpp"
 #include "solid/spring_dashpot.hpp"
 #include "solid/stable_substep.hpp"
 
@@ -24,7 +24,7 @@ double grid_spacing(const Scene& scene) {
 
 std::vector<TimeStepLimit> time_step_limits(const Scene& scene, const Simulation& sim) {
   std::vector<TimeStepLimit> limits;
-  const double h = grid_spacing(scene), speed = speed_scale(sim);
+  const double h = grid_spacing(scene), speed = sim.speed_scale();
   // Advective: dt max(|u|/dx + |v|/dy) <= 1 is the run's blow-up guard (run.max_cfl); the adaptive
   // step targets run.cfl of it, docs/method.md §2.3.
   limits.push_back({"CFL (advective, |u| dt / h <= 1)", speed > 0 ? h / speed : HUGE_VAL, scene.run.cfl, false,
@@ -39,7 +39,7 @@ std::vector<TimeStepLimit> time_step_limits(const Scene& scene, const Simulation
                       sim.has_bodies() ? "not binding (Crank-Nicolson); with bodies consider run.max_viscous_number"
                                        : "not binding: Crank-Nicolson diffusion"});
   if (!sim.has_bodies()) return limits;
-  const double body_speed = max_body_point_speed(sim);
+  const double body_speed = max_point_speed(sim.bodies());
   limits.push_back({"marker travel (h / max|U_body|)", body_speed > 0 ? h / body_speed : HUGE_VAL,
                     max_marker_travel_cells, false,
                     body_speed > 0 ? fmt::format("fastest body point at the start {:.4g}; adaptive runs check it every step", body_speed)
@@ -107,7 +107,7 @@ std::string describe_time_step_limits(const Scene& scene, const Simulation& sim)
   // AB2 convection is stable only with enough CN diffusion: the CFL limit of a uniform flow along a
   // grid axis at the scene's cell Reynolds number (docs/fluid-stability.md). A note, not a warning:
   // the measured cavity is stable far beyond it, a periodic shear layer to 1.0-1.4 times it.
-  const double speed = speed_scale(sim);
+  const double speed = sim.speed_scale();
   if (speed > 0 && scene.fluid.kinematic_viscosity > 0) {
     const double cell_reynolds = speed * h / scene.fluid.kinematic_viscosity;
     const ConvectionScheme convection = sim.fluid_solver().schemes().convection;
@@ -137,7 +137,7 @@ std::string describe_time_step_limits(const Scene& scene, const Simulation& sim)
       SolidStepInputs in;
       in.dt = dt;
       in.max_substep = groups.group_of.empty() ? sim.substep_planner().global_contact_limit(dt) : HUGE_VAL;
-      in.fixed_substeps = sim.solid_work.fixed_substeps;
+      in.fixed_substeps = sim.fixed_substeps();
       const SolidStepCount count = count_substeps(in, groups, sim.bodies());
       const std::size_t n_groups = groups.group_of.empty() ? 1 : groups.max_substep.size();
       text += fmt::format("sub-steps per fluid step at dt = {:.4g}: {} at most, {} summed over the {} bodies "

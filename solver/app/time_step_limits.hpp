@@ -24,7 +24,7 @@ struct TimeStepLimit {
 // The limits at the initial state of `sim` (built from `scene`).
 std::vector<TimeStepLimit> time_step_limits(const Scene& scene, const Simulation& sim);
 
-// The text block of `ibms info`: limits table, time step (the run's first, sim/diagnostics.hpp
+// The text block of `ibms info`: limits table, time step (the run's first, sim/time_step_limits.hpp
 // planned_time_step), sub-steps and warnings.
 std::string describe_time_step_limits(const Scene& scene, const Simulation& sim);
 

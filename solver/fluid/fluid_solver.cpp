@@ -299,7 +299,8 @@ void FluidSolver::predict_momentum(FluidState& state, double dt, const CellField
 
 ProjectionStats FluidSolver::project_smac(FluidState& state, double dt) {
   const ProjectionStats stats = project(state, dt, nullptr);
-  end_step(state, dt);
+  end_step(state);
+  state.tick(dt);
   return stats;
 }
 
@@ -461,14 +462,11 @@ double FluidSolver::project_increment(FluidState& state, double dt, CellField& i
   return max_change;
 }
 
-void FluidSolver::end_step(FluidState& state, double dt) {
-  // N^n becomes N^{n-1} of the next step; the clock moves to t^{n+1}.
+void FluidSolver::end_step(FluidState& state) {
+  // N^n becomes N^{n-1} of the next step.
   std::swap(state.convection_x_prev, conv_x_);
   std::swap(state.convection_y_prev, conv_y_);
   state.has_convection_prev = true;
-  state.time_step_prev = dt;
-  state.time += dt;
-  state.step += 1;
 }
 
 double FluidSolver::kinetic_energy(const FluidState& state) const {

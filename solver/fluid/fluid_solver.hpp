@@ -34,6 +34,13 @@ struct FluidState {
   CellField convection_x_prev, convection_y_prev;  // N^{n-1} for AB2 [length/time^2]
   bool has_convection_prev = false;      // false before the first step (Euler start)
   double time_step_prev = 0.0;           // dt^{n-1}, for variable-step AB2
+
+  // The clock: t^{n+1} = t^n + dt, step n + 1, and dt becomes dt^{n-1} of the next step.
+  void tick(double dt) {
+    time_step_prev = dt;
+    time += dt;
+    step += 1;
+  }
 };
 
 struct ProjectionStats {
@@ -150,9 +157,9 @@ class FluidSolver {
   // by P_0 g). Returns max |P_0 g| over the cells and both components.
   double project_increment(FluidState& state, double dt, CellField& increment_x, CellField& increment_y,
                            const FaceField* face_increment_x = nullptr, const FaceField* face_increment_y = nullptr);
-  // Closes the step: N^n becomes N^{n-1} (AB2 history), t^n + dt, step + 1.
-  void end_step(FluidState& state, double dt);
-  // project then end_step: the step of a scene without immersed boundary.
+  // Closes the step's convection: N^n becomes N^{n-1} (AB2 history). The clock is FluidState::tick.
+  void end_step(FluidState& state);
+  // project, end_step and tick: the step of a scene without immersed boundary.
   ProjectionStats project_smac(FluidState& state, double dt);
 
   // Kinetic energy per unit density and depth, 0.5 sum |u|^2 dx dy [length^4/time^2].

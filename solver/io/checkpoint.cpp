@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/errors.hpp"
@@ -88,6 +89,53 @@ Checkpoint read_checkpoint(const std::string& h5_path) {
              h5_path, "cannot list /checkpoint datasets");
   for (const std::string& name : array_names) checkpoint.arrays[name] = read_array(group.get(), name, h5_path);
   return checkpoint;
+}
+
+// CheckpointReader (checkpoint.hpp).
+void CheckpointReader::fail(const std::string& name, const std::string& reason) const {
+  throw InputError(fmt::format("{}: /checkpoint/{}: {}", path_, name, reason));
+}
+double CheckpointReader::scalar(const std::string& name) const {
+  const auto found = cp_.scalars.find(name);
+  if (found == cp_.scalars.end()) fail(name, "missing");
+  return found->second;
+}
+double CheckpointReader::non_negative(const std::string& name) const {
+  const double value = scalar(name);
+  if (!(std::isfinite(value) && value >= 0.0)) fail(name, fmt::format("must be finite and >= 0, got {}", value));
+  return value;
+}
+long CheckpointReader::count(const std::string& name) const {
+  const double value = scalar(name);
+  if (!(value >= 0.0 && value <= 9007199254740992.0 && value == std::floor(value)))
+    fail(name, fmt::format("must be a whole number >= 0, got {}", value));
+  return static_cast<long>(value);
+}
+const std::vector<double>& CheckpointReader::array(const std::string& name, std::size_t expected_size) const {
+  const auto found = cp_.arrays.find(name);
+  if (found == cp_.arrays.end()) fail(name, "missing");
+  if (found->second.size() != expected_size)
+    fail(name, fmt::format("has {} values, this scene needs {}", found->second.size(), expected_size));
+  return found->second;
+}
+const std::vector<double>* CheckpointReader::find(const std::string& name) const {
+  const auto found = cp_.arrays.find(name);
+  return found == cp_.arrays.end() ? nullptr : &found->second;
+}
+void CheckpointReader::into(const std::string& name, CellField& field) const {
+  const std::vector<double>& values = array(name, static_cast<std::size_t>(field.stride()) * (field.ny() + 2));
+  std::copy(values.begin(), values.end(), field.data());
+}
+void CheckpointReader::into(const std::string& name, FaceField& field) const {
+  const std::vector<double>& values = array(name, field.values().size());
+  std::copy(values.begin(), values.end(), field.values().begin());
+}
+void CheckpointReader::into(const std::string& name, std::vector<Vec2>& points) const {
+  const std::vector<double>& values = array(name, 2 * points.size());
+  for (std::size_t k = 0; k < points.size(); ++k) points[k] = {values[2 * k], values[2 * k + 1]};
+}
+void CheckpointReader::into(const std::string& name, std::vector<double>& values) const {
+  values = array(name, values.size());
 }
 
 }  // namespace ibms

@@ -26,7 +26,7 @@ struct RunSpec {
   // the direct forcing's slip at the markers grows like (nu dt / h^2) h, so with dt ~ h alone
   // it stops converging (settling disk: validation/settling_disk/README.md).
   double max_viscous_number = 0.0;
-  // Solid sub-steps (sim/body_update.hpp): "per_group" (each group of bodies that may touch within
+  // Solid sub-steps (sim/bodies/body_update.hpp): "per_group" (each group of bodies that may touch within
   // the step takes its own sub-step; contact sub-steps only for a group that may touch something)
   // or "global" (every body takes the smallest sub-step of all).
   SolidSubsteps solid_substeps = SolidSubsteps::per_group;
@@ -36,7 +36,7 @@ struct RunSpec {
   OnInstability on_body_instability = OnInstability::stop;
   // A fluid whose kinetic energy exceeds its budget (what the walls, open sides and bodies can feed
   // it) or whose largest speed exceeds FluidGuard::speed_factor times the scene's speed scale
-  // (sim/fluid_guard.hpp, docs/method.md §7) stops the run ("stop") or is reported once ("warn").
+  // (sim/checks/fluid_guard.hpp, docs/method.md §7) stops the run ("stop") or is reported once ("warn").
   OnInstability on_fluid_instability = OnInstability::stop;
 };
 

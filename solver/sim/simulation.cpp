@@ -11,7 +11,6 @@
 #include "core/constants.hpp"
 #include "core/errors.hpp"
 #include "scene/scene_schema.hpp"
-#include "sim/diagnostics.hpp"
 #include "solid/spring_forces.hpp"
 
 namespace ibms {
@@ -143,12 +142,12 @@ Simulation::Simulation(const Scene& scene)
                                  scene.fluid.wall_closure == FluidSpec::WallClosure::quadratic}),
       fluid_(fluid_solver_.make_state()),
       kernel_(kernel_kind(scene.ibm.kernel)),
-      substep_planner_(scene_, bodies_, coupling_, contact_model_, contact_box_, contact_inner_loop) {
-  inner_fluid_inertia = inner_fluid_inertia_of(scene.ibm.inner_fluid_inertia);
+      inner_fluid_inertia_(inner_fluid_inertia_of(scene.ibm.inner_fluid_inertia)),
+      substep_planner_(scene_, bodies_, markers_, contact_model_, contact_box_, contact_inner_loop_) {
   fluid_solver_.initialise_faces(fluid_);  // fluid at rest: faces 0, projection is a no-op
   if (!has_bodies()) {
     set_instability_bounds();  // the driving speed: the fluid guard's speed scale
-    start_fluid_guard(*this);
+    coupling_ = make_coupling(scene_, grid_, kernel_, bodies_, markers_, rigid_);
     return;
   }
   // dV_l = h s_l (docs/method.md §3.6) and the kernel assume square cells.
@@ -160,96 +159,70 @@ Simulation::Simulation(const Scene& scene)
     const bool mass_spring = spec.kind == BodySpec::Kind::mass_spring;
     rigid_.push_back(mass_spring ? RigidBody{} : rigid_body_of(bodies_.back(), motion_of(spec)));
     if (!mass_spring) place_points(rigid_.back(), bodies_.back());
-    // docs/method.md §3.7
-    if (spec.kind == BodySpec::Kind::rigid && scene.ibm.coupling == IbmSpec::Coupling::no_slip) {
-      RigidBody& r = rigid_.back();
-      r.virtual_mass = scene.ibm.virtual_mass_coefficient * scene.fluid.density * bodies_.back().solid_area();
-      r.virtual_inertia = r.virtual_mass * spec.diameter * spec.diameter / 8.0;
-    }
     swelling_.emplace_back(swelling_law_of(spec.swelling), spec.diameter);
     const double largest = spec.swelling.enabled ? std::max(spec.diameter, spec.swelling.max_diameter) : spec.diameter;
-    coupling_.emplace_back(bodies_.back(), scene.ibm.sub_markers
-                                               ? max_sub_marker_count(largest, spec.n_surface_points, grid_.dx())
-                                               : static_cast<std::size_t>(spec.n_surface_points));
+    markers_.emplace_back(bodies_.back(), scene.ibm.sub_markers
+                                              ? max_sub_marker_count(largest, spec.n_surface_points, grid_.dx())
+                                              : static_cast<std::size_t>(spec.n_surface_points));
   }
   apply_swelling_schedules(swelling_, fluid_.time, bodies_);
   set_instability_bounds();
   for (std::size_t b = 0; b < bodies_.size(); ++b)
-    coupling_[b].slip_reference_speed =
-        scene.bodies[b].reference_speed > 0.0 ? scene.bodies[b].reference_speed : instability.driving_speed;
-  if (enforces_no_slip()) {
-    no_slip.slip_increment_x = CellField(grid_);
-    no_slip.slip_increment_y = CellField(grid_);
-    no_slip.force_cell_x = CellField(grid_);
-    no_slip.force_cell_y = CellField(grid_);
-    no_slip.force_face_x = FaceField::x_faces(grid_);
-    no_slip.force_face_y = FaceField::y_faces(grid_);
-    std::size_t unknowns = 0;
-    for (const BodyCoupling& c : coupling_) unknowns += 2 * c.marker.capacity();
-    no_slip.work.reserve(unknowns);
-    no_slip.response_systems.resize(bodies_.size());
-    for (std::size_t b = 0; b < bodies_.size(); ++b) {
-      if (bodies_[b].kind != BodyKind::mass_spring) continue;
-      coupling_[b].body_velocity_change.assign(coupling_[b].marker.size(), Vec2{0.0, 0.0});
-      coupling_[b].response_work.assign(2 * bodies_[b].n_points(), 0.0);
-    }
-  }
-  if (scene.contact.enabled()) {
-    contact_model_ = contact_model_of(scene.contact);
-    contact_box_ = WallBox{{grid_.origin_x, grid_.origin_y}, {grid_.length_x, grid_.length_y},
-                           {grid_.periodic_x, grid_.periodic_y}};
-    for (Side s : {Side::left, Side::right, Side::bottom, Side::top}) {
-      const SideKind k = boundaries().kind(grid_, s);
-      contact_box_.open[static_cast<int>(s)] = k == SideKind::inflow || k == SideKind::outflow;
-    }
-    // The contact seam of body_update.hpp: DEM forces every sub-step, stats merged per step.
-    contact_forces = [this](const std::vector<MassSpringBody>& bodies, const BodyMask& members, double /*time*/,
-                            std::vector<std::vector<Vec2>>& forces) {
-      // Runs on several threads at once (one per body group): the forces of each group are its
-      // own; the shared totals are maxima and integer sums (order-independent), updated under a lock.
-      const auto start = std::chrono::steady_clock::now();
-      const ContactStats found = add_contact_forces(contact_model_, bodies, contact_box_, forces, members);
-      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-#if defined(_OPENMP)
-#pragma omp critical(ibms_contact_stats)
-#endif
-      {
-        timers_.add(Stage::contacts, seconds, 1);
-        stats.total_pair_checks += found.n_pair_checks;
-        stats.last_contact_stats.include(found);
-      }
-    };
-    if (scene.contact.time_stepping == ContactSpec::TimeStepping::inner_loop) {
-      contact_inner_loop = [this](std::vector<MassSpringBody>& bodies, const BodyMask& members, double dt_outer,
-                                  int n_inner, const std::vector<std::vector<Vec2>>& frozen_force, bool continues,
-                                  const std::vector<double>& diameter_rate) {
-        thread_local ContactSubcycler subcycler;  // this thread's neighbour list and scratch
-        const auto start = std::chrono::steady_clock::now();
-        const ContactSubcycleResult result =
-            subcycler.advance(contact_model_, contact_box_, dt_outer, n_inner, frozen_force, members, bodies, continues,
-                              diameter_rate);
-        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-#if defined(_OPENMP)
-#pragma omp critical(ibms_contact_stats)
-#endif
-        {
-          timers_.add(Stage::contacts, seconds, 1);
-          stats.total_pair_checks += result.stats.n_pair_checks;
-          stats.total_contact_inner_steps += result.inner_steps;
-          stats.last_contact_stats.include(result.stats);
-        }
-        return result.work;
-      };
-    }
-  }
+    markers_[b].slip_reference_speed =
+        scene.bodies[b].reference_speed > 0.0 ? scene.bodies[b].reference_speed : instability_.driving_speed;
+  coupling_ = make_coupling(scene_, grid_, kernel_, bodies_, markers_, rigid_);
+  if (scene.contact.enabled()) wire_contacts();
   // Variant K: I_T at t = 0 (region X^0, velocity u^0), the first "previous" value.
-  if (inner_fluid_inertia == &kempe_inner_fluid_inertia)
-    sample_inner_fluid_momentum(grid_, fluid_, bodies_, coupling_);
-  start_fluid_guard(*this);
+  if (inner_fluid_inertia_ == &kempe_inner_fluid_inertia)
+    sample_inner_fluid_momentum(grid_, fluid_, bodies_, markers_);
+}
+
+void Simulation::record_contacts(double seconds, const ContactStats& found, long inner_steps) {
+#if defined(_OPENMP)
+#pragma omp critical(ibms_contact_stats)
+#endif
+  {
+    timers_.add(Stage::contacts, seconds, 1);
+    stats_.total_pair_checks += found.n_pair_checks;
+    stats_.total_contact_inner_steps += inner_steps;
+    stats_.last_contact_stats.include(found);
+  }
+}
+
+// The contact seams of body_update.hpp: DEM forces every sub-step (or the inner loop), their
+// figures merged per step.
+void Simulation::wire_contacts() {
+  contact_model_ = contact_model_of(scene_.contact);
+  contact_box_ = WallBox{{grid_.origin_x, grid_.origin_y}, {grid_.length_x, grid_.length_y},
+                         {grid_.periodic_x, grid_.periodic_y}};
+  for (Side s : {Side::left, Side::right, Side::bottom, Side::top}) {
+    const SideKind k = boundaries().kind(grid_, s);
+    contact_box_.open[static_cast<int>(s)] = k == SideKind::inflow || k == SideKind::outflow;
+  }
+  // Runs on several threads at once (one per body group): the forces of each group are its own;
+  // the shared totals are maxima and integer sums (order-independent), updated under a lock.
+  contact_forces_ = [this](const std::vector<MassSpringBody>& bodies, const BodyMask& members, double /*time*/,
+                           std::vector<std::vector<Vec2>>& forces) {
+    const auto start = std::chrono::steady_clock::now();
+    const ContactStats found = add_contact_forces(contact_model_, bodies, contact_box_, forces, members);
+    record_contacts(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), found, 0);
+  };
+  if (scene_.contact.time_stepping != ContactSpec::TimeStepping::inner_loop) return;
+  contact_inner_loop_ = [this](std::vector<MassSpringBody>& bodies, const BodyMask& members, double dt_outer,
+                               int n_inner, const std::vector<std::vector<Vec2>>& frozen_force, bool continues,
+                               const std::vector<double>& diameter_rate) {
+    thread_local ContactSubcycler subcycler;  // this thread's neighbour list and scratch
+    const auto start = std::chrono::steady_clock::now();
+    const ContactSubcycleResult result = subcycler.advance(contact_model_, contact_box_, dt_outer, n_inner,
+                                                           frozen_force, members, bodies, continues, diameter_rate);
+    record_contacts(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), result.stats,
+                    result.inner_steps);
+    return result.work;
+  };
 }
 
 void Simulation::set_instability_bounds() {
-  double speed = speed_scale(*this);
+  double speed = speed_scale();
   const double gravity = std::hypot(scene_.fluid.gravity[0], scene_.fluid.gravity[1]);
   const double diagonal = std::hypot(grid_.length_x, grid_.length_y);
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
@@ -267,13 +240,13 @@ void Simulation::set_instability_bounds() {
   }
   // A scene with nothing driving it still needs a non-zero scale (round-off moves the bodies):
   // crossing a thousandth of the box in the whole run.
-  instability.driving_speed = std::max(speed, 1e-3 * diagonal / scene_.run.end_time);
-  instability.body_energy_scale.clear();
+  instability_.driving_speed = std::max(speed, 1e-3 * diagonal / scene_.run.end_time);
+  instability_.body_energy_scale.clear();
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
     const BodySpec& spec = scene_.bodies[b];
     const double largest = spec.swelling.enabled ? std::max(spec.diameter, spec.swelling.max_diameter) : spec.diameter;
     const double mass = bodies_[b].density * pi * largest * largest / 4.0;
-    instability.body_energy_scale.push_back(0.5 * mass * instability.driving_speed * instability.driving_speed +
+    instability_.body_energy_scale.push_back(0.5 * mass * instability_.driving_speed * instability_.driving_speed +
                                  spring_energy(bodies_[b], bodies_[b].length_scale()));
   }
 }
@@ -288,7 +261,6 @@ std::vector<std::string> Simulation::stage_names() const {
   if (has_bodies()) stages.push_back("schedules (wall velocities, swelling)");
   else stages.push_back("schedules (wall velocities)");
   const char* convection = convection_name(fluid_solver_.schemes().convection);
-  const std::string kernel(scene_schema::name_of(scene_.ibm.kernel));
   stages.push_back(std::string("predictor (AB2 ") + convection +
                    " convection, Crank-Nicolson diffusion by DST Helmholtz" +
                    (scene_.fluid.wall_closure == FluidSpec::WallClosure::quadratic
@@ -298,31 +270,17 @@ std::vector<std::string> Simulation::stage_names() const {
                               ", above it 2 sweeps from u^n up to 4/3, " +
                               std::to_string(FluidSolver::wall_closure_sweeps) + " beyond)"
                         : ")"));
-  if (has_bodies() && enforces_no_slip())
-    stages.push_back("immersed-boundary forcing (" + kernel +
-                     ", no_slip coupling: the previous step's forces inside the Crank-Nicolson solve; first step " +
-                     std::to_string(scene_.ibm.forcing_passes) + " pass(es); target = marker velocity minus swelling part)");
-  else if (has_bodies())
-    stages.push_back("immersed-boundary forcing (" + kernel + ", " + std::to_string(scene_.ibm.forcing_passes) +
-                     " pass(es) on the " +
-                     (forces_explicit_estimate() ? "explicit estimate, force inside the Crank-Nicolson solve"
-                                                 : "Crank-Nicolson prediction") +
-                     "; target = marker velocity minus swelling part)");
+  if (const std::string forcing = coupling_->forcing_stage(); !forcing.empty()) stages.push_back(forcing);
   stages.push_back("projection (momentum interpolation, DCT/FFT Poisson)");
-  const bool has_mass_spring = scene_.has_kind(BodySpec::Kind::mass_spring);
-  if (has_bodies() && enforces_no_slip())
-    stages.push_back("no-slip corrections (force corrections projected until the slip at t^{n+1} <= " +
-                     fmt::format("{:g}", scene_.ibm.slip_tolerance) + " U_ref" +
-                     (has_mass_spring ? "; mass-spring rims: target at t^{n+1}, their linearised response "
-                                        "in the marker system)"
-                                      : ")"));
+  if (const std::string corrections = coupling_->correction_stage(); !corrections.empty())
+    stages.push_back(corrections);
   if (has_bodies()) {
     stages.push_back("fluid reaction on the rim points");
     stages.push_back(scene_.ibm.inner_fluid_inertia == IbmSpec::InnerFluidInertia::kempe
                          ? "inner-fluid inertia (variant K: exact triangle-cell overlaps, Reynolds-transport form)"
                          : "inner-fluid inertia off (variant A)");
     std::string kinds;
-    if (has_mass_spring)
+    if (scene_.has_kind(BodySpec::Kind::mass_spring))
       kinds += "mass-spring: symplectic Euler sub-steps, or implicit Euler for stiff springs (springs, buoyant gravity, "
                "swelling); ";
     if (scene_.has_kind(BodySpec::Kind::rigid)) kinds += "rigid: Newton-Euler (force, torque, buoyant gravity); ";
@@ -342,9 +300,11 @@ std::vector<std::string> Simulation::stage_names() const {
                                  ", walls; groups of explicit mass-spring bodies: inner loop over the points near a "
                                  "contact at " +
                                  (scene_.contact.inner_step == ContactSpec::InnerStep::listed_pairs
-                                      ? std::string("t_c / 20 of the fastest mode its listed CDS pairs can form")
+                                      ? fmt::format("t_c / {:g} of the fastest mode its listed CDS pairs can form",
+                                                    contact_model_.steps_per_contact)
                                       : std::string("the group's contact sub-step")) +
-                                 ", springs and fluid held over outer steps of 1/16 of the springs' sub-step)"
+                                 fmt::format(", springs and fluid held over outer steps of 1/{:g} of the springs' "
+                                             "sub-step)", 1.0 / inner_loop_outer_fraction)
                            : "  contacts (DEM spring-dashpots on CDS, " + law + ", every sub-step; walls)");
     if (has_pair_search()) stages.push_back("  pair search (CDS: body-box broad phase, cell list in periodic boxes; every sub-step)");
   }

@@ -1,6 +1,7 @@
 // Wheel construction, mass lumping and rim geometry, docs/method.md §1.2, §1.3, §1.5.
 #include "solid/mass_spring_body.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -141,6 +142,13 @@ std::array<double, 2> centre_of_mass(const MassSpringBody& body) {
     my += body.mass[p] * body.position[p][1];
   }
   return {mx / m_sum, my / m_sum};
+}
+
+double max_point_speed(const std::vector<MassSpringBody>& bodies) {
+  double speed = 0.0;
+  for (const MassSpringBody& body : bodies)
+    for (const auto& u : body.velocity) speed = std::max(speed, std::hypot(u[0], u[1]));
+  return speed;
 }
 
 double kinetic_energy(const MassSpringBody& body) {

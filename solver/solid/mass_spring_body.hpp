@@ -23,7 +23,7 @@ struct Spring {
 // bodies carry no springs; a prescribed body is infinitely heavy for contacts.
 enum class BodyKind { mass_spring, rigid, prescribed };
 
-// How a mass_spring body's springs are integrated (scene key spring_integrator; sim/body_update.hpp).
+// How a mass_spring body's springs are integrated (scene key spring_integrator; sim/bodies/body_update.hpp).
 enum class SpringIntegrator { automatic, explicit_euler, implicit_euler };
 
 // How the body's mass is shared among its points (docs/method.md §1.3): equal, M = rho_s V / (N_l + 1),
@@ -97,5 +97,7 @@ double polygon_area(const MassSpringBody& body);
 std::array<double, 2> centroid(const MassSpringBody& body);
 std::array<double, 2> centre_of_mass(const MassSpringBody& body);
 double kinetic_energy(const MassSpringBody& body);  // sum M_i |U_i|^2 / 2 [energy/length]
+// Largest speed |U_i| of any point of these bodies [length/time] (0 without bodies).
+double max_point_speed(const std::vector<MassSpringBody>& bodies);
 
 }  // namespace ibms

@@ -2,7 +2,7 @@
 # Claims: (1) `ibms run` on bad input exits with code 2, prints exactly one line naming the scene
 # file and the key, and creates no output file; (2) a run that blows up exits with code 3, the
 # message names step, time and place, and the HDF5 output written so far is readable, also when the
-# fluid guard stops it (sim/fluid_guard.hpp); (3) a failed
+# fluid guard stops it (sim/checks/fluid_guard.hpp); (3) a failed
 # write of the output exits with code 5 and the system's reason, whether it fails at a flush or
 # inside an HDF5 dataset write. Every run passes its thread count (--threads 1).
 set -u

@@ -8,6 +8,7 @@
 #include "ibm/ib_operators.hpp"
 #include "scene/scene.hpp"
 #include "sim/simulation.hpp"
+#include "sim/time_step.hpp"
 
 namespace ibms::test {
 
@@ -48,7 +49,7 @@ inline void run_to(Simulation& sim, double end_time, double max_dt) {
 // Largest |U_target - J u| over the markers of body b with the current (projected) velocity:
 // the slip the no-slip condition keeps after the step [length/time].
 inline double rim_slip(Simulation& sim, std::size_t b) {
-  const BodyCoupling& c = sim.coupling()[b];
+  const BodyCoupling& c = sim.markers()[b];
   std::vector<Vec2> interpolated(c.marker.size());
   std::vector<Vec2> marker(c.marker.size()), target(c.marker.size());
   const MassSpringBody& body = sim.bodies()[b];

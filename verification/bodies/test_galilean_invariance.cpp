@@ -37,7 +37,7 @@ double mean_drag(int n, bool moving_body) {
     for (int j = 0; j < n; ++j)
       for (int i = 0; i < n; ++i) sim.fluid().velocity_x(i, j) = -speed;
     sim.fluid_solver().initialise_faces(sim.fluid());
-    sim.inner_fluid_inertia(sim.grid(), 1.0, sim.fluid(), sim.bodies(), 1.0, sim.coupling());  // I^0 of the stream
+    sim.inner_fluid_inertia()(sim.grid(), 1.0, sim.fluid(), sim.bodies(), 1.0, sim.markers());  // I^0 of the stream
   }
   // The viscous number nu dt / h^2 = 0.125 on every grid (the forcing's slip scales with it).
   const double dt = std::min(0.25 * h / speed, 0.125 * h * h / viscosity);
@@ -47,7 +47,7 @@ double mean_drag(int n, bool moving_body) {
   const double step = t_end / n_steps;
   for (int k = 0; k < n_steps; ++k) {
     advance_one_step(sim, step);
-    if (sim.fluid().time > t_start + 1e-12) integral += -sim.coupling()[0].hydrodynamic_force[0] * step;
+    if (sim.fluid().time > t_start + 1e-12) integral += -sim.markers()[0].hydrodynamic_force[0] * step;
   }
   return integral / (t_end - t_start);
 }

@@ -60,7 +60,7 @@ SpinUp spin_up(int n) {
       sim.fluid().velocity_y(i, j) = inside ? omega * rx : 0.0;
     }
   sim.fluid_solver().initialise_faces(sim.fluid());
-  sim.inner_fluid_inertia(sim.grid(), 1.0, sim.fluid(), sim.bodies(), 1.0, sim.coupling());  // I^0
+  sim.inner_fluid_inertia()(sim.grid(), 1.0, sim.fluid(), sim.bodies(), 1.0, sim.markers());  // I^0
   // Spin-up of the gap (0.3 wide) decays like exp(-nu pi^2 t / 0.3^2): t = 3 leaves e^-16.
   test::run_to(sim, 3.0, std::min(0.5 * h / (omega * 0.4), 0.5 * h * h / nu));
   const RigidState& s = sim.rigid()[1].state;

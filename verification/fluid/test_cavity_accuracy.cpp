@@ -20,8 +20,10 @@
 
 #include "scene/scene_reader.hpp"
 #include "metrics/profile.hpp"
-#include "sim/diagnostics.hpp"
+#include "sim/run/centreline_profiles.hpp"
+#include "sim/time_step_limits.hpp"
 #include "sim/simulation.hpp"
+#include "sim/time_step.hpp"
 
 using namespace ibms;
 
@@ -42,7 +44,7 @@ Extrema botella_peyret_extrema(const std::vector<std::string>& options) {
     const double dt = next_time_step(sim, scan);
     advance_one_step(sim, dt);
     scan = scan_velocity(sim.grid(), sim.fluid());
-    const ProjectionStats& ps = sim.stats.last_projection;
+    const ProjectionStats& ps = sim.stats().last_projection;
     if (ps.max_velocity > 0 && ps.max_velocity_change / (dt * ps.max_velocity) < tolerance) break;
   }
   const CentrelineProfiles p = centreline_profiles(sim);

@@ -1,4 +1,4 @@
-// Claims of the run's control-volume force (solver/sim/control_volume_monitor.hpp), label unit:
+// Claims of the run's control-volume force (solver/sim/checks/control_volume_monitor.hpp), label unit:
 //  - for a body that accelerates (a prescribed disk on an ellipse in fluid at rest, its rectangle
 //    moving with it), the balance less the body's volume term rho d(A V)/dt returns the forcing's
 //    reaction (body_NNN/force_x, force_y with inner_fluid_inertia = "none") at every step;
@@ -12,8 +12,9 @@
 
 #include "fluid/threads.hpp"
 #include "scene/scene_reader.hpp"
-#include "sim/control_volume_monitor.hpp"
+#include "sim/checks/control_volume_monitor.hpp"
 #include "sim/simulation.hpp"
+#include "sim/time_step.hpp"
 
 using namespace ibms;
 
@@ -38,7 +39,7 @@ Differences run(const std::string& toml, int steps, double dt) {
     monitor.end_step(sim, dt);
     const Vec2 av_after = body_volume_momentum(sim, 0);
     monitor.begin_step(sim);
-    const Vec2 ib = sim.coupling()[0].hydrodynamic_force, cv = monitor.body(0).force;
+    const Vec2 ib = sim.markers()[0].hydrodynamic_force, cv = monitor.body(0).force;
     const double dvx = cv[0] - ib[0], dvy = cv[1] - ib[1];
     const double wx = dvx - sim.fluid_density() * (av_after[0] - av_before[0]) / dt;
     const double wy = dvy - sim.fluid_density() * (av_after[1] - av_before[1]) / dt;

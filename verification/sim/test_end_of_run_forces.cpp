@@ -20,8 +20,9 @@
 
 #include "fluid/threads.hpp"
 #include "scene/scene_reader.hpp"
-#include "sim/diagnostics.hpp"
+#include "sim/time_step_limits.hpp"
 #include "sim/simulation.hpp"
+#include "sim/time_step.hpp"
 
 namespace {
 
@@ -47,8 +48,8 @@ Record run_to(const std::string& coupling, double end_time) {
     scan = ibms::scan_velocity(sim.grid(), sim.fluid());
     r.time.push_back(sim.fluid().time);
     r.dt.push_back(dt);
-    r.drag.push_back(sim.coupling()[0].hydrodynamic_force[0]);
-    r.lift.push_back(sim.coupling()[0].hydrodynamic_force[1]);
+    r.drag.push_back(sim.markers()[0].hydrodynamic_force[0]);
+    r.lift.push_back(sim.markers()[0].hydrodynamic_force[1]);
   }
   return r;
 }

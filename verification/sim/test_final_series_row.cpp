@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "sim/run.hpp"
+#include "sim/run/run.hpp"
 #include "sim_scenes.hpp"
 
 using namespace ibms;

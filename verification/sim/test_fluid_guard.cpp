@@ -1,4 +1,4 @@
-// The fluid guard (sim/fluid_guard.hpp, docs/method.md §7): a slowly growing instability under the
+// The fluid guard (sim/checks/fluid_guard.hpp, docs/method.md §7): a slowly growing instability under the
 // adaptive step, which the CFL guard cannot see, stops with the blow-up error naming step, time and
 // quantity; a field that gains energy nothing feeds stops at the energy budget, or is reported once
 // with run.on_fluid_instability = "warn"; stable runs are not stopped. The flow is the double shear
@@ -15,10 +15,13 @@
 #include "core/errors.hpp"
 #include "io/checkpoint.hpp"
 #include "scene/scene_reader.hpp"
-#include "sim/diagnostics.hpp"
-#include "sim/run.hpp"
+#include "sim/checks/blow_up.hpp"
+#include "sim/checks/fluid_guard.hpp"
+#include "sim/time_step_limits.hpp"
+#include "sim/run/run.hpp"
 #include "sim/simulation.hpp"
-#include "sim/simulation_checkpoint.hpp"
+#include "sim/time_step.hpp"
+#include "sim/run/simulation_checkpoint.hpp"
 
 using namespace ibms;
 
@@ -108,7 +111,7 @@ BOOST_AUTO_TEST_CASE(slow_adaptive_instability_stops_naming_step_time_and_speed)
   BOOST_TEST(message.find("blow-up at step ") != std::string::npos);
   BOOST_TEST(message.find("fluid speed") != std::string::npos);
   BOOST_TEST(message.find("exceeds 1.75 V_f") != std::string::npos);
-  BOOST_TEST(std::abs(sim->instability.fluid_guard.speed_scale - 1.0) < 0.01);  // max |u^0| = tanh(7.0) ~ 1, |v| <= 0.05
+  BOOST_TEST(std::abs(sim->instability().fluid_guard.speed_scale - 1.0) < 0.01);  // max |u^0| = tanh(7.0) ~ 1, |v| <= 0.05
   BOOST_TEST(sim->fluid().time < 10.0);
 }
 
@@ -118,10 +121,10 @@ BOOST_AUTO_TEST_CASE(stable_adaptive_shear_layer_is_not_stopped) {
   const std::string& message = run.message;
   const Simulation* sim = run.sim.get();
   BOOST_TEST(message.empty(), "stopped: " << message);
-  BOOST_TEST_MESSAGE("largest speed " << sim->instability.fluid_guard.largest_speed_ratio << " V_f, energy "
-                                      << sim->instability.fluid_guard.largest_energy_ratio << " of its budget");
+  BOOST_TEST_MESSAGE("largest speed " << sim->instability().fluid_guard.largest_speed_ratio << " V_f, energy "
+                                      << sim->instability().fluid_guard.largest_energy_ratio << " of its budget");
   BOOST_TEST(sim->fluid().time == 10.0, boost::test_tools::tolerance(1e-12));
-  BOOST_TEST(sim->instability.fluid_guard.largest_speed_ratio < FluidGuard::speed_factor);
+  BOOST_TEST(sim->instability().fluid_guard.largest_speed_ratio < FluidGuard::speed_factor);
 }
 
 // With nothing feeding it (periodic, no bodies: W = 0) the energy may not pass 1.02 E_0. A gain of
@@ -135,7 +138,7 @@ BOOST_AUTO_TEST_CASE(energy_gained_from_nothing_stops_at_the_budget) {
   BOOST_TEST(message.find("fluid kinetic energy") != std::string::npos);
   BOOST_TEST(message.find("exceeds its budget") != std::string::npos);
   BOOST_TEST(sim.fluid().step <= 10);
-  BOOST_TEST(sim.instability.fluid_guard.input_work == 0.0);
+  BOOST_TEST(sim.instability().fluid_guard.input_work == 0.0);
   // Without the gain the same steps stay within the budget.
   Simulation plain(shear_layer_scene(512, 0.5, 0.25 / 64, 1.0));
   set_double_shear_layer(plain);
@@ -151,7 +154,7 @@ BOOST_AUTO_TEST_CASE(warn_mode_reports_once_and_runs_on) {
   set_double_shear_layer(sim);
   start_fluid_guard(sim);
   BOOST_TEST(run_with_gain(sim, 1.002, 30).empty());
-  BOOST_TEST(sim.instability.fluid_guard.warned);
+  BOOST_TEST(sim.instability().fluid_guard.warned);
   BOOST_TEST(sim.fluid().step == 30);
 }
 
@@ -165,12 +168,12 @@ BOOST_AUTO_TEST_CASE(driven_cavity_stays_within_the_wall_work) {
   Simulation sim(scene);
   run_simulation(sim, {scene.output.file, /*quiet=*/true});
   const VelocityScan scan = scan_velocity(sim.grid(), sim.fluid());
-  BOOST_TEST_MESSAGE("E = " << scan.kinetic_energy << ", W = " << sim.instability.fluid_guard.input_work << ", largest speed "
-                            << sim.instability.fluid_guard.largest_speed_ratio << " V_f, energy "
-                            << sim.instability.fluid_guard.largest_energy_ratio << " of its budget");
-  BOOST_TEST(sim.instability.fluid_guard.speed_scale == 1.0);  // the lid
-  BOOST_TEST(sim.instability.fluid_guard.input_work > scan.kinetic_energy);  // the lid has done more work than E holds
-  BOOST_TEST(sim.instability.fluid_guard.largest_energy_ratio < 1.0);
+  BOOST_TEST_MESSAGE("E = " << scan.kinetic_energy << ", W = " << sim.instability().fluid_guard.input_work << ", largest speed "
+                            << sim.instability().fluid_guard.largest_speed_ratio << " V_f, energy "
+                            << sim.instability().fluid_guard.largest_energy_ratio << " of its budget");
+  BOOST_TEST(sim.instability().fluid_guard.speed_scale == 1.0);  // the lid
+  BOOST_TEST(sim.instability().fluid_guard.input_work > scan.kinetic_energy);  // the lid has done more work than E holds
+  BOOST_TEST(sim.instability().fluid_guard.largest_energy_ratio < 1.0);
 }
 
 // The budget is part of the checkpoint: a run restarted from it goes on with the same V_f, E_0 and
@@ -185,9 +188,9 @@ BOOST_AUTO_TEST_CASE(restart_keeps_the_budget) {
   run_simulation(sim, {file, /*quiet=*/true});
   Simulation restarted(scene);
   restore_simulation(read_checkpoint(file), file, restarted);
-  BOOST_TEST(sim.instability.fluid_guard.input_work > 0.0);
-  BOOST_TEST(restarted.instability.fluid_guard.input_work == sim.instability.fluid_guard.input_work);
-  BOOST_TEST(restarted.instability.fluid_guard.initial_energy == sim.instability.fluid_guard.initial_energy);  // 0: from rest
-  BOOST_TEST(restarted.instability.fluid_guard.speed_scale == sim.instability.fluid_guard.speed_scale);
-  BOOST_TEST(restarted.instability.fluid_guard.boundary_power == sim.instability.fluid_guard.boundary_power);
+  BOOST_TEST(sim.instability().fluid_guard.input_work > 0.0);
+  BOOST_TEST(restarted.instability().fluid_guard.input_work == sim.instability().fluid_guard.input_work);
+  BOOST_TEST(restarted.instability().fluid_guard.initial_energy == sim.instability().fluid_guard.initial_energy);  // 0: from rest
+  BOOST_TEST(restarted.instability().fluid_guard.speed_scale == sim.instability().fluid_guard.speed_scale);
+  BOOST_TEST(restarted.instability().fluid_guard.boundary_power == sim.instability().fluid_guard.boundary_power);
 }

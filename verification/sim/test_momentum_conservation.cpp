@@ -4,7 +4,7 @@
 // negative, and the periodic predictor and projection conserve sum u h^2. So
 //   variant A: P = sum rho_f u h^2 + sum M U            is conserved to round-off;
 //   variant K: P_K = P - rho_f sum_T I_T                 is (the grid's inner fluid is fictitious;
-//              the Reynolds-transport increments of F_int telescope, sim/inner_fluid_inertia.hpp),
+//              the Reynolds-transport increments of F_int telescope, sim/coupling/inner_fluid_inertia.hpp),
 //              while P itself changes by rho_f (I^{n+1} - I^n) per step (logged, not asserted).
 #define BOOST_TEST_MODULE momentum_conservation
 #include <boost/test/unit_test.hpp>
@@ -13,6 +13,7 @@
 
 #include "scene/scene_schema.hpp"
 #include "sim/simulation.hpp"
+#include "sim/time_step.hpp"
 #include "sim_scenes.hpp"
 
 using namespace ibms;
@@ -32,7 +33,7 @@ Drift run_and_measure(const std::string& variant, int n_steps) {
   Simulation sim(scene);
   auto totals = [&] {
     const Vec2 pf = fluid_momentum(sim), pb = body_momentum(sim);
-    const Vec2 inner = inner_fluid_momentum(sim.fluid_density(), sim.coupling());
+    const Vec2 inner = inner_fluid_momentum(sim.fluid_density(), sim.markers());
     return std::array<Vec2, 2>{Vec2{pf[0] + pb[0] - inner[0], pf[1] + pb[1] - inner[1]},
                                Vec2{pf[0] + pb[0], pf[1] + pb[1]}};
   };

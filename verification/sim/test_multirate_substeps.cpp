@@ -1,4 +1,4 @@
-// Multi-rate solid sub-steps (sim/body_update.hpp): with run.solid_substeps = "per_group"
+// Multi-rate solid sub-steps (sim/bodies/body_update.hpp): with run.solid_substeps = "per_group"
 // each group of bodies that may touch within the step takes its own sub-step, and only a group that
 // may touch something takes the contact sub-step. Claims tested against the global
 // sub-step ("global", every body at the smallest sub-step of all) on one scene where a contact
@@ -21,6 +21,7 @@
 
 #include "scene/scene_schema.hpp"
 #include "sim/simulation.hpp"
+#include "sim/time_step.hpp"
 
 using namespace ibms;
 
@@ -75,13 +76,13 @@ Outcome run(const char* substeps, const char* time_stepping = "shared") {
     sim.substep_planner().plan(dt, groups);
     const bool apart = !groups.group_of.empty() && groups.group_of[0] != groups.group_of[1];
     advance_one_step(sim, dt);
-    out.max_overlap = std::max(out.max_overlap, sim.stats.last_contact_stats.max_overlap);
-    if (out.first_contact_step < 0 && sim.stats.last_contact_stats.max_overlap > 0.0) out.first_contact_step = n;
+    out.max_overlap = std::max(out.max_overlap, sim.stats().last_contact_stats.max_overlap);
+    if (out.first_contact_step < 0 && sim.stats().last_contact_stats.max_overlap > 0.0) out.first_contact_step = n;
     if (n == 0) out.pair_apart_at_start = apart;
     if (out.first_contact_step == n) out.pair_joined_at_contact = !apart;
   }
-  out.body_substeps = sim.stats.total_body_substeps;
-  out.inner_steps = sim.stats.total_contact_inner_steps;
+  out.body_substeps = sim.stats().total_body_substeps;
+  out.inner_steps = sim.stats().total_contact_inner_steps;
   for (const MassSpringBody& body : sim.bodies()) out.centre.push_back(centre_of_mass(body));
   return out;
 }

@@ -13,8 +13,9 @@
 
 #include "fluid/threads.hpp"
 #include "scene/scene_reader.hpp"
-#include "sim/control_volume_monitor.hpp"
+#include "sim/checks/control_volume_monitor.hpp"
 #include "sim/simulation.hpp"
+#include "sim/time_step.hpp"
 
 namespace {
 bool counting = false;
@@ -33,7 +34,7 @@ namespace {
 
 // One thread: the OpenMP runtime's worker threads make their own thread-local scratch when they
 // first take a body group, which with dynamic scheduling may happen after any warm-up.
-// With control_volumes, every step is wrapped as in the run loop (sim/run.cpp): the control-volume
+// With control_volumes, every step is wrapped as in the run loop (sim/run/run.cpp): the control-volume
 // balance after the step and at the start of the next one.
 long allocations_in_steps(const char* scene_path, int warm_up, int counted,
                           const std::vector<std::string>& overrides = {}, bool control_volumes = false) {
@@ -57,8 +58,8 @@ long allocations_in_steps(const char* scene_path, int warm_up, int counted,
   counting = false;
   BOOST_TEST_MESSAGE(scene_path << ": " << n_allocations << " allocations in steps " << warm_up << " to "
                                 << warm_up + counted << ", contact pairs last step "
-                                << sim.stats.last_contact_stats.n_active_pairs << ", wall contacts "
-                                << sim.stats.last_contact_stats.n_wall_contacts);
+                                << sim.stats().last_contact_stats.n_active_pairs << ", wall contacts "
+                                << sim.stats().last_contact_stats.n_wall_contacts);
   return n_allocations;
 }
 

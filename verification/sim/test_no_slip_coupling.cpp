@@ -1,4 +1,4 @@
-// The no_slip coupling (sim/no_slip_coupling.hpp) holds what it claims: after every step the
+// The no_slip coupling (sim/coupling/no_slip_system.hpp) holds what it claims: after every step the
 // velocity interpolated at the markers equals the forcing target within ibm.slip_tolerance U_ref,
 // measured here independently of the coupling's own bookkeeping, for rigid and prescribed bodies
 // with contacts, and for mass-spring bodies with contacts and swelling, whose target is the rim
@@ -20,6 +20,7 @@
 #include "fluid/threads.hpp"
 #include "scene/scene_reader.hpp"
 #include "sim/simulation.hpp"
+#include "sim/time_step.hpp"
 
 namespace {
 
@@ -42,7 +43,7 @@ SlipRecord slip_over_steps(const char* scene_path, const std::vector<std::string
     ibms::advance_one_step(sim, dt);
     // The markers and targets of the step are those of t^n (the bodies have moved since).
     const ibms::WallVelocities walls = ibms::wall_velocities_at(sim.boundaries(), sim.fluid().time);
-    for (const ibms::BodyCoupling& c : sim.coupling()) {
+    for (const ibms::BodyCoupling& c : sim.markers()) {
       if (faces)
         ibms::interpolate_faces(sim.grid(), sim.kernel(), walls, sim.fluid().velocity_face_x, sim.fluid().velocity_face_y,
                                 c.marker, at_markers);
@@ -64,7 +65,7 @@ SlipRecord slip_over_steps(const char* scene_path, const std::vector<std::string
       record.largest_mismatch = std::max(record.largest_mismatch, std::abs(body_largest - reported));
     }
   }
-  record.products = sim.stats.total_coupling_iterations;
+  record.products = sim.stats().total_coupling_iterations;
   return record;
 }
 
@@ -232,7 +233,7 @@ double drag_at_two(const std::vector<std::string>& overrides, double dt) {
   ibms::Simulation sim(scene);
   const int steps = static_cast<int>(std::lround(2.0 / dt));
   for (int k = 0; k < steps; ++k) ibms::advance_one_step(sim, dt);
-  return 2.0 * sim.coupling()[0].hydrodynamic_force[0] / (scene.fluid.density * 1.0 * scene.bodies[0].diameter);  // U_ref = 1
+  return 2.0 * sim.markers()[0].hydrodynamic_force[0] / (scene.fluid.density * 1.0 * scene.bodies[0].diameter);  // U_ref = 1
 }
 
 }  // namespace

@@ -15,6 +15,7 @@
 #include <cmath>
 
 #include "sim/simulation.hpp"
+#include "sim/time_step.hpp"
 #include "sim_scenes.hpp"
 
 using namespace ibms;
@@ -30,13 +31,13 @@ BOOST_AUTO_TEST_CASE(swelling_disk_in_quiescent_fluid_induces_only_the_target_re
   double max_fluid = 0.0, max_target = 0.0, max_removed_mean = 0.0, max_rhs_scale = 0.0;
   for (int n = 0; n < 200; ++n) {
     advance_one_step(sim, dt);
-    for (const Vec2& u : sim.coupling()[0].target_velocity) max_target = std::max(max_target, std::hypot(u[0], u[1]));
+    for (const Vec2& u : sim.markers()[0].target_velocity) max_target = std::max(max_target, std::hypot(u[0], u[1]));
     const Grid& g = sim.grid();
     for (int j = 0; j < g.ny; ++j)
       for (int i = 0; i < g.nx; ++i)
         max_fluid = std::max(max_fluid, std::hypot(sim.fluid().velocity_x(i, j), sim.fluid().velocity_y(i, j)));
-    max_removed_mean = std::max(max_removed_mean, std::abs(sim.stats.last_projection.removed_mean));
-    max_rhs_scale = std::max(max_rhs_scale, sim.stats.last_projection.max_divergence_before / dt);
+    max_removed_mean = std::max(max_removed_mean, std::abs(sim.stats().last_projection.removed_mean));
+    max_rhs_scale = std::max(max_rhs_scale, sim.stats().last_projection.max_divergence_before / dt);
   }
   const double swelling_speed = 0.5 * rate;  // rim speed of the uniform dilation D'/2
   BOOST_TEST_MESSAGE("final D = " << sim.bodies()[0].diameter << ", swelling rim speed D'/2 = " << swelling_speed);

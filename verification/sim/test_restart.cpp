@@ -19,10 +19,10 @@
 #include "io/checkpoint.hpp"
 #include "io/output_file.hpp"
 #include "scene/scene_reader.hpp"
-#include "sim/run.hpp"
+#include "sim/run/run.hpp"
 #include "fluid/spectral_solver.hpp"
 #include "fluid/threads.hpp"
-#include "sim/simulation_checkpoint.hpp"
+#include "sim/run/simulation_checkpoint.hpp"
 
 namespace {
 

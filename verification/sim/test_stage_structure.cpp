@@ -9,6 +9,7 @@
 #include <string>
 
 #include "sim/simulation.hpp"
+#include "sim/time_step.hpp"
 #include "sim_scenes.hpp"
 
 using namespace ibms;
@@ -58,7 +59,7 @@ BOOST_AUTO_TEST_CASE(one_body_scene_does_no_pair_search) {
   BOOST_TEST(!lists_stage(sim, "pair search"));
   run_steps(sim, 5, 0.005);
   BOOST_TEST(sim.timers().calls(Stage::contacts) >= 5);  // wall contacts are evaluated every sub-step
-  BOOST_TEST(sim.stats.total_pair_checks == 0);
+  BOOST_TEST(sim.stats().total_pair_checks == 0);
 }
 
 BOOST_AUTO_TEST_CASE(two_body_scene_searches_pairs) {
@@ -71,20 +72,20 @@ BOOST_AUTO_TEST_CASE(two_body_scene_searches_pairs) {
     Simulation sim(scene);
     BOOST_TEST(lists_stage(sim, "pair search"));
     run_steps(sim, 5, 0.005);
-    BOOST_TEST(sim.stats.total_pair_checks > 0);
+    BOOST_TEST(sim.stats().total_pair_checks > 0);
   }
   {  // per group (default): bodies 0.1 apart cannot touch within a step, so each is a group of
      // one and no pair is searched
     scene.run.solid_substeps = RunSpec::SolidSubsteps::per_group;
     Simulation sim(scene);
     run_steps(sim, 5, 0.005);
-    BOOST_TEST(sim.stats.total_pair_checks == 0);
+    BOOST_TEST(sim.stats().total_pair_checks == 0);
   }
   {  // per group, bodies 0.004 apart: one group, searched
     scene.bodies[0].centre = {0.398, 0.5};
     scene.bodies[1].centre = {0.602, 0.5};
     Simulation sim(scene);
     run_steps(sim, 5, 0.005);
-    BOOST_TEST(sim.stats.total_pair_checks > 0);
+    BOOST_TEST(sim.stats().total_pair_checks > 0);
   }
 }

@@ -17,6 +17,7 @@
 #include <cmath>
 
 #include "sim/simulation.hpp"
+#include "sim/time_step.hpp"
 #include "sim_scenes.hpp"
 
 using namespace ibms;
@@ -49,12 +50,12 @@ double rim_slip_after_forcing(bool sub_markers, int passes) {
   scene.ibm.forcing_passes = passes;
   Simulation sim(scene);
   const double dt = 1e-3;
-  prepare_markers(sim.bodies(), sim.swelling(), 0.0, 0.0, sim.grid(), sub_markers, sim.coupling());
+  prepare_markers(sim.bodies(), sim.swelling(), 0.0, 0.0, sim.grid(), sub_markers, sim.markers());
   CellField& us = sim.fluid_solver().velocity_star_x();
   CellField& vs = sim.fluid_solver().velocity_star_y();
   us = sim.fluid().velocity_x;  // fluid at rest: u~ = 0
   vs = sim.fluid().velocity_y;
-  apply_direct_forcing(sim.grid(), sim.kernel(), {}, dt, passes, sim.coupling(), us, vs);
+  apply_direct_forcing(sim.grid(), sim.kernel(), {}, dt, passes, sim.markers(), us, vs);
   const MassSpringBody& body = sim.bodies()[0];
   std::vector<Vec2> samples;
   for (int e = 0; e < body.n_surface; ++e) {
@@ -87,9 +88,9 @@ BOOST_AUTO_TEST_CASE(marker_spacing_stays_below_the_cell_size_while_swelling) {
     const double scale = (0.25 + std::min(0.1 * time, 0.15)) / 0.25;
     for (std::size_t k = 0; k < start.size(); ++k)
       for (int d = 0; d < 2; ++d) sim.bodies()[0].position[k][d] = centre[d] + scale * (start[k][d] - centre[d]);
-    const std::size_t capacity = sim.coupling()[0].marker.capacity();
-    prepare_markers(sim.bodies(), sim.swelling(), time, 0.0, sim.grid(), true, sim.coupling());
-    const BodyCoupling& c = sim.coupling()[0];
+    const std::size_t capacity = sim.markers()[0].marker.capacity();
+    prepare_markers(sim.bodies(), sim.swelling(), time, 0.0, sim.grid(), true, sim.markers());
+    const BodyCoupling& c = sim.markers()[0];
     const double rim_spacing = std::hypot(sim.bodies()[0].position[1][0] - sim.bodies()[0].position[0][0],
                                           sim.bodies()[0].position[1][1] - sim.bodies()[0].position[0][1]);
     BOOST_TEST_MESSAGE("t = " << time << ": rim spacing " << rim_spacing / h << " h, " << c.marker.size()
@@ -103,7 +104,7 @@ BOOST_AUTO_TEST_CASE(marker_spacing_stays_below_the_cell_size_while_swelling) {
 BOOST_AUTO_TEST_CASE(reaction_on_the_rim_points_keeps_total_force_and_torque) {
   Simulation sim(coarse_scene(true));
   advance_one_step(sim, 1e-3);
-  const BodyCoupling& c = sim.coupling()[0];
+  const BodyCoupling& c = sim.markers()[0];
   const MassSpringBody& body = sim.bodies()[0];
   // The reaction is computed at X^n = the positions before the solid update; recompute the
   // marker forces and compare with what the points received (positions of step n: the markers).

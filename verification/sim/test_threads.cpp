@@ -17,6 +17,7 @@
 #include "fluid/threads.hpp"
 #include "scene/scene_reader.hpp"
 #include "sim/simulation.hpp"
+#include "sim/time_step.hpp"
 
 using namespace ibms;
 

@@ -11,8 +11,8 @@
 #include "io/hdf5_handle.hpp"
 #include "io/hdf5_objects.hpp"
 #include "scene/scene_reader.hpp"
-#include "sim/run.hpp"
-#include "sim/stage_timers.hpp"
+#include "sim/run/run.hpp"
+#include "core/stage_timers.hpp"
 
 namespace {
 
@@ -54,8 +54,8 @@ BOOST_AUTO_TEST_CASE(run_output_carries_wall_seconds_and_calls_per_stage) {
   long substeps = 0, body_substeps = 0;
   read_scalar(file, "/timing/solid_substeps", substeps);
   read_scalar(file, "/timing/body_substeps", body_substeps);
-  BOOST_TEST(substeps == sim.stats.total_substeps);
-  BOOST_TEST(body_substeps == sim.stats.total_body_substeps);
+  BOOST_TEST(substeps == sim.stats().total_substeps);
+  BOOST_TEST(body_substeps == sim.stats().total_body_substeps);
   BOOST_TEST(substeps >= summary.steps);
   BOOST_TEST(body_substeps >= substeps);
   // The printed table names every stage that ran and the totals.

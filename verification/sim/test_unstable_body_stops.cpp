@@ -1,5 +1,5 @@
 // A run whose body goes unstable stops with a clear message instead of writing NaN: a
-// stiff wheel advanced with one solid step per fluid step (solid_work.fixed_substeps = 1,
+// stiff wheel advanced with one solid step per fluid step (Simulation::set_fixed_substeps(1),
 // dt far above its stable sub-step) through run_simulation throws BlowUpError naming step, time,
 // body, point and position, and every value of the body series written up to then is finite.
 // With the automatic sub-steps the same scene runs to its end, and so it does with
@@ -15,7 +15,7 @@
 #include "metrics/body_series.hpp"
 #include "core/errors.hpp"
 #include "scene/scene_reader.hpp"
-#include "sim/run.hpp"
+#include "sim/run/run.hpp"
 #include "sim_scenes.hpp"
 #include "solid/stable_substep.hpp"
 
@@ -38,7 +38,7 @@ Scene stiff_wheel_scene(const std::string& output) {
 
 // Runs with one solid step per fluid step; the blow-up message, empty if the run reached its end.
 std::string message_of_fixed_step_run(Simulation& sim, const std::string& out) {
-  sim.solid_work.fixed_substeps = 1;
+  sim.set_fixed_substeps(1);
   std::string message;
   try {
     run_simulation(sim, {out, /*quiet=*/true});
@@ -78,13 +78,13 @@ BOOST_AUTO_TEST_CASE(automatic_substeps_run_the_same_scene_to_its_end) {
   Simulation sim(stiff_wheel_scene(out));
   const RunSummary summary = run_simulation(sim, {out, /*quiet=*/true});
   BOOST_TEST(summary.stop_reason == "end_time");
-  BOOST_TEST(sim.stats.last_n_substeps > 1);
+  BOOST_TEST(sim.stats().last_n_substeps > 1);
   Scene automatic = stiff_wheel_scene(out);
   automatic.bodies[0].spring_integrator = BodySpec::SpringIntegrator::automatic;
   Simulation implicit(automatic);
   const RunSummary implicit_summary = run_simulation(implicit, {out, /*quiet=*/true});
   BOOST_TEST(implicit_summary.stop_reason == "end_time");
-  BOOST_TEST(implicit.stats.last_n_substeps == 1);
+  BOOST_TEST(implicit.stats().last_n_substeps == 1);
   std::filesystem::remove_all(dir);
 }
 
@@ -126,16 +126,16 @@ BOOST_AUTO_TEST_CASE(a_contact_returning_more_energy_than_it_received_stops_the_
     Scene scene = collision_scene(1e3, 3e-3);
     scene.run.on_body_instability = RunSpec::OnInstability::warn;
     Simulation sim(scene);
-    sim.solid_work.fixed_substeps = 1;
+    sim.set_fixed_substeps(1);
     BOOST_TEST(run_simulation(sim, {out, /*quiet=*/true}).stop_reason == "end_time");
-    BOOST_TEST(sim.instability.warned);
+    BOOST_TEST(sim.instability().warned);
   }
   {
     Simulation sim(collision_scene(1e3, 3e-3));
     const RunSummary summary = run_simulation(sim, {out, /*quiet=*/true});
     BOOST_TEST(summary.stop_reason == "end_time");
-    BOOST_TEST(sim.stats.total_contact_work < 0.0);  // they met, and the contact (e = 0.9) took energy
-    BOOST_TEST(!sim.instability.warned);
+    BOOST_TEST(sim.stats().total_contact_work < 0.0);  // they met, and the contact (e = 0.9) took energy
+    BOOST_TEST(!sim.instability().warned);
   }
   std::filesystem::remove_all(dir);
 }
@@ -165,7 +165,7 @@ BOOST_AUTO_TEST_CASE(a_contact_deeper_than_its_spheres_stops_the_run) {
   BOOST_TEST(message.find("contact overlap of") != std::string::npos);
   BOOST_TEST(message.find("contact.collision_steps") != std::string::npos);
   BOOST_TEST(message.find("run.max_time_step") != std::string::npos);
-  BOOST_TEST(sim.stats.last_contact_stats.max_overlap > sim.contact_model().cds_radius_of(sim.bodies()[0]));
+  BOOST_TEST(sim.stats().last_contact_stats.max_overlap > sim.contact_model().cds_radius_of(sim.bodies()[0]));
 
   Scene shallow = read_scene_file(IBMS_RESTART_SCENE, collision_time);
   shallow.output.file = (dir / "shallow.h5").string();

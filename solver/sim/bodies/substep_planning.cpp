@@ -1,5 +1,5 @@
 // Sub-step planning (substep_planning.hpp): the contact groups of a step and their sub-step bounds.
-#include "sim/substep_planning.hpp"
+#include "sim/bodies/substep_planning.hpp"
 
 #include <cmath>
 

@@ -1,5 +1,5 @@
 // What a run writes (run_output.hpp): series rows, snapshots, profiles, tables, timing, progress.
-#include "sim/run_output.hpp"
+#include "sim/run/run_output.hpp"
 
 #include <fmt/format.h>
 
@@ -11,8 +11,9 @@
 #include "fluid/boundary_conditions.hpp"
 #include "fluid/operators.hpp"
 #include "io/csv_table.hpp"
-#include "sim/diagnostics.hpp"
-#include "sim/simulation_checkpoint.hpp"
+#include "sim/run/centreline_profiles.hpp"
+#include "sim/time_step_limits.hpp"
+#include "sim/run/simulation_checkpoint.hpp"
 #include "solid/body_geometry.hpp"
 #include "solid/spring_forces.hpp"
 
@@ -55,7 +56,7 @@ void write_body_table(const std::string& h5_path, const Simulation& sim, const B
 void write_series(OutputFile& out, const Simulation& sim, const ControlVolumeMonitor& control_volumes, double dt,
                   double cfl, double steady_residual, BodyTable& bodies) {
   const FluidState& f = sim.fluid();
-  const ProjectionStats& ps = sim.stats.last_projection;
+  const ProjectionStats& ps = sim.stats().last_projection;
   std::vector<SeriesValue> row({
       {"time", "time", f.time},
       {"dt", "time", dt},
@@ -121,10 +122,10 @@ std::vector<SeriesValue> body_series(const Simulation& sim, const ControlVolumeM
   if (!sim.has_bodies()) return row;
   // Coupling diagnostics of the step: largest fluid velocity component and the Poisson removed
   // mean (compatibility, docs/method.md §1.8), with each body's largest forcing target speed.
-  row.push_back({"max_fluid_velocity_component", "length/time", sim.stats.last_projection.max_velocity});
-  row.push_back({"poisson_removed_mean_bodies", "1/time^2", sim.stats.last_projection.removed_mean});
-  if (sim.enforces_no_slip())
-    row.push_back({"coupling_iterations", "-", static_cast<double>(sim.stats.last_coupling_iterations)});
+  row.push_back({"max_fluid_velocity_component", "length/time", sim.stats().last_projection.max_velocity});
+  row.push_back({"poisson_removed_mean_bodies", "1/time^2", sim.stats().last_projection.removed_mean});
+  if (sim.coupling().counts_products())
+    row.push_back({"coupling_iterations", "-", static_cast<double>(sim.stats().last_coupling_iterations)});
   for (std::size_t b = 0; b < sim.bodies().size(); ++b) {
     const MassSpringBody& body = sim.bodies()[b];
     const std::string name = body_name(b);
@@ -139,11 +140,11 @@ std::vector<SeriesValue> body_series(const Simulation& sim, const ControlVolumeM
       row.push_back({name + "/angular_velocity", "1/time", sim.rigid()[b].state.angular_velocity});
     }
     // What the fluid does to the body in the step just taken (BodyCoupling::hydrodynamic_force).
-    const BodyCoupling& coupling = sim.coupling()[b];
+    const BodyCoupling& coupling = sim.markers()[b];
     row.push_back({name + "/force_x", "force per unit depth", coupling.hydrodynamic_force[0]});
     row.push_back({name + "/force_y", "force per unit depth", coupling.hydrodynamic_force[1]});
     row.push_back({name + "/torque", "force length per unit depth", coupling.hydrodynamic_torque});
-    // The same force from the fluid alone: the control-volume balance of the step (sim/control_volume_monitor.hpp).
+    // The same force from the fluid alone: the control-volume balance of the step (sim/checks/control_volume_monitor.hpp).
     const BodyControlVolume& cv = control_volumes.body(b);
     row.push_back({name + "/cv_force_x", "force per unit depth", cv.force[0]});
     row.push_back({name + "/cv_force_y", "force per unit depth", cv.force[1]});
@@ -172,7 +173,7 @@ std::vector<SeriesValue> body_series(const Simulation& sim, const ControlVolumeM
     row.push_back({name + "/spring_energy", "energy per unit depth", spring_energy(body, body.length_scale())});
     row.push_back({name + "/n_substeps", "-", static_cast<double>(sim.substep_planner().body_substeps(b))});
     double max_target = 0.0;
-    for (const auto& u : sim.coupling()[b].target_velocity) max_target = std::max(max_target, std::hypot(u[0], u[1]));
+    for (const auto& u : sim.markers()[b].target_velocity) max_target = std::max(max_target, std::hypot(u[0], u[1]));
     row.push_back({name + "/max_target_speed", "length/time", max_target});
   }
   {  // separation: from the walls always, between bodies when there are several
@@ -188,7 +189,7 @@ std::vector<SeriesValue> body_series(const Simulation& sim, const ControlVolumeM
     }
   }
   if (sim.has_contacts()) {  // merged over the sub-steps of the step
-    const ContactStats& cs = sim.stats.last_contact_stats;
+    const ContactStats& cs = sim.stats().last_contact_stats;
     row.push_back({"contact/n_active_pairs", "-", static_cast<double>(cs.n_active_pairs)});
     row.push_back({"contact/n_wall_contacts", "-", static_cast<double>(cs.n_wall_contacts)});
     row.push_back({"contact/max_overlap", "length", cs.max_overlap});
@@ -255,8 +256,8 @@ void write_stage_timing(OutputFile& out, const Simulation& sim, double wall_seco
                        sim.timers().calls(static_cast<Stage>(s))});
   entries.push_back({"run", wall_seconds, sim.fluid().step});
   if (sim.has_bodies()) {  // the solid's work: seconds of the bodies stage, calls = sub-step totals
-    entries.push_back({"solid_substeps", sim.timers().seconds(Stage::bodies), sim.stats.total_substeps});
-    entries.push_back({"body_substeps", sim.timers().seconds(Stage::bodies), sim.stats.total_body_substeps});
+    entries.push_back({"solid_substeps", sim.timers().seconds(Stage::bodies), sim.stats().total_substeps});
+    entries.push_back({"body_substeps", sim.timers().seconds(Stage::bodies), sim.stats().total_body_substeps});
   }
   out.write_timing(entries);
 }
@@ -327,7 +328,7 @@ std::string stage_timing_table(const Simulation& sim, double wall_seconds) {
   text += fmt::format("{:<14} {:>10.3f} {:>6.1f}% {:>10}  (steps)\n", "run", wall_seconds, 100.0, sim.fluid().step);
   if (sim.has_bodies())
     text += fmt::format("solid sub-steps: {} (most of any body group, summed over steps), {} summed over bodies\n",
-                        sim.stats.total_substeps, sim.stats.total_body_substeps);
+                        sim.stats().total_substeps, sim.stats().total_body_substeps);
   return text;
 }
 

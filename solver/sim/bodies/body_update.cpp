@@ -1,5 +1,5 @@
 // Sub-stepped mass-spring update of the bodies, docs/method.md §5.3 (see body_update.hpp).
-#include "sim/body_update.hpp"
+#include "sim/bodies/body_update.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,5 @@
 // Inner-fluid inertia, docs/method.md §1.7 variant K (Reynolds-transport form) and variant A.
-#include "sim/inner_fluid_inertia.hpp"
+#include "sim/coupling/inner_fluid_inertia.hpp"
 
 #include <cmath>
 #include <stdexcept>

@@ -1,5 +1,5 @@
 // GMRES on the marker constraint of the no_slip coupling (see no_slip_coupling.hpp).
-#include "sim/no_slip_coupling.hpp"
+#include "sim/coupling/no_slip_system.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
 // The run loop (docs/design.md §3 stage 6, §5): what happens between the steps, in order; what
-// goes into the output is in sim/run_output.cpp.
-#include "sim/run.hpp"
+// goes into the output is in sim/run/run_output.cpp.
+#include "sim/run/run.hpp"
 
 #include <fmt/format.h>
 
@@ -12,11 +12,13 @@
 #include "core/errors.hpp"
 #include "fluid/threads.hpp"
 #include "io/checkpoint.hpp"
-#include "sim/control_volume_monitor.hpp"
-#include "sim/diagnostics.hpp"
-#include "sim/fluid_guard.hpp"
-#include "sim/run_output.hpp"
-#include "sim/simulation_checkpoint.hpp"
+#include "sim/checks/control_volume_monitor.hpp"
+#include "sim/time_step.hpp"
+#include "sim/checks/blow_up.hpp"
+#include "sim/time_step_limits.hpp"
+#include "sim/checks/fluid_guard.hpp"
+#include "sim/run/run_output.hpp"
+#include "sim/run/simulation_checkpoint.hpp"
 
 namespace ibms {
 
@@ -80,7 +82,7 @@ RunSummary run_simulation(Simulation& sim, const RunOptions& options) {
       if (governor.active()) {
         set_loop_threads(governor.after_step(std::chrono::duration<double>(clock::now() - step_start).count()));
       }
-      const ProjectionStats& ps = sim.stats.last_projection;
+      const ProjectionStats& ps = sim.stats().last_projection;
       const double steady_residual = ps.max_velocity > 0 ? ps.max_velocity_change / (dt * ps.max_velocity) : 0.0;
       output.end_step(sim, control_volumes, dt, dt * scan.max_rate, steady_residual);
       if (scene.output.checkpoint_every > 0 && f.step % scene.output.checkpoint_every == 0)

@@ -13,7 +13,7 @@
 
 #include "fluid/fluid_solver.hpp"
 #include "scene/scene.hpp"
-#include "sim/body_coupling.hpp"
+#include "sim/coupling/body_coupling.hpp"
 
 namespace ibms {
 

@@ -9,8 +9,8 @@
 
 #include "contact/contact_model.hpp"
 #include "scene/scene.hpp"
-#include "sim/body_coupling.hpp"
-#include "sim/body_update.hpp"
+#include "sim/coupling/body_coupling.hpp"
+#include "sim/bodies/body_update.hpp"
 #include "solid/mass_spring_body.hpp"
 
 namespace ibms {
@@ -28,7 +28,7 @@ class SubstepPlanner {
   // The global bound (run.solid_substeps = "global"): the contact sub-step of all bodies if any
   // contact is possible.
   double global_contact_limit(double dt) const;
-  // How the bodies sub-step in a step of length dt (sim/body_update.hpp), into `groups`: the
+  // How the bodies sub-step in a step of length dt (sim/bodies/body_update.hpp), into `groups`: the
   // contact groups with the contact sub-step bound of each group that may touch something; with
   // run.solid_substeps = "global", no groups (one group, bound global_contact_limit(dt)).
   void plan(double dt, SubstepGroups& groups) const;

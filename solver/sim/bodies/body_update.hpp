@@ -16,7 +16,7 @@
 #include <functional>
 #include <vector>
 
-#include "sim/body_coupling.hpp"
+#include "sim/coupling/body_coupling.hpp"
 #include "contact/contact_model.hpp"
 #include "solid/implicit_euler.hpp"
 #include "solid/rigid_motion.hpp"

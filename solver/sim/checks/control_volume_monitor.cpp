@@ -1,5 +1,5 @@
 // Control-volume force of every body over the steps (control_volume_monitor.hpp).
-#include "sim/control_volume_monitor.hpp"
+#include "sim/checks/control_volume_monitor.hpp"
 
 #include <algorithm>
 

@@ -1,5 +1,5 @@
 // Markers, direct forcing and fluid reaction of the bodies (see body_coupling.hpp).
-#include "sim/body_coupling.hpp"
+#include "sim/coupling/body_coupling.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,13 +1,13 @@
 // What a run writes (docs/design.md §5): the HDF5 output file (series rows, snapshots, /checkpoint,
 // /timing), the body table <stem>_bodies.csv and the centre-line profiles <stem>_centreline_*.csv,
 // and the run's summaries on the terminal (the progress line, the stage timing table). The run
-// loop (sim/run.cpp) says when; this says what goes in each.
+// loop (sim/run/run.cpp) says when; this says what goes in each.
 #pragma once
 #include <string>
 #include <vector>
 
 #include "io/output_file.hpp"
-#include "sim/control_volume_monitor.hpp"
+#include "sim/checks/control_volume_monitor.hpp"
 #include "sim/simulation.hpp"
 
 namespace ibms {
@@ -36,7 +36,7 @@ class RunOutput {
   // output.series_every steps; the step's figures are kept for finish.
   void end_step(Simulation& sim, const ControlVolumeMonitor& control_volumes, double dt, double cfl,
                 double steady_residual);
-  // /checkpoint (sim/simulation_checkpoint.hpp).
+  // /checkpoint (sim/run/simulation_checkpoint.hpp).
   void checkpoint(Simulation& sim, double next_snapshot);
   // The end of the run: the last step's series row unless written, the checkpoint, the last
   // snapshot, the centre-line profiles and the body table.

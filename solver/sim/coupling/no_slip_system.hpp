@@ -1,5 +1,7 @@
-// The no_slip coupling (docs/method.md §3.7): the immersed-boundary forces as the Lagrange
-// multipliers of the no-slip constraint at the end of the step (Taira & Colonius 2007). After the
+// The marker system of the end-of-step constraint, ibm.coupling = "no_slip" (docs/method.md
+// §3.7; the coupling object is sim/coupling/end_of_step_constraint.hpp): the immersed-boundary
+// forces as the Lagrange multipliers of the no-slip constraint at the end of the step (Taira &
+// Colonius 2007). After the
 // projection, the marker force corrections dF solve
 //     J P_0 S (dt dF) = U_target - J u^{n+1},
 // S spreading onto the cells and the faces (the balanced momentum interpolation of FaceForcing), P_0
@@ -29,7 +31,7 @@
 #include "fluid/fluid_solver.hpp"
 #include "ibm/delta_kernel.hpp"
 #include "ibm/ib_operators.hpp"
-#include "sim/body_coupling.hpp"
+#include "sim/coupling/body_coupling.hpp"
 #include "solid/implicit_euler.hpp"
 
 namespace ibms {

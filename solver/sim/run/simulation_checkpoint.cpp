@@ -1,5 +1,5 @@
 // Writing and restoring the restart state of a Simulation (simulation_checkpoint.hpp).
-#include "sim/simulation_checkpoint.hpp"
+#include "sim/run/simulation_checkpoint.hpp"
 
 #include <fmt/format.h>
 
@@ -10,14 +10,13 @@
 
 #include "core/errors.hpp"
 #include "fluid/spectral_solver.hpp"
+#include "sim/checks/fluid_guard.hpp"
 
 namespace ibms {
 namespace {
 
-using Arrays = std::map<std::string, std::vector<double>>;
+using Arrays = CheckpointArrays;
 using Scalars = std::map<std::string, double>;
-
-std::string body_prefix(std::size_t b) { return fmt::format("body_{:03d}_", b); }
 
 std::vector<double> cell_values(const CellField& field) {  // ghost layers included
   const double* data = field.data();
@@ -30,61 +29,6 @@ std::vector<double> interleaved(const std::vector<Vec2>& points) {
   for (const Vec2& p : points) values.insert(values.end(), {p[0], p[1]});
   return values;
 }
-
-// Reads named arrays and scalars, each failure an InputError naming the checkpoint and the name.
-class CheckpointReader {
- public:
-  CheckpointReader(const Checkpoint& checkpoint, const std::string& path) : cp_(checkpoint), path_(path) {}
-
-  [[noreturn]] void fail(const std::string& name, const std::string& reason) const {
-    throw InputError(fmt::format("{}: /checkpoint/{}: {}", path_, name, reason));
-  }
-  double scalar(const std::string& name) const {
-    const auto found = cp_.scalars.find(name);
-    if (found == cp_.scalars.end()) fail(name, "missing");
-    return found->second;
-  }
-  // A scalar that must be finite and >= 0 (time, dt^{n-1}).
-  double non_negative(const std::string& name) const {
-    const double value = scalar(name);
-    if (!(std::isfinite(value) && value >= 0.0)) fail(name, fmt::format("must be finite and >= 0, got {}", value));
-    return value;
-  }
-  // A count stored as a double: a whole number in [0, 2^53] (exact in a double; no overflow on the cast).
-  long count(const std::string& name) const {
-    const double value = scalar(name);
-    if (!(value >= 0.0 && value <= 9007199254740992.0 && value == std::floor(value)))
-      fail(name, fmt::format("must be a whole number >= 0, got {}", value));
-    return static_cast<long>(value);
-  }
-  const std::vector<double>& array(const std::string& name, std::size_t expected_size) const {
-    const auto found = cp_.arrays.find(name);
-    if (found == cp_.arrays.end()) fail(name, "missing");
-    if (found->second.size() != expected_size) {
-      fail(name, fmt::format("has {} values, this scene needs {}", found->second.size(), expected_size));
-    }
-    return found->second;
-  }
-  void into(const std::string& name, CellField& field) const {
-    const std::vector<double>& values = array(name, static_cast<std::size_t>(field.stride()) * (field.ny() + 2));
-    std::copy(values.begin(), values.end(), field.data());
-  }
-  void into(const std::string& name, FaceField& field) const {
-    const std::vector<double>& values = array(name, field.values().size());
-    std::copy(values.begin(), values.end(), field.values().begin());
-  }
-  void into(const std::string& name, std::vector<Vec2>& points) const {
-    const std::vector<double>& values = array(name, 2 * points.size());
-    for (std::size_t k = 0; k < points.size(); ++k) points[k] = {values[2 * k], values[2 * k + 1]};
-  }
-  void into(const std::string& name, std::vector<double>& values) const {
-    values = array(name, values.size());
-  }
-
- private:
-  const Checkpoint& cp_;
-  const std::string& path_;
-};
 
 // First line where two texts differ, for the message.
 std::string first_difference(const std::string& a, const std::string& b) {
@@ -130,11 +74,11 @@ void write_simulation_checkpoint(OutputFile& out, const Simulation& sim, double 
       {"time_step_prev", f.time_step_prev},
       {"has_convection_prev", f.has_convection_prev ? 1.0 : 0.0},
       {"next_snapshot_time", next_snapshot_time},
-      {"total_contact_work", sim.stats.total_contact_work},
-      {"fluid_guard_speed_scale", sim.instability.fluid_guard.speed_scale},
-      {"fluid_guard_initial_energy", sim.instability.fluid_guard.initial_energy},
-      {"fluid_guard_input_work", sim.instability.fluid_guard.input_work},
-      {"fluid_guard_boundary_power", sim.instability.fluid_guard.boundary_power},
+      {"total_contact_work", sim.stats().total_contact_work},
+      {"fluid_guard_speed_scale", sim.instability().fluid_guard.speed_scale},
+      {"fluid_guard_initial_energy", sim.instability().fluid_guard.initial_energy},
+      {"fluid_guard_input_work", sim.instability().fluid_guard.input_work},
+      {"fluid_guard_boundary_power", sim.instability().fluid_guard.boundary_power},
       {"nx", static_cast<double>(sim.grid().nx)},
       {"ny", static_cast<double>(sim.grid().ny)},
       {"n_bodies", static_cast<double>(sim.bodies().size())},
@@ -146,16 +90,10 @@ void write_simulation_checkpoint(OutputFile& out, const Simulation& sim, double 
     arrays[prefix + "velocity"] = interleaved(body.velocity);
     arrays[prefix + "mass"] = body.mass;
     arrays[prefix + "diameter"] = {body.diameter};
-    arrays[prefix + "triangle_momentum"] = interleaved(sim.coupling()[b].triangle_momentum);
-    const BodyCoupling& c = sim.coupling()[b];
+    arrays[prefix + "triangle_momentum"] = interleaved(sim.markers()[b].triangle_momentum);
+    const BodyCoupling& c = sim.markers()[b];
     arrays[prefix + "inner_angular_momentum"] = {c.inner_angular_momentum, c.inner_reference_centre[0],
                                                  c.inner_reference_centre[1]};
-    // ibm.coupling = "no_slip": the latest forces, the next step's predictor (count first, then values).
-    if (sim.enforces_no_slip()) {
-      std::vector<double> forces{static_cast<double>(c.previous_force.size())};
-      for (const Vec2& force : c.previous_force) forces.insert(forces.end(), {force[0], force[1]});
-      arrays[prefix + "previous_force"] = forces;
-    }
     if (body.kind != BodyKind::mass_spring) {
       const RigidState& r = sim.rigid()[b].state;
       arrays[prefix + "rigid_state"] = {r.centre[0], r.centre[1], r.angle, r.velocity[0], r.velocity[1],
@@ -167,6 +105,7 @@ void write_simulation_checkpoint(OutputFile& out, const Simulation& sim, double 
       }
     }
   }
+  sim.coupling().write_checkpoint(sim.markers(), arrays);  // the coupling's own section
   // The FFTW planner state, one character code per value (optional on reading).
   const std::string wisdom = fft_planner_wisdom();
   arrays["fftw_wisdom"] = std::vector<double>(wisdom.begin(), wisdom.end());
@@ -207,7 +146,7 @@ double restore_simulation(const Checkpoint& checkpoint, const std::string& path,
   f.time_step_prev = read.non_negative("time_step_prev");
   f.has_convection_prev = read.scalar("has_convection_prev") != 0.0;
   // The instability guard's contact-work sum (absent from checkpoints of ibms <= 0.2: starts at 0).
-  if (checkpoint.scalars.count("total_contact_work") != 0) sim.stats.total_contact_work = read.scalar("total_contact_work");
+  if (checkpoint.scalars.count("total_contact_work") != 0) sim.stats().total_contact_work = read.scalar("total_contact_work");
   read.into("fluid_velocity_x", f.velocity_x);
   read.into("fluid_velocity_y", f.velocity_y);
   read.into("fluid_pressure", f.pressure);
@@ -219,7 +158,7 @@ double restore_simulation(const Checkpoint& checkpoint, const std::string& path,
   // the restored field.
   start_fluid_guard(sim);
   if (checkpoint.scalars.count("fluid_guard_input_work") != 0) {
-    FluidGuard& guard = sim.instability.fluid_guard;
+    FluidGuard& guard = sim.instability().fluid_guard;
     guard.speed_scale = read.non_negative("fluid_guard_speed_scale");
     guard.initial_energy = read.non_negative("fluid_guard_initial_energy");
     guard.input_work = read.non_negative("fluid_guard_input_work");
@@ -234,21 +173,11 @@ double restore_simulation(const Checkpoint& checkpoint, const std::string& path,
     read.into(prefix + "velocity", body.velocity);
     read.into(prefix + "mass", body.mass);
     body.diameter = read.array(prefix + "diameter", 1)[0];
-    read.into(prefix + "triangle_momentum", sim.coupling()[b].triangle_momentum);
-    BodyCoupling& c = sim.coupling()[b];
+    read.into(prefix + "triangle_momentum", sim.markers()[b].triangle_momentum);
+    BodyCoupling& c = sim.markers()[b];
     const std::vector<double> angular = read.array(prefix + "inner_angular_momentum", 3);
     c.inner_angular_momentum = angular[0];
     c.inner_reference_centre = {angular[1], angular[2]};
-    if (sim.enforces_no_slip()) {
-      const auto found = checkpoint.arrays.find(prefix + "previous_force");
-      if (found == checkpoint.arrays.end() || found->second.empty()) read.fail(prefix + "previous_force", "missing");
-      const double n = found->second[0];
-      if (!(n >= 0.0 && n <= static_cast<double>(c.previous_force.capacity()) && n == std::floor(n)))
-        read.fail(prefix + "previous_force", fmt::format("marker count {} is not in [0, {}]", n, c.previous_force.capacity()));
-      const std::vector<double>& values = read.array(prefix + "previous_force", 1 + 2 * static_cast<std::size_t>(n));
-      c.previous_force.resize(static_cast<std::size_t>(n));
-      for (std::size_t l = 0; l < c.previous_force.size(); ++l) c.previous_force[l] = {values[1 + 2 * l], values[2 + 2 * l]};
-    }
     if (body.kind != BodyKind::mass_spring) {
       const std::vector<double> r = read.array(prefix + "rigid_state", 6);
       sim.rigid()[b].state = {{r[0], r[1]}, r[2], {r[3], r[4]}, r[5]};
@@ -258,6 +187,7 @@ double restore_simulation(const Checkpoint& checkpoint, const std::string& path,
       }
     }
   }
+  sim.coupling().read_checkpoint(read, sim.markers());
   return next_snapshot_time;
 }
 

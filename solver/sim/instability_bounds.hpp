@@ -1,15 +1,14 @@
-// The fluid's instability guard (docs/method.md §7, "The fluid guard"): an energy budget, the
-// kinetic energy E against what the boundaries and bodies can have fed it since the start,
+// The state of the run's instability guards (sim/checks/). The fluid's guard (docs/method.md §7,
+// "The fluid guard"): an energy budget, the kinetic energy E against what the boundaries and
+// bodies can have fed it since the start,
 //   E^n <= (1 + initial_margin) E_0 + (1 + work_margin) W^n + floor,
 // W^n = sum_k dt_k [max(0, P_b^{k-1}, P_b^k) + max(0, P_body^k)], and a speed bound,
 //   max |u^n| <= speed_factor V_f,  V_f = max(driving speed of the scene, max |u^0|).
 // Kinematic units throughout (per unit fluid density and unit depth): E [length^4/time^2].
 #pragma once
+#include <vector>
 
 namespace ibms {
-
-class Simulation;
-struct VelocityScan;
 
 struct FluidGuard {
   // Margins (docs/method.md §7): the discrete scheme's own gain on the initial energy (AB2 adds
@@ -36,26 +35,20 @@ struct FluidGuard {
   }
 };
 
-// Power the sides feed the fluid at its current state [length^4/time^3]: on a wall or inflow side
-// the viscous stress times the side's velocity, nu 2 (u_b - u_c)/h_n . u_b h_t per face; on every
-// side the flux of (|u|^2/2 + p) carried in by the normal face velocity (open sides; 0 on walls).
-double boundary_power(const Simulation& sim);
-
-// Power the immersed-boundary force of the latest step feeds the fluid, sum_l F_l . U_target,l dV_l
-// [length^4/time^3]: the force's work on the velocity it imposes, an upper estimate of the energy
-// it adds (u^{n+1} . du >= (|u^{n+1}|^2 - |u^n|^2) / 2).
-double body_power(const Simulation& sim);
-
-// Starts the budget from the current state: V_f, E_0, W = 0. The Simulation calls it when built;
-// run_simulation calls it again before the first step (a field set from C++ counts as initial).
-void start_fluid_guard(Simulation& sim);
-
-// Adds the step's input work dt (max(0, P_b^n, P_b^{n+1}) + max(0, P_body)) to W.
-void account_fluid_input(Simulation& sim, double dt);
-
-// Stops the run (run.on_fluid_instability = "stop": BlowUpError naming step, time, quantity and
-// place) or warns once ("warn") if the kinetic energy exceeds its budget or the largest speed
-// exceeds speed_factor V_f.
-void check_fluid_guard(Simulation& sim, const VelocityScan& scan);
+// The instability guards' scales (sim/checks/blow_up.cpp, sim/checks/fluid_guard.hpp). driving_speed is the
+// speed that drives the scene, V_drive = the largest of the wall speeds, the initial body point
+// speeds, the prescribed bodies' point speeds, the swelling rates and the free-fall speed
+// sqrt(2 |1 - rho_f/rho_s| |g| L) over the box diagonal L (at least L / 1000 per end_time); per
+// body, the most kinetic energy it can physically reach is E_max = energy_factor (M V_drive^2 / 2 +
+// E_spring(t = 0)), M its largest (swollen) mass.
+struct InstabilityBounds {
+  static constexpr double energy_factor = 4.0;  // twice every speed
+  double driving_speed = 0.0;
+  std::vector<double> body_energy_scale;  // M V_drive^2 / 2 + E_spring(t = 0) of each body
+  mutable bool warned = false;  // run.on_body_instability = "warn": said once
+  // The fluid's energy budget and speed bound, started by run_simulation from the state the run
+  // starts with (start_fluid_guard, sim/checks/fluid_guard.hpp), or restored from a checkpoint.
+  FluidGuard fluid_guard;
+};
 
 }  // namespace ibms

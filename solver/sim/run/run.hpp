@@ -8,7 +8,7 @@
 #include <csignal>
 #include <string>
 
-#include "sim/run_output.hpp"  // ibms_version, stage_timing_table: what callers of the run print
+#include "sim/run/run_output.hpp"  // ibms_version, stage_timing_table: what callers of the run print
 #include "sim/simulation.hpp"
 
 namespace ibms {

@@ -1,7 +1,7 @@
 // The fluid's energy budget and speed bound (docs/method.md §7, "The fluid guard"). It reads what
 // the step has computed (the velocity scan's energy and largest speed, the markers' forces) and
 // walks the cells next to the sides once: no extra sweep of the field.
-#include "sim/fluid_guard.hpp"
+#include "sim/checks/fluid_guard.hpp"
 
 #include <fmt/format.h>
 
@@ -10,7 +10,7 @@
 #include <cstdio>
 
 #include "core/errors.hpp"
-#include "sim/diagnostics.hpp"
+#include "sim/time_step_limits.hpp"
 #include "sim/simulation.hpp"
 
 namespace ibms {
@@ -57,8 +57,8 @@ void report_fluid_instability(Simulation& sim, const std::string& what) {
   const std::string advice = "; reduce run.cfl or run.time_step (docs/fluid-stability.md)";
   if (sim.scene().run.on_fluid_instability == RunSpec::OnInstability::stop)
     throw BlowUpError(fmt::format("blow-up at step {}, t = {:.6g}: {}{}", f.step, f.time, what, advice));
-  if (sim.instability.fluid_guard.warned) return;
-  sim.instability.fluid_guard.warned = true;
+  if (sim.instability().fluid_guard.warned) return;
+  sim.instability().fluid_guard.warned = true;
   std::fprintf(stderr, "ibms: warning at step %ld, t = %.6g: %s%s (run.on_fluid_instability = \"warn\": said once, "
                "the run goes on)\n", f.step, f.time, what.c_str(), advice.c_str());
 }
@@ -73,7 +73,7 @@ double boundary_power(const Simulation& sim) {
 
 double body_power(const Simulation& sim) {
   double power = 0.0;
-  for (const BodyCoupling& c : sim.coupling())
+  for (const BodyCoupling& c : sim.markers())
     for (std::size_t l = 0; l < c.marker.size(); ++l)
       power += (c.forcing_sum[l][0] * c.target_velocity[l][0] + c.forcing_sum[l][1] * c.target_velocity[l][1]) *
                c.marker_volume[l];
@@ -82,8 +82,8 @@ double body_power(const Simulation& sim) {
 
 void start_fluid_guard(Simulation& sim) {
   const VelocityScan scan = scan_velocity(sim.grid(), sim.fluid());
-  FluidGuard& guard = sim.instability.fluid_guard;
-  guard.speed_scale = std::max(sim.instability.driving_speed, scan.max_speed);
+  FluidGuard& guard = sim.instability().fluid_guard;
+  guard.speed_scale = std::max(sim.instability().driving_speed, scan.max_speed);
   guard.initial_energy = scan.kinetic_energy;
   guard.input_work = 0.0;
   guard.boundary_power = boundary_power(sim);
@@ -93,7 +93,7 @@ void start_fluid_guard(Simulation& sim) {
 }
 
 void account_fluid_input(Simulation& sim, double dt) {
-  FluidGuard& guard = sim.instability.fluid_guard;
+  FluidGuard& guard = sim.instability().fluid_guard;
   const double power = boundary_power(sim);
   // The larger of the powers at both ends of the step: the side work of a flow that speeds up is
   // largest at the start (the wall stress nu (u_b - u_c) / (h/2) falls as u_c nears u_b).
@@ -104,7 +104,7 @@ void account_fluid_input(Simulation& sim, double dt) {
 }
 
 void check_fluid_guard(Simulation& sim, const VelocityScan& scan) {
-  FluidGuard& guard = sim.instability.fluid_guard;
+  FluidGuard& guard = sim.instability().fluid_guard;
   const Grid& g = sim.grid();
   const double rho = sim.fluid_density();  // the message speaks the series' units: energy per unit depth
   const double budget = guard.energy_budget();

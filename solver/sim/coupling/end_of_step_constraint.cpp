@@ -1,0 +1,167 @@
+// The end-of-step constraint (end_of_step_constraint.hpp, docs/method.md §3.7).
+#include "sim/coupling/end_of_step_constraint.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "scene/scene_schema.hpp"
+
+namespace ibms {
+
+EndOfStepConstraint::EndOfStepConstraint(const Scene& scene, const Grid& grid, KernelKind kernel,
+                                         const std::vector<MassSpringBody>& bodies, std::vector<BodyCoupling>& markers,
+                                         std::vector<RigidBody>& rigid)
+    : kernel_(kernel),
+      kernel_name_(scene_schema::name_of(scene.ibm.kernel)),
+      passes_(scene.ibm.forcing_passes),
+      slip_tolerance_(scene.ibm.slip_tolerance),
+      max_products_(scene.ibm.max_coupling_iterations),
+      on_faces_(scene.ibm.constrained_velocity == IbmSpec::ConstrainedVelocity::faces),
+      has_mass_spring_(scene.has_kind(BodySpec::Kind::mass_spring)),
+      fluid_density_(scene.fluid.density),
+      gravity_(scene.fluid.gravity) {
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    if (bodies[b].kind != BodyKind::rigid) continue;
+    RigidBody& r = rigid[b];
+    r.virtual_mass = scene.ibm.virtual_mass_coefficient * scene.fluid.density * bodies[b].solid_area();
+    r.virtual_inertia = r.virtual_mass * scene.bodies[b].diameter * scene.bodies[b].diameter / 8.0;
+  }
+  arrays_.slip_increment_x = CellField(grid);
+  arrays_.slip_increment_y = CellField(grid);
+  arrays_.force_cell_x = CellField(grid);
+  arrays_.force_cell_y = CellField(grid);
+  arrays_.force_face_x = FaceField::x_faces(grid);
+  arrays_.force_face_y = FaceField::y_faces(grid);
+  std::size_t unknowns = 0;
+  for (const BodyCoupling& c : markers) unknowns += 2 * c.marker.capacity();
+  arrays_.work.reserve(unknowns);
+  arrays_.response_systems.resize(bodies.size());
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    if (bodies[b].kind != BodyKind::mass_spring) continue;
+    markers[b].body_velocity_change.assign(markers[b].marker.size(), Vec2{0.0, 0.0});
+    markers[b].response_work.assign(2 * bodies[b].n_points(), 0.0);
+  }
+  balanced_ = {&arrays_.force_cell_x, &arrays_.force_cell_y, &arrays_.force_face_x, &arrays_.force_face_y};
+}
+
+// The previous step's forces inside the Crank-Nicolson solve (when the markers are the same;
+// otherwise direct forcing as Uhlmann), then the step's force on cells and faces for the projection.
+void EndOfStepConstraint::predict(const CouplingStep& step) {
+  const Grid& grid = step.solver.grid();
+  CellField& star_x = step.solver.velocity_star_x();
+  CellField& star_y = step.solver.velocity_star_y();
+  { auto t = step.timers.time(Stage::predictor); step.solver.predict_explicit(step.fluid, step.dt); }  // u~_e
+  bool predicted = false;
+  {
+    auto t = step.timers.time(Stage::ib_forcing);
+    predicted = spread_previous_forces(grid, kernel_, step.dt, step.markers, star_x, star_y);  // u~_e + dt S F^{n-1}
+  }
+  if (!predicted) force_markers(step, kernel_, passes_);                                       // u~_e + dt f
+  {
+    auto t = step.timers.time(Stage::ib_forcing);
+    NoSlipArrays& a = arrays_;
+    spread_step_forces(grid, kernel_, step.dt, step.markers, a.force_cell_x, a.force_cell_y, a.force_face_x,
+                       a.force_face_y);  // dt S F, dt S_f F for the faces
+    // Under the face constraint the cells take the force as the mean of its face values, as they
+    // take the pressure gradient.
+    if (on_faces_)
+      cell_forces_from_faces(grid, a.force_face_x, a.force_face_y, a.force_cell_x, a.force_cell_y, star_x,
+                             star_y);  // dt A S_f F
+  }
+  { auto t = step.timers.time(Stage::predictor); step.solver.complete_prediction(step.fluid, step.dt); }  // u~ with f
+}
+
+// The backward-Euler step of each mass-spring body over dt without the fluid, from x^n, U^n with
+// its springs, dashpots and buoyant weight, factorised for the response; its velocity change
+// joins the target (the rim velocity at the end of the step).
+bool EndOfStepConstraint::prepare_body_responses(const CouplingStep& step) {
+  bool any = false;
+  for (std::size_t b = 0; b < step.bodies.size(); ++b) {
+    BodyCoupling& c = step.markers[b];
+    if (c.body_velocity_change.empty()) continue;
+    const MassSpringBody& body = step.bodies[b];
+    for (int p = 0; p < body.n_points(); ++p)
+      c.external_force[p] = body.buoyant_weight(body.mass[p], fluid_density_, gravity_);
+    arrays_.response_systems[b].velocity_change(body, step.dt, c.external_force);  // dU without the fluid
+    for (std::size_t l = 0; l < c.marker.size(); ++l)
+      for (int d = 0; d < 2; ++d) c.target_velocity[l][d] += c.external_force[l][d];
+    any = true;
+  }
+  return any;
+}
+
+// Force corrections projected with the pressure until no-slip holds at every marker.
+CouplingWork EndOfStepConstraint::hold(const CouplingStep& step) {
+  auto t = step.timers.time(Stage::ib_forcing);
+  const Grid& grid = step.solver.grid();
+  FluidState& fluid = step.fluid;
+  const WallVelocities walls = wall_velocities_at(step.solver.boundaries(), step.time_n + step.dt);
+  const bool responds = prepare_body_responses(step);
+  // -(M + dt D + dt^2 S)^{-1} rho_f dV (dt F) on the rim points of body b (markers = rim points).
+  std::vector<BodyCoupling>& markers = step.markers;
+  const BodyResponse response = [this, &markers](std::size_t b, const std::vector<Vec2>& impulse,
+                                                 std::vector<Vec2>& change) {
+    BodyCoupling& c = markers[b];
+    std::vector<double>& x = c.response_work;
+    std::fill(x.begin(), x.end(), 0.0);
+    for (std::size_t l = 0; l < c.marker.size(); ++l)
+      for (int d = 0; d < 2; ++d) x[2 * l + d] = -fluid_density_ * c.marker_volume[l] * impulse[l][d];
+    arrays_.response_systems[b].response(x);
+    for (std::size_t l = 0; l < c.marker.size(); ++l)
+      for (int d = 0; d < 2; ++d) change[l][d] = x[2 * l + d];
+  };
+  NoSlipArrays& a = arrays_;
+  const NoSlipResult result =
+      hold_no_slip(grid, kernel_, walls, step.dt, slip_tolerance_, on_faces_, on_faces_, max_products_, step.solver,
+                   fluid, markers, a.slip_increment_x, a.slip_increment_y, a.force_face_x, a.force_face_y, a.work,
+                   responds ? response : BodyResponse{});
+  keep_forces(markers);
+  // The slip of the velocity not constrained, for the series: cells and faces differ by the
+  // momentum interpolation's dt (mean(G_c) - G_f) p (§2.3).
+  if (on_faces_)
+    measure_slip(grid, kernel_, walls, fluid.velocity_x, fluid.velocity_y, markers);
+  else
+    measure_face_slip(grid, kernel_, walls, fluid.velocity_face_x, fluid.velocity_face_y, markers);
+  return {result.products, result.max_change};
+}
+
+std::string EndOfStepConstraint::forcing_stage() const {
+  return "immersed-boundary forcing (" + kernel_name_ +
+         ", no_slip coupling: the previous step's forces inside the Crank-Nicolson solve; first step " +
+         std::to_string(passes_) + " pass(es); target = marker velocity minus swelling part)";
+}
+
+std::string EndOfStepConstraint::correction_stage() const {
+  return "no-slip corrections (force corrections projected until the slip at t^{n+1} <= " +
+         fmt::format("{:g}", slip_tolerance_) + " U_ref" +
+         (has_mass_spring_ ? "; mass-spring rims: target at t^{n+1}, their linearised response in the marker system)"
+                           : ")");
+}
+
+void EndOfStepConstraint::write_checkpoint(const std::vector<BodyCoupling>& markers, CheckpointArrays& arrays) const {
+  for (std::size_t b = 0; b < markers.size(); ++b) {
+    const BodyCoupling& c = markers[b];
+    std::vector<double> forces{static_cast<double>(c.previous_force.size())};
+    for (const Vec2& force : c.previous_force) forces.insert(forces.end(), {force[0], force[1]});
+    arrays[body_prefix(b) + "previous_force"] = forces;
+  }
+}
+
+void EndOfStepConstraint::read_checkpoint(const CheckpointReader& read, std::vector<BodyCoupling>& markers) {
+  for (std::size_t b = 0; b < markers.size(); ++b) {
+    BodyCoupling& c = markers[b];
+    const std::string name = body_prefix(b) + "previous_force";
+    const std::vector<double>* found = read.find(name);
+    if (found == nullptr || found->empty()) read.fail(name, "missing");
+    const double n = (*found)[0];
+    if (!(n >= 0.0 && n <= static_cast<double>(c.previous_force.capacity()) && n == std::floor(n)))
+      read.fail(name, fmt::format("marker count {} is not in [0, {}]", n, c.previous_force.capacity()));
+    const std::vector<double>& values = read.array(name, 1 + 2 * static_cast<std::size_t>(n));
+    c.previous_force.resize(static_cast<std::size_t>(n));
+    for (std::size_t l = 0; l < c.previous_force.size(); ++l) c.previous_force[l] = {values[1 + 2 * l], values[2 + 2 * l]};
+  }
+}
+
+}  // namespace ibms
