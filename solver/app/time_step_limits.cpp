@@ -39,10 +39,12 @@ std::vector<TimeStepLimit> time_step_limits(const Scene& scene, const Simulation
                       sim.has_bodies() ? "not binding (Crank-Nicolson); with bodies consider run.max_viscous_number"
                                        : "not binding: Crank-Nicolson diffusion"});
   if (!sim.has_bodies()) return limits;
-  const double body_speed = max_point_speed(sim.bodies());
+  // The speed the run's first step sees: prescribed bodies at their largest over that step.
+  const double t0 = sim.fluid().time;
+  const double body_speed = body_travel_speed(sim, t0, t0 + planned_time_step(sim));
   limits.push_back({"marker travel (h / max|U_body|)", body_speed > 0 ? h / body_speed : HUGE_VAL,
                     max_marker_travel_cells, false,
-                    body_speed > 0 ? fmt::format("fastest body point at the start {:.4g}; adaptive runs check it every step", body_speed)
+                    body_speed > 0 ? fmt::format("fastest body point over the first step {:.4g}; adaptive runs check it every step", body_speed)
                                    : "bodies start at rest: checked every step by the adaptive step"});
   for (std::size_t b = 0; b < sim.bodies().size(); ++b) {
     const MassSpringBody& body = sim.bodies()[b];

@@ -37,7 +37,6 @@ VelocityScan scan_velocity(const Grid& grid, const FluidState& fluid) {
 // is at most end_overshoot above the step asked for (an adaptive limit drifts while the plan runs);
 // beyond that the plan is made anew. A time left that is a whole number of steps keeps its step.
 constexpr double end_approach_steps = 100.0;
-constexpr double end_overshoot = 0.05;
 
 // The whole number of steps of `step` in `time_left` (relative tolerance 1e-9), or 0.
 static double whole_steps(double time_left, double step) {
@@ -65,13 +64,31 @@ double next_time_step(const Simulation& sim, const VelocityScan& scan) {
   const double wall_speed = boundary_speed_scale(sim.scene().walls);
   const double rate = std::max(scan.max_rate, wall_speed / std::min(sim.grid().dx(), sim.grid().dy()));
   double dt = rate > 0.0 ? run.cfl / rate : run.max_time_step;
+  const double h = std::min(sim.grid().dx(), sim.grid().dy());
+  dt = std::min({dt, viscous_time_step_limit(run, h, sim.fluid_solver().kinematic_viscosity()), run.max_time_step});
   if (sim.has_bodies()) {
-    const double body_speed = max_point_speed(sim.bodies());
+    // The speed over the coming step: the bodies' points as they move now, and a prescribed body's
+    // largest speed from its motion law over [t, t + dt] of the step the other limits allow (a
+    // body that starts at rest sees the speed it is about to reach). With dt' <= dt the travel
+    // dt' max_[t, t + dt'] |U| <= dt' max_[t, t + dt] |U| stays within the limit: one pass suffices.
+    const double time = sim.fluid().time;
+    const double body_speed = body_travel_speed(sim, time, time + std::min(dt, time_left));
     if (body_speed > 0.0) dt = std::min(dt, max_marker_travel_cells * sim.grid().dx() / body_speed);
   }
-  const double h = std::min(sim.grid().dx(), sim.grid().dy());
-  dt = std::min(dt, viscous_time_step_limit(run, h, sim.fluid_solver().kinematic_viscosity()));
-  return step_to_end(std::min(dt, run.max_time_step), previous, time_left);
+  return step_to_end(dt, previous, time_left);
+}
+
+double body_travel_speed(const Simulation& sim, double t0, double t1) {
+  double speed = 0.0;
+  for (std::size_t b = 0; b < sim.bodies().size(); ++b) {
+    const MassSpringBody& body = sim.bodies()[b];
+    if (body.kind == BodyKind::prescribed) {
+      speed = std::max(speed, sim.rigid()[b].prescribed.max_point_speed(t0, t1, 0.5 * body.diameter));
+      continue;
+    }
+    for (const auto& u : body.velocity) speed = std::max(speed, std::hypot(u[0], u[1]));
+  }
+  return speed;
 }
 
 double planned_time_step(const Simulation& sim) {

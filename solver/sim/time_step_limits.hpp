@@ -19,10 +19,16 @@ struct VelocityScan {
 };
 VelocityScan scan_velocity(const Grid& grid, const FluidState& fluid);
 
-// The time step for the next step: fixed, or cfl / max rate (with moving walls counted) and,
-// with bodies, marker travel <= 0.5 h per step (docs/method.md §7 step 7), capped by
-// run.max_time_step and by the time left to run.end_time.
+// The time step for the next step: fixed, or cfl / max rate (with moving walls counted), capped
+// by run.max_viscous_number and run.max_time_step, and, with bodies, marker travel <= 0.5 h over
+// the step (docs/method.md §7 step 7; prescribed bodies at their largest speed over the step), and
+// by the time left to run.end_time.
 double next_time_step(const Simulation& sim, const VelocityScan& scan);
+
+// The speed the markers travel at over [t0, t1]: the largest point speed of the rigid and
+// mass-spring bodies now, and of the prescribed bodies the largest their motion law reaches over
+// the interval [length/time].
+double body_travel_speed(const Simulation& sim, double t0, double t1);
 
 // The step the run takes next from the state of `sim` as it is: next_time_step on a scan of it
 // (at construction: the first step, what `ibms info` plans with).
@@ -34,5 +40,9 @@ double viscous_time_step_limit(const RunSpec& run, double h, double kinematic_vi
 
 // Marker travel limit of docs/method.md §7 step 7: a marker moves at most this fraction of h per step.
 inline constexpr double max_marker_travel_cells = 0.5;
+
+// Near end_time the step keeps its length while it is at most this fraction above the limits
+// (the approach to end_time in time_step_limits.cpp: no jump of the step near the end).
+inline constexpr double end_overshoot = 0.05;
 
 }  // namespace ibms

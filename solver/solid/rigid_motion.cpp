@@ -1,11 +1,38 @@
 // Rigid and prescribed body kinematics (see rigid_motion.hpp).
 #include "solid/rigid_motion.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/constants.hpp"
 
 namespace ibms {
+
+namespace {
+
+// The smallest and largest value of cos over [a, b] (a <= b).
+std::array<double, 2> cosine_range(double a, double b) {
+  if (b - a >= 2.0 * pi) return {-1.0, 1.0};
+  std::array<double, 2> range{std::min(std::cos(a), std::cos(b)), std::max(std::cos(a), std::cos(b))};
+  if (2.0 * pi * std::ceil(a / (2.0 * pi)) <= b) range[1] = 1.0;             // a multiple of 2 pi inside
+  if (pi + 2.0 * pi * std::ceil((a - pi) / (2.0 * pi)) <= b) range[0] = -1.0;  // an odd multiple of pi inside
+  return range;
+}
+
+}  // namespace
+
+double PrescribedMotion::max_point_speed(double t0, double t1, double radius) const {
+  const double omega = period > 0.0 ? 2.0 * pi / period : 0.0;
+  const std::array<double, 2> c = omega > 0.0 ? cosine_range(omega * t0 + phase, omega * t1 + phase)
+                                              : std::array<double, 2>{0.0, 0.0};
+  double centre = 0.0, rotation = 0.0;
+  for (const double cosine : c) {
+    centre = std::max(centre, std::hypot(velocity[0] + amplitude[0] * omega * cosine,
+                                         velocity[1] + amplitude[1] * omega * cosine));
+    rotation = std::max(rotation, std::abs(angular_velocity + angle_amplitude * omega * cosine));
+  }
+  return centre + radius * rotation;
+}
 
 RigidState PrescribedMotion::at(double time) const {
   RigidState s;

@@ -32,6 +32,11 @@ struct PrescribedMotion {
   double phase = 0.0;                              // [rad]
 
   RigidState at(double time) const;  // position, angle and their exact time derivatives
+  // The largest speed any point within `radius` of the centre reaches over [t0, t1] [length/time]:
+  // max |V + A w cos(psi)| + radius max |Omega + Theta w cos(psi)|, psi = w t + phase, each taken at
+  // an end of the range of cos(psi) over the interval (|.| of a linear function of cos(psi) is
+  // convex in it): exact for a translating body, an upper bound within the sum of both parts otherwise.
+  double max_point_speed(double t0, double t1, double radius) const;
 };
 
 struct RigidBody {
