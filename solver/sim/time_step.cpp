@@ -74,7 +74,8 @@ void advance_body_stage(Simulation& sim, double time_n, double dt) {
 
 void advance_one_step(Simulation& sim, double dt) {
   const double time_n = sim.fluid().time;
-  const CouplingStep step{sim.fluid_solver(), sim.fluid(), sim.markers(), sim.bodies(), sim.timers(), time_n, dt};
+  const CouplingStep step{sim.fluid_solver(), sim.fluid(), sim.markers(), sim.bodies(), sim.rigid(), sim.timers(),
+                          time_n, dt};
   if (sim.has_bodies()) prepare_bodies(sim, time_n);            // 1. D(t^n), X^n, U_target
   sim.coupling().predict(step);                                 // 2. u~ with the IB force
   project(sim, dt);                                             // 3. u^{n+1}, U_f^{n+1}, p^{n+1}

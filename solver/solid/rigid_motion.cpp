@@ -75,10 +75,20 @@ void place_points(const RigidBody& rigid, MassSpringBody& body) {
     const auto& r0 = rigid.offsets[l];
     const double rx = c*r0[0] - sn*r0[1], ry = sn*r0[0] + c*r0[1];  // R(theta) r_l
     body.position[l] = {s.centre[0] + rx, s.centre[1] + ry};
-    body.velocity[l] = {s.velocity[0] - s.angular_velocity*ry, s.velocity[1] + s.angular_velocity*rx};
   }
   body.position[body.centre_index()] = s.centre;
-  body.velocity[body.centre_index()] = s.velocity;
+  point_velocities(rigid, s, body.velocity);
+}
+
+void point_velocities(const RigidBody& rigid, const RigidState& s, std::vector<std::array<double, 2>>& velocity) {
+  const double c = std::cos(s.angle), sn = std::sin(s.angle);
+  const std::size_t n_surface = rigid.offsets.size();
+  for (std::size_t l = 0; l < n_surface; ++l) {
+    const auto& r0 = rigid.offsets[l];
+    const double rx = c*r0[0] - sn*r0[1], ry = sn*r0[0] + c*r0[1];  // R(theta) r_l
+    velocity[l] = {s.velocity[0] - s.angular_velocity*ry, s.velocity[1] + s.angular_velocity*rx};
+  }
+  velocity[n_surface] = s.velocity;  // the centre point
 }
 
 void advance_newton_euler(double dt, const std::array<double, 2>& force, double torque, RigidBody& rigid) {

@@ -61,6 +61,9 @@ RigidBody rigid_body_of(const MassSpringBody& body, const PrescribedMotion& moti
 
 // Positions and velocities of the rim points and the centre point from the rigid state.
 void place_points(const RigidBody& rigid, MassSpringBody& body);
+// The velocities the points of `rigid` have in the state `s` (rim points, then the centre point):
+// U_l = V + Omega e_z x R(theta) r_l [length/time]. `velocity` has one entry per point.
+void point_velocities(const RigidBody& rigid, const RigidState& s, std::vector<std::array<double, 2>>& velocity);
 
 // One symplectic Euler step of Newton-Euler with the virtual mass: V += dt (F + m_v a_prev)/(m + m_v),
 // Omega += dt (T + I_v alpha_prev)/(I + I_v), X_c += dt V, theta += dt Omega.

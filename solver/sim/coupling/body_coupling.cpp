@@ -140,6 +140,20 @@ void prepare_markers(const std::vector<MassSpringBody>& bodies,
   }
 }
 
+void add_point_velocity_change(const MassSpringBody& body, const std::vector<Vec2>& change, BodyCoupling& c) {
+  const int n_rim = body.n_surface;
+  const Vec2& centre = change[body.centre_index()];
+  for (std::size_t l = 0; l < c.marker.size(); ++l) {
+    const int e0 = c.marker_edge[l];
+    const int e1 = (e0 + 1) % n_rim;
+    const double w = c.marker_fraction[l], f = c.marker_fraction_work[l];
+    for (int d = 0; d < 2; ++d) {
+      const double rim = (1.0 - w) * change[e0][d] + w * change[e1][d];
+      c.target_velocity[l][d] += f == 1.0 ? rim : centre[d] + f * (rim - centre[d]);
+    }
+  }
+}
+
 void apply_direct_forcing(const Grid& grid, KernelKind kernel, const WallVelocities& walls, double dt,
                           int n_passes, std::vector<BodyCoupling>& coupling, CellField& velocity_star_x,
                           CellField& velocity_star_y) {

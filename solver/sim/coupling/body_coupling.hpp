@@ -103,6 +103,11 @@ void prepare_markers(const std::vector<MassSpringBody>& bodies,
                      const Grid& grid, bool sub_markers, std::vector<BodyCoupling>& coupling,
                      double retraction = 0.0);
 
+// Adds to each marker's target U_target_l the change `change` of its body's point velocities (one
+// entry per body point), interpolated along the marker's rim edge and scaled by its radial factor
+// as the target itself is (prepare_markers): the target becomes that of the changed velocities.
+void add_point_velocity_change(const MassSpringBody& body, const std::vector<Vec2>& change, BodyCoupling& c);
+
 // n_passes direct-forcing passes on (velocity_star_x, velocity_star_y): interpolate u~ at X^n,
 // F = (U_target - U~)/dt, spread dt F with dV_l, u~ += dt f; accumulates F in forcing_sum.
 void apply_direct_forcing(const Grid& grid, KernelKind kernel, const WallVelocities& walls, double dt,

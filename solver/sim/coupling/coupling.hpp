@@ -33,6 +33,7 @@ struct CouplingStep {
   FluidState& fluid;
   std::vector<BodyCoupling>& markers;
   const std::vector<MassSpringBody>& bodies;
+  const std::vector<RigidBody>& rigid;  // the motion of the rigid and prescribed bodies
   StageTimers& timers;
   double time_n = 0.0;
   double dt = 0.0;

@@ -73,13 +73,24 @@ void EndOfStepConstraint::predict(const CouplingStep& step) {
   { auto t = step.timers.time(Stage::predictor); step.solver.complete_prediction(step.fluid, step.dt); }  // u~ with f
 }
 
-// The backward-Euler step of each mass-spring body over dt without the fluid, from x^n, U^n with
-// its springs, dashpots and buoyant weight, factorised for the response; its velocity change
-// joins the target (the rim velocity at the end of the step).
+// The targets at the end of the step. A prescribed body's points move at their velocity of t^{n+1}
+// from the motion law: its change since U^n joins the target, so that the force does not lag the
+// motion by a step. A mass-spring body: the backward-Euler step over dt without the fluid, from
+// x^n, U^n with its springs, dashpots and buoyant weight, factorised for the response; its velocity
+// change joins the target (the rim velocity at the end of the step).
 bool EndOfStepConstraint::prepare_body_responses(const CouplingStep& step) {
   bool any = false;
   for (std::size_t b = 0; b < step.bodies.size(); ++b) {
     BodyCoupling& c = step.markers[b];
+    if (step.bodies[b].kind == BodyKind::prescribed) {
+      const MassSpringBody& body = step.bodies[b];
+      const RigidBody& motion = step.rigid[b];
+      point_velocities(motion, motion.prescribed.at(step.time_n + step.dt), c.external_force);  // U^{n+1}
+      for (int p = 0; p < body.n_points(); ++p)
+        for (int d = 0; d < 2; ++d) c.external_force[p][d] -= body.velocity[p][d];
+      add_point_velocity_change(body, c.external_force, c);
+      continue;
+    }
     if (c.body_velocity_change.empty()) continue;
     const MassSpringBody& body = step.bodies[b];
     for (int p = 0; p < body.n_points(); ++p)
