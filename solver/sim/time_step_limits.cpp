@@ -28,7 +28,7 @@ VelocityScan scan_velocity(const Grid& grid, const FluidState& fluid) {
   return scan;
 }
 
-// The approach to end_time (docs/method.md §7.2). A step that differs from its predecessor by a
+// The approach to end_time (docs/method.md §7, "The approach to run.end_time"). A step that differs from its predecessor by a
 // fraction x makes the body forces spike by about x times the face term of the momentum
 // interpolation, dt (mean(G_c) - G_f) p, over dt: 7.5 % of c_D per unit x on DFG 2D-2 at D/h = 10,
 // decaying in three steps. So the step never jumps near the end: once end_time is within

@@ -1,4 +1,4 @@
-// The adaptive step sees where a prescribed body is going (docs/method.md §7.2): the marker
+// The adaptive step sees where a prescribed body is going (docs/method.md §7, "The approach to run.end_time"): the marker
 // travel limit takes the body's largest speed over the coming step from its motion law, so a body
 // that starts at rest in fluid at rest is not run as one step of the whole end_time; it plans the
 // same number of steps per period as one that starts at its peak speed, `ibms info`'s first step
@@ -122,7 +122,7 @@ BOOST_AUTO_TEST_CASE(a_body_that_starts_at_rest_plans_the_steps_of_one_that_star
   BOOST_TEST(at_rest.count >= 2 * 32);
   BOOST_TEST(std::abs(at_rest.count - moving.count) <= 0.1 * moving.count);
   // Within 100 steps of end_time (all of this run) the step may stay up to end_overshoot above
-  // its limits rather than jump (docs/method.md §7.2).
+  // its limits rather than jump (docs/method.md §7, "The approach to run.end_time").
   BOOST_TEST(at_rest.max_travel <= max_marker_travel_cells * (1.0 + end_overshoot));
   BOOST_TEST(moving.max_travel <= max_marker_travel_cells * (1.0 + end_overshoot));
   BOOST_TEST(at_rest.first == at_rest.planned);  // `ibms info` prints the run's first step
