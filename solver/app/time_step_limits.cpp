@@ -42,7 +42,8 @@ std::vector<TimeStepLimit> time_step_limits(const Scene& scene, const Simulation
   // The speed the run's first step sees: prescribed bodies at their largest over that step.
   const double t0 = sim.fluid().time;
   const double body_speed = body_travel_speed(sim, t0, t0 + planned_time_step(sim));
-  limits.push_back({"marker travel (h / max|U_body|)", body_speed > 0 ? h / body_speed : HUGE_VAL,
+  const double dx = sim.grid().dx();  // the run's marker travel is in cells of dx (bodies need dx = dy)
+  limits.push_back({"marker travel (h / max|U_body|)", body_speed > 0 ? dx / body_speed : HUGE_VAL,
                     max_marker_travel_cells, false,
                     body_speed > 0 ? fmt::format("fastest body point over the first step {:.4g}; adaptive runs check it every step", body_speed)
                                    : "bodies start at rest: checked every step by the adaptive step"});
@@ -62,22 +63,19 @@ std::vector<TimeStepLimit> time_step_limits(const Scene& scene, const Simulation
                       true, "4 / (gamma + sqrt(gamma^2 + 4 omega^2))"});
   }
   if (sim.has_contacts()) {
+    // The figures of the run's own bound (contact_substep_bounds), at the first step's dt.
     const ContactModel model = sim.contact_model().for_fluid_step(planned_time_step(sim));
-    const double lightest = lightest_cds_point_mass(sim.bodies());  // as contact_substep
-    const double m_eff = sim.bodies().size() > 1 ? 0.5 * lightest : lightest;  // as contact_substep (A8)
-    double heaviest = 0.0;  // as contact_substep: the stiffest collision-time pair
-    for (const MassSpringBody& body : sim.bodies())
-      if (body.kind != BodyKind::prescribed) heaviest = std::max(heaviest, body.total_mass());
+    const ContactSubstepBounds bounds = contact_substep_bounds(model, sim.bodies());
     const bool collision_time = model.law == ContactLawKind::collision_time;
-    const double pair_k = model.pair_stiffness(heaviest);
-    const double duration = contact_duration(m_eff, model.active_pairs_safety * pair_k, /*damping=*/0.0);
-    limits.push_back({"contact duration t_c (DEM)", duration, 1.0 / model.steps_per_contact, true,
+    const bool whole_body = model.effective_mass == ContactEffectiveMass::body;
+    limits.push_back({"contact duration t_c (DEM)", bounds.duration, 1.0 / model.steps_per_contact, true,
                       fmt::format("lightest CDS point, {} x {}; the sub-step is also kept below half the dashpot "
                                   "limit: {:.4g}", model.active_pairs_safety,
-                                  collision_time ? fmt::format("k = {:.4g} (collision_time: heaviest body, T_c = {:.4g} "
-                                                               "at the first step)", pair_k, model.collision_time)
+                                  collision_time ? fmt::format("k = {:.4g} (collision_time: heaviest {}, T_c = {:.4g} "
+                                                               "at the first step)", bounds.pair_stiffness,
+                                                               whole_body ? "body" : "CDS point", model.collision_time)
                                                  : std::string("k_Dn"),
-                                  contact_substep(model, sim.bodies()))});
+                                  std::min(bounds.resolution, bounds.dashpot))});
   }
   return limits;
 }

@@ -58,15 +58,12 @@ double lightest_cds_point_mass(const std::vector<MassSpringBody>& bodies, const 
 
 namespace {
 
-struct SubstepBounds {
-  double resolution = std::numeric_limits<double>::infinity();  // t_c / steps_per_contact [time]
-  double dashpot = std::numeric_limits<double>::infinity();     // dashpot stability [time]
-};
+}  // namespace
 
-SubstepBounds contact_substep_bounds(const ContactModel& model, const std::vector<MassSpringBody>& bodies,
-                                     const BodyMask& members) {
+ContactSubstepBounds contact_substep_bounds(const ContactModel& model, const std::vector<MassSpringBody>& bodies,
+                                            const BodyMask& members) {
   constexpr double dashpot_safety = 0.5;      // docs/method.md §5.3 safety factor on a stability limit
-  SubstepBounds bounds;
+  ContactSubstepBounds bounds;
   if (!model.enabled() || bodies.empty()) return bounds;
   const double lightest_point = lightest_cds_point_mass(bodies, members);
   double heaviest_body = 0.0, heaviest_point = 0.0;
@@ -97,15 +94,15 @@ SubstepBounds contact_substep_bounds(const ContactModel& model, const std::vecto
       n_active * damping_from_restitution(model.restitution_coefficient, damping_mass, per_pair_stiffness);
   // t_c = sqrt(m_eff / k) sqrt(pi^2 + ln^2 e) (A8), here from the undamped point oscillator
   // (the shortest duration; damping lengthens it).
-  bounds.resolution = contact_duration(m_eff, stiffness, /*damping=*/0.0) / model.steps_per_contact;
+  bounds.pair_stiffness = pair_k;
+  bounds.duration = contact_duration(m_eff, stiffness, /*damping=*/0.0);
+  bounds.resolution = bounds.duration / model.steps_per_contact;
   if (total_damping > 0.0) bounds.dashpot = dashpot_safety * 2.0 * lightest_point / total_damping;
   return bounds;
 }
 
-}  // namespace
-
 double contact_substep(const ContactModel& model, const std::vector<MassSpringBody>& bodies, const BodyMask& members) {
-  const SubstepBounds bounds = contact_substep_bounds(model, bodies, members);
+  const ContactSubstepBounds bounds = contact_substep_bounds(model, bodies, members);
   return std::min(bounds.resolution, bounds.dashpot);
 }
 

@@ -6,6 +6,7 @@
 // 2D, per unit depth: stiffness [force/length^2], masses [mass/length]. Knows nothing of the grid.
 #pragma once
 #include <array>
+#include <limits>
 #include <vector>
 
 #include "solid/mass_spring_body.hpp"
@@ -94,6 +95,15 @@ struct WallBox {
 // members: the bodies of one contact group (contact_groups below); empty = all bodies.
 double contact_substep(const ContactModel& model, const std::vector<MassSpringBody>& bodies,
                        const BodyMask& members = {});
+// The parts of contact_substep, for `ibms info` to print the figures the run uses.
+struct ContactSubstepBounds {
+  double pair_stiffness = 0.0;  // k of the stiffest pair (k_Dn, or collision_time's for the heaviest m_eff) [force/length^2]
+  double duration = std::numeric_limits<double>::infinity();    // t_c of the lightest point in active_pairs_safety such pairs [time]
+  double resolution = std::numeric_limits<double>::infinity();  // t_c / steps_per_contact [time]
+  double dashpot = std::numeric_limits<double>::infinity();     // dashpot stability, safety 0.5 [time]
+};
+ContactSubstepBounds contact_substep_bounds(const ContactModel& model, const std::vector<MassSpringBody>& bodies,
+                                            const BodyMask& members = {});
 // The dashpot part of contact_substep alone: pure dashpot dt <= 2 m / c of the lightest CDS point
 // in active_pairs_safety pairs, safety 0.5. Infinity without damping [time].
 double contact_dashpot_substep(const ContactModel& model, const std::vector<MassSpringBody>& bodies,
