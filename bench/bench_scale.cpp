@@ -1,0 +1,174 @@
+// How the cost of a step grows with the number of bodies, run on demand, printing figures: n x n
+// bodies settling in a closed box of fluid, the box and its grid growing with them (1.6 D per body
+// and direction, D/h = 16, 50 rim points each), the papers' contacts (k_Dn = 1e7, e_D = 0.5, CDS
+// on the rim points, walls on), series every 10 steps, the final snapshot and checkpoint, one
+// thread, a fixed step. Kinds: rigid disks, mass-spring wheels, swelling wheels; optionally a
+// resting bed (the bodies start in touch, rows of spacing D from the floor up). For each run it
+// prints each stage's time per step from the solver's own timers and its ratio to the fluid stages
+// (predictor + projection), and for each kind the least-squares exponent p of cost per step ~ N^p
+// over the numbers of bodies run (N = n^2).
+// Usage: bench_scale [--n 4,8,16,32] [--kinds rigid,wheel,swelling] [--steps 40] [--bed]
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "scene/scene_reader.hpp"
+#include "sim/run/run.hpp"
+#include "sim/simulation.hpp"
+
+using namespace ibms;
+
+namespace {
+
+constexpr double diameter = 1.0, spacing = 1.6;  // D, and the box per body and direction [length]
+constexpr int cells_per_diameter = 16, rim_points = 50;
+
+// The scene of n x n bodies of `kind` (rigid | wheel | swelling) as TOML.
+std::string scene_text(int n, const std::string& kind, int steps, bool bed, const std::string& output) {
+  const double length = spacing * n;
+  const int cells = static_cast<int>(std::lround(length * cells_per_diameter / diameter));
+  std::string text = fmt::format(R"([run]
+end_time = {}
+time_step = 0.002
+[domain]
+length_x = {}
+length_y = {}
+cells_x = {}
+cells_y = {}
+[fluid]
+density = 1.0
+kinematic_viscosity = 0.01
+gravity = [0.0, -10.0]
+[ibm]
+kernel = "roma3"
+)", 0.002 * steps, length, length, cells, cells);
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      // Spread over the box, or a bed: rows of spacing D (in touch) from the floor up, centred.
+      const double x = bed ? 0.5 * length + (i - 0.5 * (n - 1)) * diameter : (i + 0.5) * spacing;
+      const double y = bed ? 0.5 * diameter + j * diameter : (j + 0.5) * spacing;
+      text += fmt::format("[[bodies]]\ncentre = [{}, {}]\ndiameter = {}\nn_surface_points = {}\ndensity = 1.5\n", x, y,
+                          diameter, rim_points);
+      if (kind == "rigid") text += "kind = \"rigid\"\n";
+      else text += "spring_stiffness = 2.0e4\nrestitution_coefficient = 0.5\n";
+      if (kind == "swelling")
+        text += "[bodies.swelling]\nonset_time = 0.0\nrate = 0.1\nmax_diameter = 1.1\n";
+    }
+  text += fmt::format(R"([contact]
+stiffness = 1.0e7
+restitution_coefficient = 0.5
+cds_radius = {}
+walls = true
+[output]
+file = "{}"
+series_every = 10
+centreline_profiles = false
+progress = false
+)", 0.5 * diameter / cells_per_diameter, output);
+  return text;
+}
+
+struct Figures {
+  int bodies = 0, cells = 0;
+  long steps = 0;
+  double fluid = 0, ib = 0, bodies_stage = 0, contacts = 0, output = 0, other = 0, wall = 0;
+};
+
+Figures run(int n, const std::string& kind, int steps, bool bed) {
+  const std::filesystem::path scratch =
+      std::filesystem::temp_directory_path() / ("ibms_bench_scale_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(scratch);
+  struct Cleanup {
+    std::filesystem::path path;
+    ~Cleanup() { std::filesystem::remove_all(path); }
+  } cleanup{scratch};
+  const std::string out = (scratch / "run.h5").string();
+  const Scene scene = read_scene_string(scene_text(n, kind, steps, bed, out), "bench_scale.toml");
+  Simulation sim(scene);
+  const RunSummary summary = run_simulation(sim, {out, /*quiet=*/true});
+  const StageTimers& t = sim.timers();
+  Figures f;
+  f.bodies = n * n;
+  f.cells = scene.domain.cells_x * scene.domain.cells_y;
+  f.steps = summary.steps;
+  f.fluid = t.seconds(Stage::predictor) + t.seconds(Stage::projection);
+  f.ib = t.seconds(Stage::ib_forcing) + t.seconds(Stage::schedules);
+  f.contacts = t.seconds(Stage::contacts);
+  f.bodies_stage = t.seconds(Stage::bodies);
+  f.output = t.seconds(Stage::output);
+  f.other = t.seconds(Stage::diagnostics);
+  f.wall = summary.wall_seconds;
+  return f;
+}
+
+// Least-squares slope of log y against log x.
+double exponent(const std::vector<double>& x, const std::vector<double>& y) {
+  double sx = 0, sy = 0, sxx = 0, sxy = 0;
+  const double m = static_cast<double>(x.size());
+  for (std::size_t k = 0; k < x.size(); ++k) {
+    const double lx = std::log(x[k]), ly = std::log(y[k]);
+    sx += lx; sy += ly; sxx += lx * lx; sxy += lx * ly;
+  }
+  return (m * sxy - sx * sy) / (m * sxx - sx * sx);
+}
+
+std::vector<std::string> split(const std::string& text) {
+  std::vector<std::string> items;
+  std::stringstream in(text);
+  for (std::string item; std::getline(in, item, ',');) items.push_back(item);
+  return items;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<std::string> sizes{"4", "8", "16", "32"}, kinds{"rigid", "wheel", "swelling"};
+  int steps = 40;
+  bool bed = false;
+  for (int a = 1; a < argc; ++a) {
+    const std::string arg = argv[a];
+    if (arg == "--n" && a + 1 < argc) sizes = split(argv[++a]);
+    else if (arg == "--kinds" && a + 1 < argc) kinds = split(argv[++a]);
+    else if (arg == "--steps" && a + 1 < argc) steps = std::atoi(argv[++a]);
+    else if (arg == "--bed") bed = true;
+    else {
+      std::fprintf(stderr, "usage: bench_scale [--n 4,8,16,32] [--kinds rigid,wheel,swelling] [--steps 40] [--bed]\n");
+      return 2;
+    }
+  }
+  try {
+    std::printf("bench_scale: n x n bodies, D/h = %d, %d rim points, k_Dn = 1e7, series every 10 steps, %d steps%s, one "
+                "thread\n", cells_per_diameter, rim_points, steps, bed ? ", a resting bed" : "");
+    std::printf("  %-9s %6s %8s | ms per step: %8s %8s %8s %8s %8s %8s | / fluid: %6s %6s %6s %6s\n", "kind", "bodies",
+                "cells", "fluid", "IB", "bodies", "contacts", "output", "run", "IB", "bodies", "output", "run");
+    for (const std::string& kind : kinds) {
+      std::vector<double> n_bodies, per_step, fluid_per_step;
+      for (const std::string& size : sizes) {
+        const Figures f = run(std::atoi(size.c_str()), kind, steps, bed);
+        const double per = 1e3 / static_cast<double>(f.steps);
+        std::printf("  %-9s %6d %8d | %25.3f %8.3f %8.3f %8.3f %8.3f %8.3f | %16.2f %6.2f %6.2f %6.2f\n", kind.c_str(),
+                    f.bodies, f.cells, f.fluid * per, f.ib * per, f.bodies_stage * per, f.contacts * per,
+                    f.output * per, f.wall * per, f.ib / f.fluid, f.bodies_stage / f.fluid, f.output / f.fluid,
+                    f.wall / f.fluid);
+        std::fflush(stdout);
+        n_bodies.push_back(f.bodies);
+        per_step.push_back(f.wall / f.steps);
+        fluid_per_step.push_back(f.fluid / f.steps);
+      }
+      if (n_bodies.size() > 1)
+        std::printf("  %-9s cost per step ~ N^%.2f (the fluid stages ~ N^%.2f; cells grow like N)\n", kind.c_str(),
+                    exponent(n_bodies, per_step), exponent(n_bodies, fluid_per_step));
+    }
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "bench_scale: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}
