@@ -123,6 +123,7 @@ struct GroupSum {
   std::pair<int, int> group;
   std::array<double, 2> normal_sum{0.0, 0.0};
   int n_pairs = 0;
+  double length = 0.0;    // mean_normal_length of the group
   double parallel = 0.0;  // S
 };
 
@@ -143,16 +144,12 @@ void count_parallel_pairs(const std::vector<ActiveContact>& contacts, std::vecto
     group_of[k] = static_cast<int>(g);
   }
   for (GroupSum& g : groups) {
-    const double length = std::hypot(g.normal_sum[0], g.normal_sum[1]);
-    // Normals that cancel (a body squeezed from both sides) have no common direction: count them.
-    if (!(length > 1e-12 * g.n_pairs)) g.parallel = g.n_pairs;
+    g.length = mean_normal_length(g.normal_sum, g.n_pairs);
+    if (g.length == 0.0) g.parallel = g.n_pairs;  // normals that cancel have no common direction: count them
   }
   for (std::size_t k = 0; k < contacts.size(); ++k) {
     GroupSum& g = groups[group_of[k]];
-    const double length = std::hypot(g.normal_sum[0], g.normal_sum[1]);
-    if (!(length > 1e-12 * g.n_pairs)) continue;
-    const double projection = (contacts[k].normal[0]*g.normal_sum[0] + contacts[k].normal[1]*g.normal_sum[1]) / length;
-    g.parallel += projection * projection;
+    if (g.length != 0.0) g.parallel += parallel_share(contacts[k].normal, g.normal_sum, g.length);
   }
   sharing.resize(contacts.size());
   for (std::size_t k = 0; k < contacts.size(); ++k) sharing[k] = groups[group_of[k]].parallel;

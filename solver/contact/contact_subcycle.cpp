@@ -5,6 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "contact/normal_contact_law.hpp"
 #include "core/collatz_wielandt.hpp"
 #include "core/constants.hpp"
 #include "solid/spring_dashpot.hpp"
@@ -252,21 +253,16 @@ void ContactSubcycler::contact_forces(const ContactModel& model, double time, do
   stats.n_wall_contacts = std::max(stats.n_wall_contacts, static_cast<int>(active_.size()) - n_pairs);
   pair_checks_ += static_cast<long>(near_.size());
   if (active_.empty()) return;
-  // S of each share, as count_parallel_pairs in contact_forces.cpp: sum of (n_p . N)^2 with N the
-  // unit mean normal; normals that cancel count one each. The length of each share's normal sum
-  // is taken once, before the sum over its pairs.
+  // S of each share (normal_contact_law.hpp: mean_normal_length, parallel_share).
   if (model.share_damping_among_active_pairs) {
     for (const int k : touched_) {
       Share& s = shares_[k];
-      const double length = std::hypot(s.normal_sum[0], s.normal_sum[1]);
-      s.length = length > 1e-12 * s.n_active ? length : 0.0;
+      s.length = mean_normal_length(s.normal_sum, s.n_active);
       if (s.length == 0.0) s.parallel = static_cast<double>(s.n_active);
     }
     for (const Active& a : active_) {
       Share& s = shares_[a.share];
-      if (s.length == 0.0) continue;
-      const double projection = (a.normal[0]*s.normal_sum[0] + a.normal[1]*s.normal_sum[1]) / s.length;
-      s.parallel += projection * projection;
+      if (s.length != 0.0) s.parallel += parallel_share(a.normal, s.normal_sum, s.length);
     }
     for (const int k : touched_) shares_[k].inverse_sqrt_s = 1.0 / std::sqrt(shares_[k].parallel);
   }
@@ -276,7 +272,7 @@ void ContactSubcycler::contact_forces(const ContactModel& model, double time, do
   const double* const v = points_.v.data();
   for (const Active& a : active_) {
     stats.max_overlap = std::max(stats.max_overlap, a.overlap);
-    // F_a = -(k delta - c v_n) n, v_n = (U_b - U_a) . n (normal_contact_law.hpp); walls are at rest.
+    // The law of normal_contact_law.hpp, v_n = (U_b - U_a) . n; walls are at rest.
     double relative_u = -u[a.a], relative_v = -v[a.a];
     if (a.b >= 0) {
       relative_u += u[a.b];
@@ -284,14 +280,13 @@ void ContactSubcycler::contact_forces(const ContactModel& model, double time, do
     }
     double damping = a.damping;
     if (model.share_damping_among_active_pairs) damping *= shares_[a.share].inverse_sqrt_s;
-    const double normal_rate = relative_u*a.normal[0] + relative_v*a.normal[1];
-    const double push = a.stiffness * a.overlap - damping * normal_rate;
-    force_x[a.a] -= push * a.normal[0];
-    force_y[a.a] -= push * a.normal[1];
+    const Vec force = contact_force_on_first({a.stiffness, damping}, {a.overlap, a.normal, {relative_u, relative_v}});
+    force_x[a.a] += force[0];
+    force_y[a.a] += force[1];
     forced_.push_back(a.a);
     if (a.b >= 0) {
-      force_x[a.b] += push * a.normal[0];
-      force_y[a.b] += push * a.normal[1];
+      force_x[a.b] -= force[0];
+      force_y[a.b] -= force[1];
       forced_.push_back(a.b);
     }
   }
