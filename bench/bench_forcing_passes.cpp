@@ -48,7 +48,9 @@ Row settling(int n_x, int passes) {
   const Scene scene = read_scene_file(std::string(IBMS_SOURCE_DIR) + "/validation/settling_disk/scene_rigid.toml",
                                       {"domain.cells_x=" + std::to_string(n_x), "domain.cells_y=" + std::to_string(3 * n_x),
                                        "bodies.0.n_surface_points=" + std::to_string(markers),
-                                       "ibm.forcing_passes=" + std::to_string(passes)});
+                                       "ibm.forcing_passes=" + std::to_string(passes),
+                                       // the passes of the papers' coupling (the scene ships the end-of-step one)
+                                       "ibm.coupling=uhlmann", "ibm.marker_retraction=0"});
   Simulation sim(scene);
   VelocityScan scan = scan_velocity(sim.grid(), sim.fluid());
   double max_speed = 0, max_slip_ratio = 0;

@@ -103,7 +103,8 @@ Outcome run_case(const Scene& scene, bool fixed_steps, bool check_speed) {
 
 Scene settling_scene(double dt, double spring_stiffness) {
   Scene s = read_scene_file(std::string(IBMS_SOURCE_DIR) + "/validation/settling_disk/scene.toml",
-                            {"domain.cells_x=40", "domain.cells_y=120", "bodies.0.n_surface_points=16",
+                            {"ibm.coupling=uhlmann", "ibm.marker_retraction=0",  // the maps of the papers' coupling
+                             "domain.cells_x=40", "domain.cells_y=120", "bodies.0.n_surface_points=16",
                              "run.end_time=0.1", "run.time_step=" + std::to_string(dt),
                              "bodies.0.spring_stiffness=" + std::to_string(spring_stiffness),
                              "bodies.0.spring_integrator=explicit"});  // the map of the explicit springs
@@ -112,7 +113,8 @@ Scene settling_scene(double dt, double spring_stiffness) {
 
 Scene collision_scene(double dt, double spring_stiffness, double dem_stiffness) {
   Scene s = read_scene_file(std::string(IBMS_SOURCE_DIR) + "/validation/settling_disk/scene.toml",
-                            {"domain.length_y=1.0", "domain.cells_x=40", "domain.cells_y=20", "bodies.0.centre=[0.85, 0.5]", "bodies.0.density=2.0",
+                            {"ibm.coupling=uhlmann", "ibm.marker_retraction=0",  // the maps of the papers' coupling
+                             "domain.length_y=1.0", "domain.cells_x=40", "domain.cells_y=20", "bodies.0.centre=[0.85, 0.5]", "bodies.0.density=2.0",
                              "bodies.0.n_surface_points=16", "fluid.gravity=[0.0, 0.0]", "run.end_time=0.08",
                              "run.time_step=" + std::to_string(dt), "bodies.0.spring_stiffness=" + std::to_string(spring_stiffness),
                              "contact.stiffness=" + std::to_string(dem_stiffness), "contact.restitution_coefficient=0.9",
