@@ -27,6 +27,7 @@
 #include <string>
 #include <vector>
 
+#include "bench/bench_paths.hpp"
 #include "scene/scene_reader.hpp"
 #include "sim/run/run.hpp"
 #include "sim/simulation.hpp"
@@ -46,15 +47,8 @@ struct Figures {
 Figures run_and_time(const std::string& scene_path, const std::vector<std::string>& overrides) {
   const Scene scene = read_scene_file(scene_path, overrides);
   Simulation sim(scene);
-  // A private scratch folder (concurrent benches do not collide), removed also on an exception.
-  const std::filesystem::path scratch =
-      std::filesystem::temp_directory_path() / ("ibms_bench_bodies_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(scratch);
-  struct Cleanup {
-    std::filesystem::path path;
-    ~Cleanup() { std::filesystem::remove_all(path); }
-  } cleanup{scratch};
-  const RunSummary summary = run_simulation(sim, {(scratch / "run.h5").string(), /*quiet=*/true});
+  const BenchScratch scratch("ibms_bench_bodies");
+  const RunSummary summary = run_simulation(sim, {(scratch.path / "run.h5").string(), /*quiet=*/true});
   const StageTimers& t = sim.timers();
   Figures f;
   f.steps = summary.steps;

@@ -19,6 +19,7 @@
 
 #include <fmt/format.h>
 
+#include "bench/bench_paths.hpp"
 #include "scene/scene_reader.hpp"
 #include "sim/run/run.hpp"
 #include "sim/simulation.hpp"
@@ -82,14 +83,8 @@ struct Figures {
 };
 
 Figures run(int n, const std::string& kind, int steps, bool bed) {
-  const std::filesystem::path scratch =
-      std::filesystem::temp_directory_path() / ("ibms_bench_scale_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(scratch);
-  struct Cleanup {
-    std::filesystem::path path;
-    ~Cleanup() { std::filesystem::remove_all(path); }
-  } cleanup{scratch};
-  const std::string out = (scratch / "run.h5").string();
+  const BenchScratch scratch("ibms_bench_scale");
+  const std::string out = (scratch.path / "run.h5").string();
   const Scene scene = read_scene_string(scene_text(n, kind, steps, bed, out), "bench_scale.toml");
   Simulation sim(scene);
   const RunSummary summary = run_simulation(sim, {out, /*quiet=*/true});

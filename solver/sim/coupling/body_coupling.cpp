@@ -31,6 +31,18 @@ void resize_markers(BodyCoupling& c, std::size_t n) {
 inline double face_mean_x(const FaceField& face_x, int i, int j) { return 0.5 * (face_x(i, j) + face_x(i + 1, j)); }
 inline double face_mean_y(const FaceField& face_y, int i, int j) { return 0.5 * (face_y(i, j) + face_y(i, j + 1)); }
 
+// The value at marker l of a quantity given per body point (the point velocities, or their
+// change): linear along the marker's rim edge, and, for a retracted marker, its part relative to
+// the centre point scaled by the marker's radial factor (exact for a rigid motion and a dilation).
+inline double marker_value(const std::vector<Vec2>& point, const Vec2& centre, const BodyCoupling& c, std::size_t l,
+                           int n_rim, int d) {
+  const int e0 = c.marker_edge[l];
+  const int e1 = (e0 + 1) % n_rim;
+  const double w = c.marker_fraction[l], f = c.marker_fraction_work[l];
+  const double rim = (1.0 - w) * point[e0][d] + w * point[e1][d];
+  return f == 1.0 ? rim : centre[d] + f * (rim - centre[d]);
+}
+
 }  // namespace
 
 BodyCoupling::BodyCoupling(const MassSpringBody& body, std::size_t max_markers)
@@ -127,31 +139,17 @@ void prepare_markers(const std::vector<MassSpringBody>& bodies,
     // U_target is linear in (U, X), so a sub-marker's target is the linear interpolation of its
     // edge end points' targets; a retracted marker's velocity relative to the centre point is
     // scaled by its radial factor.
-    for (std::size_t l = 0; l < c.marker.size(); ++l) {
-      const int e0 = c.marker_edge[l];
-      const int e1 = (e0 + 1) % n_rim;
-      const double w = c.marker_fraction[l];
-      for (int d = 0; d < 2; ++d) {
-        const double rim = (1.0 - w) * body.velocity[e0][d] + w * body.velocity[e1][d];
-        const double u = radial_factor[l] == 1.0 ? rim : v_c[d] + radial_factor[l] * (rim - v_c[d]);
-        c.target_velocity[l][d] = u - growth * (c.marker[l][d] - x_c[d]);
-      }
-    }
+    for (std::size_t l = 0; l < c.marker.size(); ++l)
+      for (int d = 0; d < 2; ++d)
+        c.target_velocity[l][d] =
+            marker_value(body.velocity, v_c, c, l, n_rim, d) - growth * (c.marker[l][d] - x_c[d]);
   }
 }
 
 void add_point_velocity_change(const MassSpringBody& body, const std::vector<Vec2>& change, BodyCoupling& c) {
-  const int n_rim = body.n_surface;
   const Vec2& centre = change[body.centre_index()];
-  for (std::size_t l = 0; l < c.marker.size(); ++l) {
-    const int e0 = c.marker_edge[l];
-    const int e1 = (e0 + 1) % n_rim;
-    const double w = c.marker_fraction[l], f = c.marker_fraction_work[l];
-    for (int d = 0; d < 2; ++d) {
-      const double rim = (1.0 - w) * change[e0][d] + w * change[e1][d];
-      c.target_velocity[l][d] += f == 1.0 ? rim : centre[d] + f * (rim - centre[d]);
-    }
-  }
+  for (std::size_t l = 0; l < c.marker.size(); ++l)
+    for (int d = 0; d < 2; ++d) c.target_velocity[l][d] += marker_value(change, centre, c, l, body.n_surface, d);
 }
 
 void apply_direct_forcing(const Grid& grid, KernelKind kernel, const WallVelocities& walls, double dt,
