@@ -3,6 +3,7 @@
 // is mapped to the interior cell it reads/writes, with the side of the wall it mirrors across.
 #include "ibm/ib_operators.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -207,6 +208,30 @@ void interpolate_faces(const Grid& grid, KernelKind kernel, const WallVelocities
     }
     velocity_out[l] = {u_sum, v_sum};
   }
+}
+
+void marker_node_weights(const Grid& grid, KernelKind kernel, const std::array<double, 2>& marker, bool on_faces,
+                         int component, std::vector<NodeWeight>& out) {
+  const auto [cx, cy, fx, fy] = face_stencils(grid, kernel, marker);
+  // u on (fx, cy) and v on (cx, fy) for the faces; both on (cx, cy) for the centres.
+  const MappedStencil& sx = on_faces && component == 0 ? fx : cx;
+  const MappedStencil& sy = on_faces && component == 1 ? fy : cy;
+  const int ni = on_faces && component == 0 ? grid.nx + 1 : grid.nx;
+  out.clear();
+  for (int ky = 0; ky < sy.n_nodes; ++ky)
+    for (int kx = 0; kx < sx.n_nodes; ++kx) {
+      const double sign = (sx.ghost_side[kx] != 0) == (sy.ghost_side[ky] != 0) ? 1.0 : -1.0;
+      out.push_back({sx.cell[kx] + ni * sy.cell[ky], sign * sx.weight[kx] * sy.weight[ky]});
+    }
+  std::sort(out.begin(), out.end(), [](const NodeWeight& a, const NodeWeight& b) { return a.node < b.node; });
+  std::size_t kept = 0;
+  for (std::size_t k = 0; k < out.size(); ++k) {
+    if (kept > 0 && out[kept - 1].node == out[k].node)
+      out[kept - 1].weight += out[k].weight;
+    else
+      out[kept++] = out[k];
+  }
+  out.resize(kept);
 }
 
 }  // namespace ibms

@@ -53,4 +53,18 @@ void interpolate_faces(const Grid& grid, KernelKind kernel, const WallVelocities
                        const FaceField& face_y, const std::vector<std::array<double, 2>>& markers,
                        std::vector<std::array<double, 2>>& velocity_out);
 
+// One node that a marker touches: its index in the component's field (i + j ni) and the signed
+// weight phi phi (-1 per wall reflection), so that spreading adds weight F dV / (dx dy) to the node
+// and the linear part of interpolation sums weight * value.
+struct NodeWeight {
+  int node = 0;
+  double weight = 0.0;
+};
+
+// The nodes of velocity component `component` (0: u, 1: v) that marker X touches, on the cell
+// centres (interpolate / spread) or on that component's faces (interpolate_faces / spread_to_faces),
+// sorted by node with the mirrored shares of one node summed. Replaces `out`.
+void marker_node_weights(const Grid& grid, KernelKind kernel, const std::array<double, 2>& marker, bool on_faces,
+                         int component, std::vector<NodeWeight>& out);
+
 }  // namespace ibms

@@ -111,6 +111,9 @@ std::vector<std::array<double, 2>> falling_velocities(bool rigid) {
   ibms::set_thread_count(1);
   ibms::Scene scene = ibms::read_scene_file(IBMS_SCENE_FALLING_WHEEL);
   if (rigid) scene.bodies[0].kind = ibms::BodySpec::Kind::rigid;
+  // The marker system solved far below the differences compared: at the scene's 1e-3 U the two
+  // velocities move by up to 0.9 % with the GMRES's stopping point alone.
+  scene.ibm.slip_tolerance = 1e-5;
   ibms::Simulation sim(scene);
   std::vector<std::array<double, 2>> velocities;
   const int steps = static_cast<int>(std::lround(scene.run.end_time / scene.run.time_step));
@@ -130,16 +133,18 @@ std::vector<std::array<double, 2>> falling_velocities(bool rigid) {
 
 BOOST_AUTO_TEST_CASE(a_stiff_mass_spring_wheel_falls_as_the_rigid_disk_under_the_face_constraint) {
   // k_s = 5000: sqrt(k_s / M_i) dt ~ 4.6, so a force on one rim point moves the whole wheel within
-  // the step; the response solved with the constraint carries that (measured: the vertical
-  // velocities agree within 0.15 % at steps 100-200, 0.34 % at t = 2; under the papers' coupling
-  // this wheel's body guard stops the run at step 287).
+  // the step; the response solved with the constraint carries that (under the papers' coupling this
+  // wheel's body guard stops the run at step 287). Measured with the marker system solved to 1e-5 U:
+  // the wheel falls 0.56-0.63 % faster than the disk at steps 100-200; the gap is the wheel's own
+  // compliance, not the step's error: it grows to 0.79 % at dt / 2 and 0.98 % at dt / 4, where
+  // backward Euler damps the wheel's spring modes less.
   const auto wheel = falling_velocities(false);
   const auto disk = falling_velocities(true);
   BOOST_TEST_REQUIRE(wheel.size() == 4u);
   for (std::size_t k = 1; k < wheel.size(); ++k) {  // from step 100 on: after the launch transient
     BOOST_TEST_MESSAGE("step " << 50 * (k + 1) << ": wheel " << wheel[k][1] << ", rigid disk " << disk[k][1]);
-    BOOST_TEST(std::abs(wheel[k][1] / disk[k][1] - 1.0) <= 0.002);
-    BOOST_TEST(std::abs(wheel[k][0]) <= 1e-4);  // falls straight: 4e-6 measured (the GMRES stops at a slip of 1e-3 U)
+    BOOST_TEST(std::abs(wheel[k][1] / disk[k][1] - 1.0) <= 0.01);
+    BOOST_TEST(std::abs(wheel[k][0]) <= 1e-4);  // falls straight
   }
 }
 

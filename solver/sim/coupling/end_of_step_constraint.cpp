@@ -37,6 +37,7 @@ EndOfStepConstraint::EndOfStepConstraint(const Scene& scene, const Grid& grid, K
   std::size_t unknowns = 0;
   for (const BodyCoupling& c : markers) unknowns += 2 * c.marker.capacity();
   arrays_.work.reserve(unknowns);
+  arrays_.preconditioner.reserve(markers);
   arrays_.response_systems.resize(bodies.size());
   for (std::size_t b = 0; b < bodies.size(); ++b) {
     if (bodies[b].kind != BodyKind::mass_spring) continue;
@@ -127,7 +128,7 @@ CouplingWork EndOfStepConstraint::hold(const CouplingStep& step) {
   const NoSlipResult result =
       hold_no_slip(grid, kernel_, walls, step.dt, slip_tolerance_, on_faces_, on_faces_, max_products_, step.solver,
                    fluid, markers, a.slip_increment_x, a.slip_increment_y, a.force_face_x, a.force_face_y, a.work,
-                   responds ? response : BodyResponse{});
+                   responds ? response : BodyResponse{}, &a.preconditioner);
   keep_forces(markers);
   // The slip of the velocity not constrained, for the series: cells and faces differ by the
   // momentum interpolation's dt (mean(G_c) - G_f) p (§2.3).

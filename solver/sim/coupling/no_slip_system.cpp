@@ -17,6 +17,7 @@ void NoSlipWorkspace::reserve(std::size_t n) {
   rhs.reserve(n);
   solution.reserve(n);
   residual.reserve(n);
+  preconditioned.reserve(n);
 }
 
 namespace {
@@ -54,9 +55,16 @@ NoSlipResult hold_no_slip(const Grid& grid, KernelKind kernel, const WallVelocit
                           double tolerance, bool on_faces, bool cells_from_faces, int max_products, FluidSolver& solver, FluidState& state,
                           std::vector<BodyCoupling>& coupling, CellField& increment_x, CellField& increment_y,
                           FaceField& face_increment_x, FaceField& face_increment_y, NoSlipWorkspace& work,
-                          const BodyResponse& response) {
+                          const BodyResponse& response, MarkerPreconditioner* preconditioner) {
   NoSlipResult result;
   const std::size_t n = unknowns(coupling);
+  work.preconditioned.resize(n);
+  // x = M^-1 v (marker_preconditioner.hpp), or v without a preconditioner.
+  const auto precondition = [&](const double* v) -> const double* {
+    if (preconditioner == nullptr) return v;
+    preconditioner->apply(coupling, v, work.preconditioned.data());
+    return work.preconditioned.data();
+  };
   const int m_max = NoSlipWorkspace::restart;
   const WallVelocities at_rest{};  // the increments have homogeneous wall data
   // dt S dF onto the cells and the faces, dt dF in pass_increment.
@@ -84,7 +92,7 @@ NoSlipResult hold_no_slip(const Grid& grid, KernelKind kernel, const WallVelocit
   };
   // y = J P_0 S (U_ref x) / U_ref: the cell or face part of the projected increment at the markers,
   // less the rim's response to it where the body responds.
-  const auto apply = [&](const double* x, double* y) {
+  const auto product = [&](const double* x, double* y) {
     scatter(x, coupling);
     spread_increment();
     solver.homogeneous_projection(dt, increment_x, increment_y, &face_increment_x, &face_increment_y);
@@ -107,8 +115,11 @@ NoSlipResult hold_no_slip(const Grid& grid, KernelKind kernel, const WallVelocit
     }
     ++result.products;
   };
+  // The right-preconditioned system: y = A M^-1 v.
+  const auto apply = [&](const double* v, double* y) { product(precondition(v), y); };
 
   double previous_slip = HUGE_VAL;
+  bool prepared = false;
   for (;;) {
     update_body_change();
     // The slip of the constrained velocity, r = (U_target - J u) / U_ref of u^{n+1} or J_f U_f^{n+1}
@@ -121,7 +132,7 @@ NoSlipResult hold_no_slip(const Grid& grid, KernelKind kernel, const WallVelocit
     if (slip > 0.5 * previous_slip) break;
     previous_slip = slip;
     work.rhs.resize(n);
-    work.solution.assign(n, 0.0);
+    work.solution.resize(n);
     work.residual.resize(n);
     {
       std::size_t k = 0;
@@ -129,6 +140,18 @@ NoSlipResult hold_no_slip(const Grid& grid, KernelKind kernel, const WallVelocit
         for (const auto& r : c.pass_increment)
           for (int d = 0; d < 2; ++d) work.rhs[k++] = r[d] / c.slip_reference_speed;
     }
+    // The preconditioner at the step's markers, once the slip asks for a correction: the blocks, and
+    // each body's leak from one product for all bodies (the leak of one body at another's markers
+    // is left out; the product overwrites pass_increment, read above), both kept while no body moves.
+    if (preconditioner != nullptr && !prepared) {
+      if (preconditioner->factorise(grid, kernel, on_faces, coupling)) {
+        preconditioner->normal_pattern(coupling, work.solution.data());
+        product(work.solution.data(), work.residual.data());
+        preconditioner->set_leaks(coupling, work.residual.data());
+      }
+      prepared = true;
+    }
+    std::fill(work.solution.begin(), work.solution.end(), 0.0);
     // One GMRES cycle from x = 0, stopped when the true residual's largest marker slip is half the
     // tolerance (the margin absorbs the round-off of applying the correction on the grid).
     const double beta = std::sqrt(dot(work.rhs.data(), work.rhs.data(), n));
@@ -179,8 +202,9 @@ NoSlipResult hold_no_slip(const Grid& grid, KernelKind kernel, const WallVelocit
     }
     for (int i = 0; i < m; ++i)
       for (std::size_t k = 0; k < n; ++k) work.solution[k] += work.coefficients[i] * V[i * n + k];
-    // The correction: forcing_sum += U_ref x / dt; u^{n+1}, U_f^{n+1}, p^{n+1} += the projection of S (U_ref x).
-    scatter(work.solution.data(), coupling);
+    // The correction x = M^-1 V y: forcing_sum += U_ref x / dt; u^{n+1}, U_f^{n+1}, p^{n+1} += the
+    // projection of S (U_ref x).
+    scatter(precondition(work.solution.data()), coupling);
     for (BodyCoupling& c : coupling)
       for (std::size_t l = 0; l < c.marker.size(); ++l)
         for (int d = 0; d < 2; ++d) c.forcing_sum[l][d] += c.pass_increment[l][d] / dt;

@@ -12,7 +12,8 @@
 // momentum interpolation's dt (mean(G_c) - G_f) p (§2.3): the other one's slip is measured, not
 // held. The pressure takes the gradient part of the force. The system is small (two unknowns per
 // marker) and solved by GMRES with restarts (Saad & Schultz 1986), one Poisson solve per product; the unknowns of each body are
-// scaled by its reference speed, and the iteration stops when the largest slip of any marker is
+// scaled by its reference speed, preconditioned on the right by the system without its projection
+// (MarkerPreconditioner, J S per body; the residual stays the true one), and the iteration stops when the largest slip of any marker is
 // below the tolerance (a maximum norm, checked on the true residual of the marker system), or when
 // a restart cycle has not halved it (the floor of the marker system, docs/method.md §3.7).
 // cells_from_faces: the cells take the mean of the face increments (A S_f, under "faces") in place
@@ -32,18 +33,20 @@
 #include "ibm/delta_kernel.hpp"
 #include "ibm/ib_operators.hpp"
 #include "sim/coupling/body_coupling.hpp"
+#include "sim/coupling/marker_preconditioner.hpp"
 #include "solid/implicit_euler.hpp"
 
 namespace ibms {
 
 // Storage of the marker-space GMRES, reserved once for the largest marker count.
 struct NoSlipWorkspace {
-  static constexpr int restart = 20;  // Krylov vectors per cycle
+  static constexpr int restart = 40;  // Krylov vectors per cycle
   std::vector<double> basis;          // V: (restart + 1) vectors of n
   std::vector<double> images;         // A V: restart vectors of n
   std::vector<double> hessenberg;     // (restart + 1) x restart, column-major
   std::vector<double> cosine, sine, rotated, coefficients;
   std::vector<double> rhs, solution, residual;
+  std::vector<double> preconditioned;  // M^-1 of a Krylov vector (right preconditioning)
   void reserve(std::size_t max_unknowns);
 };
 
@@ -57,6 +60,7 @@ struct NoSlipArrays {
   CellField force_cell_x, force_cell_y;
   FaceField force_face_x, force_face_y;
   NoSlipWorkspace work;
+  MarkerPreconditioner preconditioner;
   // Per body, the linearised response of a mass-spring body over the fluid step,
   // (M + dt D + dt^2 S) factorised at the step's start (docs/method.md §3.7).
   std::vector<ImplicitSpringSystem> response_systems;
@@ -80,6 +84,6 @@ NoSlipResult hold_no_slip(const Grid& grid, KernelKind kernel, const WallVelocit
                           double tolerance, bool on_faces, bool cells_from_faces, int max_products, FluidSolver& solver, FluidState& state,
                           std::vector<BodyCoupling>& coupling, CellField& increment_x, CellField& increment_y,
                           FaceField& face_increment_x, FaceField& face_increment_y, NoSlipWorkspace& work,
-                          const BodyResponse& response = {});
+                          const BodyResponse& response = {}, MarkerPreconditioner* preconditioner = nullptr);
 
 }  // namespace ibms
