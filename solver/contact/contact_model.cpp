@@ -159,47 +159,102 @@ void find_contact_groups(const ContactModel& model, const std::vector<MassSpring
   std::vector<char>& touches = groups.may_touch;
   if (model.enabled()) {
     constexpr double travel_safety = 2.0;  // velocities change within the step; doubles the travel
-    // Circles recomputed per pair (B^2 N / 2 operations, no allocation inside the step).
     const auto reach = [&](double speed, double extra, double cds_radius) {
       return travel_safety * speed * dt + extra + 0.5 * cds_radius;
     };
-    for (int a = 0; a < n_bodies; ++a) {
-      const BoundingCircle ca = bounding_circle(model, bodies[a]);
-      const double cds_a = model.cds_radius_of(bodies[a]);
-      if (model.walls && bodies[a].kind != BodyKind::prescribed) {
-        for (int d = 0; d < 2; ++d) {
-          if (box.periodic[d]) continue;
-          const double gap = std::min(box.is_wall(d, 0) ? ca.centre[d] - ca.radius - box.origin[d] : HUGE_VAL,
-                                      box.is_wall(d, 1) ? box.origin[d] + box.length[d] - ca.centre[d] - ca.radius
-                                                        : HUGE_VAL);
-          if (gap < reach(ca.speed, reach_extra[a], cds_a)) touches[a] = 1;
-        }
+    // Each body's circle once: centre, radius (rim and CDS), largest point speed, CDS radius.
+    std::vector<std::array<double, 5>>& circle = groups.circles;
+    circle.resize(n_bodies);
+    // Over the free (not prescribed) bodies: the largest radius, travel and extra, and CDS radius;
+    // a pair's reach is at most twice the largest travel and extra plus half the largest CDS radius.
+    double largest_radius = 0.0, largest_travel = 0.0, largest_cds = 0.0;
+    for (int b = 0; b < n_bodies; ++b) {
+      const BoundingCircle c = bounding_circle(model, bodies[b]);
+      circle[b] = {c.centre[0], c.centre[1], c.radius, c.speed, model.cds_radius_of(bodies[b])};
+      if (bodies[b].kind == BodyKind::prescribed) continue;
+      largest_radius = std::max(largest_radius, c.radius);
+      largest_travel = std::max(largest_travel, reach(c.speed, reach_extra[b], 0.0));
+      largest_cds = std::max(largest_cds, circle[b][4]);
+    }
+    const double largest_reach = 2.0 * largest_travel + 0.5 * largest_cds;
+    // The pair test of bodies a and b: their circles closer than the reach (a body inside a
+    // prescribed container, a regular polygon with all rim points at one radius, is close whenever
+    // it nears the container's rim).
+    const auto test_pair = [&](int a, int b) {
+      if (bodies[a].kind == BodyKind::prescribed && bodies[b].kind == BodyKind::prescribed) return;
+      const auto& ca = circle[a];
+      const auto& cb = circle[b];
+      double distance_squared = 0.0;
+      for (int d = 0; d < 2; ++d) {
+        double delta = ca[d] - cb[d];
+        // Nearest image: bodies are not wrapped back into the box, so they may be periods apart.
+        if (box.periodic[d]) delta -= box.length[d] * std::round(delta / box.length[d]);
+        distance_squared += delta * delta;
       }
-      for (int b = 0; b < a; ++b) {
-        if (bodies[a].kind == BodyKind::prescribed && bodies[b].kind == BodyKind::prescribed) continue;
-        const BoundingCircle cb = bounding_circle(model, bodies[b]);
-        double distance_squared = 0.0;
-        for (int d = 0; d < 2; ++d) {
-          double delta = ca.centre[d] - cb.centre[d];
-          // Nearest image: bodies are not wrapped back into the box, so they may be periods apart.
-          if (box.periodic[d]) delta -= box.length[d] * std::round(delta / box.length[d]);
-          distance_squared += delta * delta;
+      const double distance = std::sqrt(distance_squared);
+      const bool a_contains_b = bodies[a].kind == BodyKind::prescribed && distance + cb[2] <= ca[2];
+      const bool b_contains_a = bodies[b].kind == BodyKind::prescribed && distance + ca[2] <= cb[2];
+      const double gap = a_contains_b || b_contains_a
+                             ? std::max(ca[2], cb[2]) - distance - std::min(ca[2], cb[2]) - 2.0 * std::max(ca[4], cb[4])
+                             : distance - ca[2] - cb[2];
+      if (gap < reach(ca[3] + cb[3], reach_extra[a] + reach_extra[b], std::min(ca[4], cb[4]))) {
+        touches[a] = touches[b] = 1;
+        const int ra = root_of(parent, a), rb = root_of(parent, b);
+        if (ra != rb) parent[std::max(ra, rb)] = std::min(ra, rb);  // the lowest index is the root
+      }
+    };
+    for (int a = 0; a < n_bodies; ++a) {
+      if (!model.walls || bodies[a].kind == BodyKind::prescribed) continue;
+      for (int d = 0; d < 2; ++d) {
+        if (box.periodic[d]) continue;
+        const auto& ca = circle[a];
+        const double gap = std::min(box.is_wall(d, 0) ? ca[d] - ca[2] - box.origin[d] : HUGE_VAL,
+                                    box.is_wall(d, 1) ? box.origin[d] + box.length[d] - ca[d] - ca[2] : HUGE_VAL);
+        if (gap < reach(ca[3], reach_extra[a], ca[4])) touches[a] = 1;
+      }
+    }
+    // Prescribed bodies (containers, obstacles, any size) against every body; the free bodies
+    // against each other through a hash of their centres in cells of side 2 R + reach (R the
+    // largest free circle), so that a pair within reach sits in the same or neighbouring cells.
+    // The partition does not depend on the order of the unions: roots are the lowest index.
+    for (int a = 0; a < n_bodies; ++a)
+      if (bodies[a].kind == BodyKind::prescribed)
+        for (int b = 0; b < n_bodies; ++b)
+          if (b != a) test_pair(std::min(a, b), std::max(a, b));
+    const double cell = std::max(2.0 * largest_radius + largest_reach, std::numeric_limits<double>::min());
+    std::array<long, 2> cells{1, 1};
+    for (int d = 0; d < 2; ++d)
+      cells[d] = std::clamp(static_cast<long>(std::floor(box.length[d] / cell)), 1L, 1L << 20);
+    // Cells tile the box (side length / cells >= cell); a periodic coordinate is wrapped first.
+    const auto cell_index = [&](int b, int d) {
+      double x = circle[b][d] - box.origin[d];
+      if (box.periodic[d]) x -= box.length[d] * std::floor(x / box.length[d]);
+      const long k = static_cast<long>(std::floor(x * cells[d] / box.length[d]));
+      return std::clamp(k, 0L, cells[d] - 1);
+    };
+    std::vector<std::pair<long, int>>& hashed = groups.hashed;
+    hashed.clear();
+    for (int b = 0; b < n_bodies; ++b)
+      if (bodies[b].kind != BodyKind::prescribed) hashed.emplace_back(cell_index(b, 0) + cells[0] * cell_index(b, 1), b);
+    std::sort(hashed.begin(), hashed.end());
+    for (const auto& [key_a, a] : hashed) {
+      const long ia = key_a % cells[0], ja = key_a / cells[0];
+      // Neighbouring cells, each once (a periodic direction of fewer than three cells wraps onto itself).
+      std::array<long, 9> keys{};
+      int n_keys = 0;
+      for (long dj = -1; dj <= 1; ++dj)
+        for (long di = -1; di <= 1; ++di) {
+          long i = ia + di, j = ja + dj;
+          if (box.periodic[0]) i = ((i % cells[0]) + cells[0]) % cells[0];
+          if (box.periodic[1]) j = ((j % cells[1]) + cells[1]) % cells[1];
+          if (i < 0 || i >= cells[0] || j < 0 || j >= cells[1]) continue;
+          const long key = i + cells[0] * j;
+          if (std::find(keys.begin(), keys.begin() + n_keys, key) == keys.begin() + n_keys) keys[n_keys++] = key;
         }
-        const double distance = std::sqrt(distance_squared);
-        // A body inside a prescribed container (a regular polygon: all rim points at one radius) is
-        // close whenever it nears the container's rim.
-        const bool a_contains_b = bodies[a].kind == BodyKind::prescribed && distance + cb.radius <= ca.radius;
-        const bool b_contains_a = bodies[b].kind == BodyKind::prescribed && distance + ca.radius <= cb.radius;
-        const double gap = a_contains_b || b_contains_a
-                               ? std::max(ca.radius, cb.radius) - distance - std::min(ca.radius, cb.radius) -
-                                     2.0 * std::max(cds_a, model.cds_radius_of(bodies[b]))
-                               : distance - ca.radius - cb.radius;
-        if (gap < reach(ca.speed + cb.speed, reach_extra[a] + reach_extra[b],
-                        std::min(cds_a, model.cds_radius_of(bodies[b])))) {
-          touches[a] = touches[b] = 1;
-          const int ra = root_of(parent, a), rb = root_of(parent, b);
-          if (ra != rb) parent[std::max(ra, rb)] = std::min(ra, rb);  // the lowest index is the root
-        }
+      for (int k = 0; k < n_keys; ++k) {
+        auto it = std::lower_bound(hashed.begin(), hashed.end(), std::pair<long, int>{keys[k], -1});
+        for (; it != hashed.end() && it->first == keys[k]; ++it)
+          if (it->second > a) test_pair(a, it->second);
       }
     }
   }

@@ -136,9 +136,14 @@ struct ContactGroups {
   std::vector<char> may_touch;  // per group: a contact (pair or wall) is possible within dt
   int n_groups = 0;
   bool any_contact() const;
+  // Scratch of find_contact_groups: each body's circle (centre x, y, radius, speed, CDS radius)
+  // and the free bodies' cell keys.
+  std::vector<std::array<double, 5>> circles;
+  std::vector<std::pair<long, int>> hashed;
 };
 // Fills groups (its vectors are reused: no allocation once sized). With contacts off every body is
-// a group of its own that touches nothing.
+// a group of its own that touches nothing. Linear in the number of bodies: prescribed bodies are
+// tested against every body, free bodies against those in neighbouring cells of a hash.
 void find_contact_groups(const ContactModel& model, const std::vector<MassSpringBody>& bodies, const WallBox& box,
                          double dt, const std::vector<double>& reach_extra, ContactGroups& groups);
 

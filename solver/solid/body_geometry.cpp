@@ -35,69 +35,176 @@ double deformation_parameter(const MassSpringBody& body) {
   return (r_max - r_min) / (r_max + r_min);
 }
 
+namespace {
+
+using Vec = std::array<double, 2>;
+
+struct Box {
+  Vec low, high;
+};
+
+Box rim_box(const MassSpringBody& body) {
+  Box box{{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()},
+          {-std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()}};
+  for (int l = 0; l < body.n_surface; ++l)
+    for (int d = 0; d < 2; ++d) {
+      box.low[d] = std::min(box.low[d], body.position[l][d]);
+      box.high[d] = std::max(box.high[d], body.position[l][d]);
+    }
+  return box;
+}
+
+// Distance from p to the box (0 inside).
+double box_distance(const Box& box, const Vec& p) {
+  const double dx = std::max({box.low[0] - p[0], 0.0, p[0] - box.high[0]});
+  const double dy = std::max({box.low[1] - p[1], 0.0, p[1] - box.high[1]});
+  return std::hypot(dx, dy);
+}
+
+// Gap between two boxes (0 when they touch or overlap).
+double box_gap(const Box& a, const Box& b) {
+  const double dx = std::max({b.low[0] - a.high[0], 0.0, a.low[0] - b.high[0]});
+  const double dy = std::max({b.low[1] - a.high[1], 0.0, a.low[1] - b.high[1]});
+  return std::hypot(dx, dy);
+}
+
+bool boxes_overlap(const Box& a, const Box& b) {
+  return a.low[0] <= b.high[0] && b.low[0] <= a.high[0] && a.low[1] <= b.high[1] && b.low[1] <= a.high[1];
+}
+
+double orientation(const Vec& o, const Vec& p, const Vec& q) {
+  return (p[0] - o[0]) * (q[1] - o[1]) - (p[1] - o[1]) * (q[0] - o[0]);
+}
+
+}  // namespace
+
 BodySeparation body_separation(const std::vector<MassSpringBody>& bodies, std::array<double, 2> lower,
                                std::array<double, 2> upper, std::array<bool, 2> periodic) {
-  using Vec = std::array<double, 2>;
-  // Minimum image of an offset in the periodic directions (bodies are never wrapped: a body's
-  // points stay within one period of each other, so one image per body pair is enough).
-  auto image = [&](Vec d) {
-    for (int c = 0; c < 2; ++c)
-      if (periodic[c]) {
-        const double length = upper[c] - lower[c];
-        d[c] -= length * std::round(d[c] / length);
-      }
-    return d;
-  };
   BodySeparation s;
   s.min_rim_distance = std::numeric_limits<double>::infinity();
   s.min_wall_distance = std::numeric_limits<double>::infinity();
-  std::vector<Vec> centre(bodies.size());
-  for (std::size_t b = 0; b < bodies.size(); ++b) centre[b] = centroid(bodies[b]);
-  // The image of a point of one body nearest to body b's centroid.
-  auto near_image = [&](const Vec& p, std::size_t b) {
-    const Vec d = image({p[0] - centre[b][0], p[1] - centre[b][1]});
-    return Vec{centre[b][0] + d[0], centre[b][1] + d[1]};
-  };
-  for (std::size_t a = 0; a < bodies.size(); ++a) {
-    const MassSpringBody& A = bodies[a];
-    for (int l = 0; l < A.n_surface; ++l) {
-      const Vec& p = A.position[l];
+  const std::size_t n = bodies.size();
+  std::vector<Box> box(n);
+  double extent = 0.0;  // the largest box side
+  for (std::size_t b = 0; b < n; ++b) {
+    const MassSpringBody& body = bodies[b];
+    for (int l = 0; l < body.n_surface; ++l)
       for (int d = 0; d < 2; ++d)
-        if (!periodic[d]) s.min_wall_distance = std::min({s.min_wall_distance, p[d] - lower[d], upper[d] - p[d]});
-      for (std::size_t b = 0; b < bodies.size(); ++b) {
-        if (b == a) continue;
-        const MassSpringBody& B = bodies[b];
-        if (b > a)
-          for (int m = 0; m < B.n_surface; ++m) {
-            const Vec d = image({B.position[m][0] - p[0], B.position[m][1] - p[1]});
-            s.min_rim_distance = std::min(s.min_rim_distance, std::hypot(d[0], d[1]));
-          }
-        if (inside_rim(B, near_image(p, b))) ++s.n_points_inside_others;
+        if (!periodic[d])
+          s.min_wall_distance = std::min({s.min_wall_distance, body.position[l][d] - lower[d], upper[d] - body.position[l][d]});
+    box[b] = rim_box(body);
+    extent = std::max({extent, box[b].high[0] - box[b].low[0], box[b].high[1] - box[b].low[1]});
+  }
+  if (n < 2) return s;
+  // The shift that brings body b next to body a: the minimum image of their boxes' centres (a
+  // body's points stay within one period of each other, so one image per pair is enough).
+  const auto shift_of = [&](std::size_t a, std::size_t b) {
+    Vec shift{0.0, 0.0};
+    for (int d = 0; d < 2; ++d)
+      if (periodic[d]) {
+        const double length = upper[d] - lower[d];
+        const double offset = 0.5 * (box[b].low[d] + box[b].high[d] - box[a].low[d] - box[a].high[d]);
+        shift[d] = -length * std::round(offset / length);
+      }
+    return shift;
+  };
+  const auto shifted = [](const Box& b, const Vec& shift) {
+    return Box{{b.low[0] + shift[0], b.low[1] + shift[1]}, {b.high[0] + shift[0], b.high[1] + shift[1]}};
+  };
+  // Broad phase: the boxes' centres hashed into cells of side at least 2 * extent, so that two boxes less
+  // than `extent` apart sit in the same or neighbouring cells; the pairs found are sorted, so that
+  // the result does not depend on the hashing order.
+  const double cell = std::max(2.0 * extent, std::numeric_limits<double>::min());
+  std::array<long, 2> cells{1, 1};
+  for (int d = 0; d < 2; ++d)
+    cells[d] = std::clamp(static_cast<long>(std::floor((upper[d] - lower[d]) / cell)), 1L, 1L << 20);
+  // Cells tile the box (side length / cells >= cell); a periodic coordinate is wrapped first.
+  const auto cell_of = [&](std::size_t b, int d) {
+    const double length = upper[d] - lower[d];
+    double x = 0.5 * (box[b].low[d] + box[b].high[d]) - lower[d];
+    if (periodic[d]) x -= length * std::floor(x / length);
+    const long k = static_cast<long>(std::floor(x * cells[d] / length));
+    return std::clamp(k, 0L, cells[d] - 1);
+  };
+  std::vector<std::pair<long, std::size_t>> hashed(n);
+  for (std::size_t b = 0; b < n; ++b) hashed[b] = {cell_of(b, 0) + cells[0] * cell_of(b, 1), b};
+  std::sort(hashed.begin(), hashed.end());
+  std::vector<std::pair<std::size_t, std::size_t>> pairs;
+  for (std::size_t a = 0; a < n; ++a) {
+    const long ia = cell_of(a, 0), ja = cell_of(a, 1);
+    for (long dj = -1; dj <= 1; ++dj)
+      for (long di = -1; di <= 1; ++di) {
+        long i = ia + di, j = ja + dj;
+        if (periodic[0]) i = ((i % cells[0]) + cells[0]) % cells[0];
+        if (periodic[1]) j = ((j % cells[1]) + cells[1]) % cells[1];
+        if (i < 0 || i >= cells[0] || j < 0 || j >= cells[1]) continue;
+        const long key = i + cells[0] * j;
+        auto it = std::lower_bound(hashed.begin(), hashed.end(), std::pair<long, std::size_t>{key, 0});
+        for (; it != hashed.end() && it->first == key; ++it)
+          if (it->second > a) pairs.emplace_back(a, it->second);
+      }
+  }
+  std::sort(pairs.begin(), pairs.end());
+  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  // The smallest rim distance of one pair, over the points of each within `bound` of the other's box.
+  std::vector<Vec> near_a, near_b;
+  const auto pair_distance = [&](std::size_t a, std::size_t b, const Vec& shift, double bound) {
+    const Box box_b = shifted(box[b], shift);
+    near_a.clear();
+    near_b.clear();
+    for (int l = 0; l < bodies[a].n_surface; ++l)
+      if (box_distance(box_b, bodies[a].position[l]) <= bound) near_a.push_back(bodies[a].position[l]);
+    for (int m = 0; m < bodies[b].n_surface; ++m) {
+      const Vec q{bodies[b].position[m][0] + shift[0], bodies[b].position[m][1] + shift[1]};
+      if (box_distance(box[a], q) <= bound) near_b.push_back(q);
+    }
+    double best = bound;
+    for (const Vec& p : near_a)
+      for (const Vec& q : near_b) best = std::min(best, std::hypot(q[0] - p[0], q[1] - p[1]));
+    return best;
+  };
+  for (const auto& [a, b] : pairs) {
+    const Vec shift = shift_of(a, b);
+    const Box box_b = shifted(box[b], shift);
+    if (box_gap(box[a], box_b) < s.min_rim_distance)
+      s.min_rim_distance = std::min(s.min_rim_distance, pair_distance(a, b, shift, s.min_rim_distance));
+    if (!boxes_overlap(box[a], box_b)) continue;
+    // Interpenetration needs overlapping boxes: rim points of one inside the other's rim, and rim
+    // edges that cross (without a vertex inside).
+    const MassSpringBody& A = bodies[a];
+    const MassSpringBody& B = bodies[b];
+    for (int l = 0; l < A.n_surface; ++l) {
+      const Vec p{A.position[l][0] - shift[0], A.position[l][1] - shift[1]};
+      if (box_distance(box[b], p) == 0.0 && inside_rim(B, p)) ++s.n_points_inside_others;
+    }
+    for (int m = 0; m < B.n_surface; ++m) {
+      const Vec q{B.position[m][0] + shift[0], B.position[m][1] + shift[1]};
+      if (box_distance(box[a], q) == 0.0 && inside_rim(A, q)) ++s.n_points_inside_others;
+    }
+    for (int l = 0; l < A.n_surface; ++l) {
+      const Vec& p0 = A.position[l];
+      const Vec& p1 = A.position[(l + 1) % A.n_surface];
+      const Box edge{{std::min(p0[0], p1[0]), std::min(p0[1], p1[1])}, {std::max(p0[0], p1[0]), std::max(p0[1], p1[1])}};
+      if (!boxes_overlap(edge, box_b)) continue;
+      for (int m = 0; m < B.n_surface; ++m) {
+        const Vec q0{B.position[m][0] + shift[0], B.position[m][1] + shift[1]};
+        const Vec q1{B.position[(m + 1) % B.n_surface][0] + shift[0], B.position[(m + 1) % B.n_surface][1] + shift[1]};
+        const double o1 = orientation(p0, p1, q0), o2 = orientation(p0, p1, q1);
+        const double o3 = orientation(q0, q1, p0), o4 = orientation(q0, q1, p1);
+        if (((o1 > 0 && o2 < 0) || (o1 < 0 && o2 > 0)) && ((o3 > 0 && o4 < 0) || (o3 < 0 && o4 > 0)))
+          ++s.n_edge_crossings;
       }
     }
   }
-  // Rim edges of different bodies that cross (interpenetration without a vertex inside).
-  auto orientation = [](const Vec& o, const Vec& p, const Vec& q) {
-    return (p[0] - o[0]) * (q[1] - o[1]) - (p[1] - o[1]) * (q[0] - o[0]);
-  };
-  for (std::size_t a = 0; a < bodies.size(); ++a)
-    for (std::size_t b = a + 1; b < bodies.size(); ++b) {
-      const MassSpringBody& A = bodies[a];
-      const MassSpringBody& B = bodies[b];
-      for (int l = 0; l < A.n_surface; ++l) {
-        const Vec p0 = near_image(A.position[l], b);
-        const Vec p1 = {p0[0] + A.position[(l + 1) % A.n_surface][0] - A.position[l][0],
-                        p0[1] + A.position[(l + 1) % A.n_surface][1] - A.position[l][1]};
-        for (int m = 0; m < B.n_surface; ++m) {
-          const Vec& q0 = B.position[m];
-          const Vec& q1 = B.position[(m + 1) % B.n_surface];
-          const double o1 = orientation(p0, p1, q0), o2 = orientation(p0, p1, q1);
-          const double o3 = orientation(q0, q1, p0), o4 = orientation(q0, q1, p1);
-          if (((o1 > 0 && o2 < 0) || (o1 < 0 && o2 > 0)) && ((o3 > 0 && o4 < 0) || (o3 < 0 && o4 > 0)))
-            ++s.n_edge_crossings;
-        }
+  // No pair found within `extent` of each other: the nearest pair is farther apart than any pair
+  // the cells hold, and every pair is visited, each pruned by its boxes' gap (a sparse scene).
+  if (!(s.min_rim_distance <= extent))
+    for (std::size_t a = 0; a < n; ++a)
+      for (std::size_t b = a + 1; b < n; ++b) {
+        const Vec shift = shift_of(a, b);
+        if (box_gap(box[a], shifted(box[b], shift)) < s.min_rim_distance)
+          s.min_rim_distance = std::min(s.min_rim_distance, pair_distance(a, b, shift, s.min_rim_distance));
       }
-    }
   return s;
 }
 

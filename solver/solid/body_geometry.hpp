@@ -24,7 +24,11 @@ struct BodySeparation {
 // Walls at x = lower[0], upper[0] (unless periodic[0]) and y = lower[1], upper[1] (unless
 // periodic[1]); periodic directions use the minimum image between bodies. A rim point outside
 // the box has a negative wall distance; without walls (fully periodic) and with one body the
-// respective minimum is +infinity. O((sum N_l)^2): a diagnostic, evaluated when series are written.
+// respective minimum is +infinity. Linear in the number of bodies: pairs come from a hash of the
+// rim boxes (cells of twice the largest box side), the points of a pair compared only where they
+// lie within the current minimum of the other's box, interpenetration looked for only in
+// overlapping boxes; a scene whose nearest bodies are farther apart than the largest box visits
+// every pair's boxes once (O(N^2) box gaps, no point pairs beyond the nearest).
 BodySeparation body_separation(const std::vector<MassSpringBody>& bodies, std::array<double, 2> lower,
                                std::array<double, 2> upper, std::array<bool, 2> periodic);
 

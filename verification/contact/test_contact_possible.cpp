@@ -1,9 +1,15 @@
 // The test that lets a step skip the contact sub-step bound (contact_possible_within) is
 // conservative: it answers "possible" for bodies whose contact spheres are within the reach of one
 // step, including across periodic boundaries when the bodies have drifted periods apart, walls,
-// and a body inside a prescribed container; and "not possible" for bodies far apart at rest.
+// and a body inside a prescribed container; and "not possible" for bodies far apart at rest. The
+// groups of many bodies (found through a hash of the bodies' circles) are those that the pair test
+// of every two bodies alone gives.
 #define BOOST_TEST_MODULE contact_possible
 #include <boost/test/unit_test.hpp>
+
+#include <algorithm>
+#include <numeric>
+#include <random>
 
 #include "contact/contact_model.hpp"
 #include "solid/mass_spring_body.hpp"
@@ -110,4 +116,67 @@ BOOST_AUTO_TEST_CASE(a_chain_listed_backwards_is_one_group) {
   find_contact_groups(model(), bodies, box, 0.01, std::vector<double>(bodies.size(), 0.0), groups);
   BOOST_TEST(groups.n_groups == 1);
   BOOST_TEST(groups.group_of == (std::vector<int>(5, 0)), boost::test_tools::per_element());
+}
+
+BOOST_AUTO_TEST_CASE(the_groups_of_many_bodies_are_those_of_every_pair) {
+  // 120 disks of two sizes moving at random in a box (walls, or periodic with bodies periods
+  // away), some with an extra reach, and a prescribed container holding part of them: each pair's
+  // link and each body's wall contact from find_contact_groups on that pair or body alone, joined
+  // into components, against the groups of all bodies at once.
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  for (const bool periodic : {false, true}) {
+    const WallBox box{{0.0, 0.0}, {3.0, 2.0}, {periodic, periodic}};
+    std::vector<MassSpringBody> bodies;
+    std::vector<double> extra;
+    bodies.push_back(disk({1.0, 1.0}, 1.2, BodyKind::prescribed));
+    extra.push_back(0.0);
+    for (int k = 0; k < 120; ++k) {
+      const double shift = periodic && k % 7 == 0 ? 3.0 : 0.0;  // drifted a period away
+      MassSpringBody body = disk({3.0 * uniform(random) + shift, 2.0 * uniform(random)}, k % 4 == 0 ? 0.15 : 0.1);
+      for (auto& v : body.velocity) v = {2.0 * uniform(random) - 1.0, 2.0 * uniform(random) - 1.0};
+      bodies.push_back(body);
+      extra.push_back(k % 5 == 0 ? 0.05 : 0.0);
+    }
+    const std::size_t n = bodies.size();
+    const double dt = 0.01;
+    ContactGroups all;
+    find_contact_groups(model(), bodies, box, dt, extra, all);
+    // The oracle: components of the pairwise links.
+    std::vector<int> root(n);
+    std::iota(root.begin(), root.end(), 0);
+    const auto find = [&](int b) {
+      while (root[b] != b) b = root[b];
+      return b;
+    };
+    std::vector<char> touches(n, 0);
+    int links = 0;
+    for (std::size_t a = 0; a < n; ++a) {
+      ContactGroups one;
+      find_contact_groups(model(), {bodies[a]}, box, dt, {extra[a]}, one);
+      if (one.any_contact()) touches[a] = 1;
+      for (std::size_t b = a + 1; b < n; ++b) {
+        ContactGroups pair;
+        find_contact_groups(model(), {bodies[a], bodies[b]}, box, dt, {extra[a], extra[b]}, pair);
+        if (pair.n_groups != 1) continue;
+        ++links;
+        touches[a] = touches[b] = 1;
+        const int ra = find(static_cast<int>(a)), rb = find(static_cast<int>(b));
+        root[std::max(ra, rb)] = std::min(ra, rb);
+      }
+    }
+    BOOST_TEST_MESSAGE((periodic ? "periodic" : "walls") << ": " << links << " linked pairs, " << all.n_groups
+                                                         << " groups");
+    BOOST_TEST(links > 20);
+    for (std::size_t a = 0; a < n; ++a)
+      for (std::size_t b = a + 1; b < n; ++b)
+        BOOST_TEST((all.group_of[a] == all.group_of[b]) == (find(static_cast<int>(a)) == find(static_cast<int>(b))));
+    for (std::size_t a = 0; a < n; ++a) BOOST_TEST(static_cast<bool>(all.may_touch[all.group_of[a]]) >= static_cast<bool>(touches[a]));
+    for (int g = 0; g < all.n_groups; ++g) {
+      bool any = false;
+      for (std::size_t a = 0; a < n; ++a)
+        if (all.group_of[a] == g) any = any || touches[a];
+      BOOST_TEST(static_cast<bool>(all.may_touch[g]) == any);
+    }
+  }
 }

@@ -5,11 +5,17 @@
 //   - separation: two wheels D = 0.2 whose centres are 0.25 apart along x, rim point 0 of each on
 //     the joining line, are 0.05 apart; no point is inside the other; the wall distance is the
 //     smallest of the rim extents to the box; rim points inside the other body and crossing rim
-//     edges are counted; periodic directions use the minimum image (bodies across the seam).
+//     edges are counted; periodic directions use the minimum image (bodies across the seam);
+//   - the broad phase (pairs from hashed boxes) gives exactly what every pair of bodies and points
+//     gives, on scattered, overlapping wheels, dense and sparse, with walls and periodic.
 #define BOOST_TEST_MODULE body_geometry
 #include <boost/test/unit_test.hpp>
 
+#include <array>
 #include <cmath>
+#include <limits>
+#include <random>
+#include <vector>
 
 #include "core/constants.hpp"
 #include "solid/body_geometry.hpp"
@@ -88,4 +94,83 @@ BOOST_AUTO_TEST_CASE(separation_uses_the_minimum_image_in_periodic_directions) {
   BOOST_TEST(overlap.n_edge_crossings > 0);
   // Fully periodic: no walls.
   BOOST_TEST(std::isinf(body_separation(bodies, {0.0, 0.0}, {1.0, 1.0}, {true, true}).min_wall_distance));
+}
+
+namespace {
+
+// Every pair of bodies and every pair of their points: the oracle of the broad phase.
+BodySeparation all_pairs(const std::vector<MassSpringBody>& bodies, std::array<double, 2> lower,
+                         std::array<double, 2> upper, std::array<bool, 2> periodic) {
+  using Vec = std::array<double, 2>;
+  const auto image = [&](Vec d) {
+    for (int c = 0; c < 2; ++c)
+      if (periodic[c]) d[c] -= (upper[c] - lower[c]) * std::round(d[c] / (upper[c] - lower[c]));
+    return d;
+  };
+  const auto inside = [](const MassSpringBody& body, const Vec& p) {
+    bool in = false;
+    for (int a = 0, b = body.n_surface - 1; a < body.n_surface; b = a++) {
+      const auto& pa = body.position[a];
+      const auto& pb = body.position[b];
+      if ((pa[1] > p[1]) != (pb[1] > p[1]) && p[0] < (pb[0] - pa[0]) * (p[1] - pa[1]) / (pb[1] - pa[1]) + pa[0]) in = !in;
+    }
+    return in;
+  };
+  BodySeparation s;
+  s.min_rim_distance = std::numeric_limits<double>::infinity();
+  for (std::size_t a = 0; a < bodies.size(); ++a)
+    for (std::size_t b = 0; b < bodies.size(); ++b) {
+      if (a == b) continue;
+      const MassSpringBody& A = bodies[a];
+      const MassSpringBody& B = bodies[b];
+      // B brought next to A by the image of their first points' offset (bodies smaller than half a period).
+      const Vec offset{B.position[0][0] - A.position[0][0], B.position[0][1] - A.position[0][1]};
+      const Vec im = image(offset);
+      const Vec shift{im[0] - offset[0], im[1] - offset[1]};
+      for (int l = 0; l < A.n_surface; ++l) {
+        const Vec& p = A.position[l];
+        if (inside(B, {p[0] - shift[0], p[1] - shift[1]})) ++s.n_points_inside_others;
+        if (b < a) continue;
+        for (int m = 0; m < B.n_surface; ++m) {
+          const Vec q{B.position[m][0] + shift[0], B.position[m][1] + shift[1]};
+          s.min_rim_distance = std::min(s.min_rim_distance, std::hypot(q[0] - p[0], q[1] - p[1]));
+          const Vec& p1 = A.position[(l + 1) % A.n_surface];
+          const Vec q1{B.position[(m + 1) % B.n_surface][0] + shift[0], B.position[(m + 1) % B.n_surface][1] + shift[1]};
+          const auto o = [](const Vec& u, const Vec& v, const Vec& w) {
+            return (v[0] - u[0]) * (w[1] - u[1]) - (v[1] - u[1]) * (w[0] - u[0]);
+          };
+          const double o1 = o(p, p1, q), o2 = o(p, p1, q1), o3 = o(q, q1, p), o4 = o(q, q1, p1);
+          if (((o1 > 0 && o2 < 0) || (o1 < 0 && o2 > 0)) && ((o3 > 0 && o4 < 0) || (o3 < 0 && o4 > 0)))
+            ++s.n_edge_crossings;
+        }
+      }
+    }
+  return s;
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(the_broad_phase_finds_what_every_pair_finds) {
+  // 200 wheels of two sizes scattered at random in a unit box, many overlapping, some across the
+  // periodic seams; dense (nearest pair within a box side) and sparse (the fallback) scenes.
+  std::mt19937 random(11);
+  for (const double spread : {1.0, 8.0}) {
+    for (const bool wrap : {false, true}) {
+      std::uniform_real_distribution<double> position(0.0, spread);
+      std::vector<MassSpringBody> bodies;
+      for (int k = 0; k < (spread > 1.0 ? 40 : 200); ++k)
+        bodies.push_back(wheel({position(random) + (wrap && k % 7 == 0 ? 2.0 * spread : 0.0), position(random)},
+                               k % 3 == 0 ? 0.06 : 0.04, 12 + k % 5));  // some periods away
+      const std::array<bool, 2> periodic{wrap, wrap};
+      const BodySeparation fast = body_separation(bodies, {0.0, 0.0}, {spread, spread}, periodic);
+      const BodySeparation oracle = all_pairs(bodies, {0.0, 0.0}, {spread, spread}, periodic);
+      BOOST_TEST_MESSAGE("spread " << spread << (wrap ? " periodic" : " walls") << ": rim distance "
+                                   << fast.min_rim_distance << ", inside " << fast.n_points_inside_others
+                                   << ", crossings " << fast.n_edge_crossings);
+      BOOST_TEST(fast.min_rim_distance == oracle.min_rim_distance);
+      BOOST_TEST(fast.n_points_inside_others == oracle.n_points_inside_others);
+      BOOST_TEST(fast.n_edge_crossings == oracle.n_edge_crossings);
+      if (spread == 1.0) BOOST_TEST(oracle.n_edge_crossings > 0);
+    }
+  }
 }
