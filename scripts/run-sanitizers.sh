@@ -51,8 +51,9 @@ grep -E "ERROR SUMMARY|definitely lost|indirectly lost|possibly lost|in use at e
 import sys
 import h5py
 s = h5py.File(sys.argv[1], "r")["series"]
-bodies = sorted(k for k in s if k.startswith("body_"))
-grown = max(s[b + "/diameter"][-1] - s[b + "/diameter"][0] for b in bodies)
+diameter = s["per_body/diameter"][:]  # rows x bodies
+bodies = range(diameter.shape[1])
+grown = max(diameter[-1, :] - diameter[0, :])
 pairs = s["contact/n_active_pairs"][:].max()
 walls = s["contact/n_wall_contacts"][:].max()
 print(f"run-sanitizers: valgrind scene: {len(bodies)} bodies, largest diameter growth {grown:.4f}, "

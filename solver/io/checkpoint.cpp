@@ -1,6 +1,8 @@
 // read_checkpoint (checkpoint.hpp): the inverse of OutputFile::write_checkpoint.
 #include "io/checkpoint.hpp"
 
+#include <stdexcept>
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -136,6 +138,45 @@ void CheckpointReader::into(const std::string& name, std::vector<Vec2>& points) 
 }
 void CheckpointReader::into(const std::string& name, std::vector<double>& values) const {
   values = array(name, values.size());
+}
+
+void append_body_array(std::map<std::string, std::vector<double>>& arrays, const std::string& name, std::size_t body,
+                       const std::vector<double>& values) {
+  std::vector<double>& counts = arrays[name + "_count"];
+  if (counts.size() != body) throw std::logic_error("append_body_array: " + name + " out of body order");
+  counts.push_back(static_cast<double>(values.size()));
+  std::vector<double>& all = arrays[name];
+  all.insert(all.end(), values.begin(), values.end());
+}
+
+BodySlice CheckpointReader::body_array(const std::string& name, std::size_t body, std::size_t n_bodies) const {
+  auto found = offsets_.find(name);
+  if (found == offsets_.end()) {
+    const std::string count_name = name + "_count";
+    const std::vector<double>& counts = array(count_name, n_bodies);
+    std::vector<std::size_t> offset(n_bodies + 1, 0);
+    for (std::size_t b = 0; b < n_bodies; ++b) {
+      const double c = counts[b];
+      if (!(c >= 0.0 && c <= 9007199254740992.0 && c == std::floor(c)))
+        fail(count_name, fmt::format("body {}: {} is not a count", b, c));
+      offset[b + 1] = offset[b] + static_cast<std::size_t>(c);
+    }
+    const std::vector<double>* values = find(name);
+    if (values == nullptr) fail(name, "missing");
+    if (values->size() != offset[n_bodies])
+      fail(name, fmt::format("has {} values, its counts add up to {}", values->size(), offset[n_bodies]));
+    found = offsets_.emplace(name, std::move(offset)).first;
+  }
+  const std::vector<std::size_t>& offset = found->second;
+  return {cp_.arrays.at(name).data() + offset[body], offset[body + 1] - offset[body]};
+}
+
+BodySlice CheckpointReader::body_array(const std::string& name, std::size_t body, std::size_t n_bodies,
+                                       std::size_t expected_size) const {
+  const BodySlice slice = body_array(name, body, n_bodies);
+  if (slice.size != expected_size)
+    fail(name, fmt::format("body {} has {} values, this scene needs {}", body, slice.size, expected_size));
+  return slice;
 }
 
 }  // namespace ibms

@@ -24,6 +24,18 @@ struct Checkpoint {
 // or the checkpoint is incomplete (the run was killed while writing it).
 Checkpoint read_checkpoint(const std::string& h5_path);
 
+// Per-body arrays of one kind in one dataset, so that a thousand bodies are a few datasets: body b's
+// values follow body b-1's in <name>, and <name>_count holds each body's value count. Called for
+// bodies 0, 1, ... in turn (a body without such values appends none); out of order is a logic_error.
+void append_body_array(std::map<std::string, std::vector<double>>& arrays, const std::string& name, std::size_t body,
+                       const std::vector<double>& values);
+
+// One body's values in a per-body array.
+struct BodySlice {
+  const double* data = nullptr;
+  std::size_t size = 0;
+};
+
 // Named arrays and scalars of a checkpoint, each failure an InputError
 // "<path>: /checkpoint/<name>: <reason>".
 class CheckpointReader {
@@ -44,10 +56,16 @@ class CheckpointReader {
   void into(const std::string& name, FaceField& field) const;
   void into(const std::string& name, std::vector<Vec2>& points) const;
   void into(const std::string& name, std::vector<double>& values) const;
+  // Body b's values of the per-body array `name` (append_body_array) among n_bodies: checks that
+  // the counts are n_bodies whole numbers adding up to the values.
+  BodySlice body_array(const std::string& name, std::size_t body, std::size_t n_bodies) const;
+  // The same with exactly expected_size values.
+  BodySlice body_array(const std::string& name, std::size_t body, std::size_t n_bodies, std::size_t expected_size) const;
 
  private:
   const Checkpoint& cp_;
   const std::string& path_;
+  mutable std::map<std::string, std::vector<std::size_t>> offsets_;  // per-body arrays checked once
 };
 
 }  // namespace ibms

@@ -5,6 +5,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -70,6 +71,7 @@ OutputFile::~OutputFile() {
   } catch (...) {
   }
   series_.clear();  // datasets before the file
+  tables_.clear();
   file_.reset();
 }
 
@@ -123,13 +125,52 @@ hid_t OutputFile::series_dataset(const SeriesValue& value) {
   return id;
 }
 
-void OutputFile::append_series(const std::vector<SeriesValue>& values) {
+OutputFile::Table& OutputFile::series_table(const SeriesColumns& columns) {
+  const auto found = tables_.find(columns.name);
+  if (found != tables_.end()) {
+    if (found->second.width != columns.values.size())
+      throw InputError(fmt::format("{}: per-body series '{}' has {} columns, not {}", path_, columns.name,
+                                   columns.values.size(), found->second.width));
+    return found->second;
+  }
+  const std::string name = "/series/per_body/" + columns.name;
+  const std::string what = fmt::format("cannot create per-body series '{}'", columns.name);
+  if (columns.name.empty() || columns.values.empty() || link_exists(file_.get(), name))
+    throw_hdf5_error(path_, what + " (empty, no columns or taken name)");
+  const hsize_t width = columns.values.size();
+  const hsize_t initial[2] = {0, width};
+  const hsize_t maximum[2] = {H5S_UNLIMITED, width};
+  // About 256 KiB a chunk: rows of many bodies, or series_chunk_rows of a few.
+  const hsize_t chunk[2] = {std::clamp<hsize_t>(32768 / width, 1, series_chunk_rows), width};
+  const Hdf5Handle space = checked_handle(H5Screate_simple(2, initial, maximum), H5Sclose, path_, what);
+  const Hdf5Handle creation = checked_handle(H5Pcreate(H5P_DATASET_CREATE), H5Pclose, path_, what);
+  check_hdf5(H5Pset_chunk(creation.get(), 2, chunk), path_, what);
+  const double missing = std::numeric_limits<double>::quiet_NaN();
+  check_hdf5(H5Pset_fill_value(creation.get(), H5T_NATIVE_DOUBLE, &missing), path_, what);
+  const Hdf5Handle link_list = intermediate_group_creation(path_);
+  Table table;
+  table.dataset = checked_handle(H5Dcreate2(file_.get(), name.c_str(), H5T_NATIVE_DOUBLE, space.get(), link_list.get(),
+                                            creation.get(), H5P_DEFAULT),
+                                 H5Dclose, path_, what);
+  write_string_attribute(table.dataset.get(), "units", columns.units, path_);
+  write_string_attribute(table.dataset.get(), "columns", "body index", path_);
+  table.width = columns.values.size();
+  return tables_.emplace(columns.name, std::move(table)).first->second;
+}
+
+void OutputFile::append_series(const std::vector<SeriesValue>& values, const std::vector<SeriesColumns>& per_body) {
   std::set<std::string> names;
   for (const SeriesValue& value : values) {
     if (!names.insert(value.name).second) {
       throw InputError(fmt::format("{}: series '{}' given twice in one row", path_, value.name));
     }
     series_dataset(value);
+  }
+  names.clear();
+  for (const SeriesColumns& columns : per_body) {
+    if (!names.insert(columns.name).second)
+      throw InputError(fmt::format("{}: per-body series '{}' given twice in one row", path_, columns.name));
+    series_table(columns);
   }
   // This row's value into each of its series' held-back columns; a column that misses rows before
   // it (a series new in this block, or absent from them) is padded with NaN.
@@ -138,6 +179,11 @@ void OutputFile::append_series(const std::vector<SeriesValue>& values) {
     std::vector<double>& column = pending_[value.name];
     column.resize(pending_rows_, missing);
     column.push_back(value.value);
+  }
+  for (const SeriesColumns& columns : per_body) {
+    Table& table = tables_.at(columns.name);
+    table.pending.resize(pending_rows_ * table.width, missing);
+    table.pending.insert(table.pending.end(), columns.values.begin(), columns.values.end());
   }
   ++pending_rows_;
   if (pending_rows_ >= series_block_rows ||
@@ -160,6 +206,19 @@ void OutputFile::write_pending_series() {
     check_hdf5(H5Sselect_hyperslab(space.get(), H5S_SELECT_SET, &first, nullptr, &count, nullptr), path_, what);
     check_hdf5(H5Dwrite(dataset.get(), H5T_NATIVE_DOUBLE, memory.get(), space.get(), H5P_DEFAULT, column.data()),
                path_, what);
+  }
+  for (auto& [name, table] : tables_) {
+    const std::string what = fmt::format("cannot append to per-body series '{}'", name);
+    table.pending.resize(count * table.width, std::numeric_limits<double>::quiet_NaN());
+    const hsize_t extent[2] = {n_rows, table.width}, start[2] = {first, 0}, block[2] = {count, table.width};
+    check_hdf5(H5Dset_extent(table.dataset.get(), extent), path_, what);
+    const Hdf5Handle rows = checked_handle(H5Screate_simple(2, block, nullptr), H5Sclose, path_, what);
+    const Hdf5Handle space = checked_handle(H5Dget_space(table.dataset.get()), H5Sclose, path_, what);
+    check_hdf5(H5Sselect_hyperslab(space.get(), H5S_SELECT_SET, start, nullptr, block, nullptr), path_, what);
+    check_hdf5(H5Dwrite(table.dataset.get(), H5T_NATIVE_DOUBLE, rows.get(), space.get(), H5P_DEFAULT,
+                        table.pending.data()),
+               path_, what);
+    table.pending.clear();
   }
   n_series_rows_ = n_rows;
   for (auto& entry : pending_) entry.second.clear();  // capacity kept: no allocation in later blocks

@@ -3,6 +3,8 @@
 //   /grid        attributes nx, ny, length_x, length_y, origin_x, origin_y, periodic_x, periodic_y;
 //                datasets dx, dy, x_centres (nx), y_centres (ny), x_faces (nx+1), y_faces (ny+1)
 //   /series/*    extendable 1-D datasets, one row per append_series call (NaN where a row had no value)
+//   /series/per_body/*  extendable 2-D datasets (rows, bodies), one per quantity of the bodies, the
+//                same rows (attribute columns = "body index")
 //   /snapshots/NNNNNN/*  (step, 6+ digits) attributes time, step; grid fields (ny, nx) x fastest,
 //                body arrays body_NNN/<name> (n)
 //   /checkpoint  the latest restart state (checkpoint.hpp)
@@ -30,6 +32,13 @@ struct SeriesValue {
   double value;
 };
 
+// One quantity of every body in a series row: /series/per_body/<name>, one column per body.
+struct SeriesColumns {
+  std::string name;            // e.g. "centroid_x"
+  std::string units;
+  std::vector<double> values;  // one per body, NaN where a body has none
+};
+
 struct SnapshotArray {
   std::string name;               // e.g. "u" or "body_000/x"
   std::string units;
@@ -50,8 +59,9 @@ class OutputFile {
   // One row of /series: each value into /series/<name> (created with its units on first use).
   // Series known from earlier rows but absent here get NaN in this row, so all series stay
   // aligned row by row. A name twice in one call is an error. The row reaches the file with its
-  // block (see above).
-  void append_series(const std::vector<SeriesValue>& values);
+  // block (see above). per_body: this row of /series/per_body/<name>; a quantity's column count is
+  // fixed by its first row (another count is an error).
+  void append_series(const std::vector<SeriesValue>& values, const std::vector<SeriesColumns>& per_body = {});
   static constexpr std::size_t series_block_rows = 256;
   static constexpr double series_block_seconds = 1.0;
 
@@ -81,6 +91,12 @@ class OutputFile {
  private:
   void write_grid(const Grid& grid);
   hid_t series_dataset(const SeriesValue& value);
+  struct Table {
+    Hdf5Handle dataset;
+    std::size_t width = 0;
+    std::vector<double> pending;  // the rows held back, row-major
+  };
+  Table& series_table(const SeriesColumns& columns);
   void write_pending_series();  // the rows held back, into /series (no flush)
 
   std::string path_;
@@ -91,6 +107,7 @@ class OutputFile {
   hsize_t n_series_rows_ = 0;                 // rows in the file
   std::size_t pending_rows_ = 0;                         // rows held back
   std::map<std::string, std::vector<double>> pending_;  // their values, one column per series
+  std::map<std::string, Table> tables_;                 // /series/per_body datasets by name
   std::chrono::steady_clock::time_point last_series_block_ = std::chrono::steady_clock::now();
   std::vector<XdmfSnapshot> snapshots_;       // what the sidecar lists
 };

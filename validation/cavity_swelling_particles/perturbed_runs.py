@@ -31,13 +31,9 @@ SCENES = ("nonswelling", "swelling")
 def mean_path(series, t0, t1):
     t = series["time"][:]
     inside = (t[:-1] >= t0) & (t[1:] <= t1)
-    total, n_bodies = 0.0, 0
-    while f"body_{n_bodies:03d}" in series:
-        body = series[f"body_{n_bodies:03d}"]
-        x, y = body["centroid_x"][:], body["centroid_y"][:]
-        total += np.sum(np.hypot(np.diff(x), np.diff(y))[inside])
-        n_bodies += 1
-    return total / n_bodies
+    x, y = series["per_body/centroid_x"][:], series["per_body/centroid_y"][:]  # rows x bodies
+    steps = np.hypot(np.diff(x, axis=0), np.diff(y, axis=0))[inside, :]
+    return float(np.sum(steps)) / x.shape[1]
 
 
 def statistics(path):

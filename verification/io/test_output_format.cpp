@@ -42,8 +42,9 @@ struct TinyRun {
     xmf = directory / "out.xmf";
     ibms::OutputFile output(h5.string(), "[run]\nend_time = 1.0\n", tiny_grid, "0.1.0", "abc123");
     output.append_series({{"time", "time", 0.1}, {"dt", "time", 0.1}});
-    output.append_series({{"time", "time", 0.2}, {"dt", "time", 0.1}, {"body_000/centroid_x", "length", 0.7}});
-    output.append_series({{"time", "time", 0.3}});
+    output.append_series({{"time", "time", 0.2}, {"dt", "time", 0.1}, {"body_000/centroid_x", "length", 0.7}},
+                         {{"speed", "length/time", {1.0, 2.0, 3.0}}});
+    output.append_series({{"time", "time", 0.3}}, {{"speed", "length/time", {4.0, 5.0, 6.0}}});
     std::vector<double> u(12), p(12), x(5), y(5), vx(5, 0.25);
     for (std::size_t k = 0; k < 12; ++k) u[k] = static_cast<double>(k);
     for (std::size_t k = 0; k < 5; ++k) x[k] = std::cos(k), y[k] = std::sin(k);
@@ -148,6 +149,29 @@ BOOST_AUTO_TEST_CASE(series_extend_by_one_row_per_append_and_stay_aligned) {
   BOOST_TEST_REQUIRE(centroid.size() == 3u);  // created at row 2: row 1 padded
   BOOST_TEST((std::isnan(centroid[0]) && centroid[1] == 0.7 && std::isnan(centroid[2])));
   BOOST_TEST(units_of(file.get(), "/series/body_000/centroid_x") == "length");
+}
+
+BOOST_AUTO_TEST_CASE(per_body_series_are_tables_of_rows_by_bodies_aligned_with_the_rows) {
+  const ibms::Hdf5Handle file = open_file(tiny_run().h5);
+  BOOST_TEST(dims_of(file.get(), "/series/per_body/speed") == (std::vector<hsize_t>{3, 3}));
+  const std::vector<double> speed = values_of(file.get(), "/series/per_body/speed");
+  for (int b = 0; b < 3; ++b) BOOST_TEST(std::isnan(speed[b]));  // created at row 2: row 1 padded
+  BOOST_TEST((std::vector<double>(speed.begin() + 3, speed.end())) == (std::vector<double>{1, 2, 3, 4, 5, 6}));
+  BOOST_TEST(units_of(file.get(), "/series/per_body/speed") == "length/time");
+}
+
+BOOST_AUTO_TEST_CASE(a_per_body_series_keeps_its_number_of_columns) {
+  std::string pattern = (fs::temp_directory_path() / "ibms_io_test_XXXXXX").string();
+  const fs::path directory = mkdtemp(pattern.data());
+  {
+    ibms::OutputFile output((directory / "out.h5").string(), "", tiny_grid, "0", "0");
+    output.append_series({{"time", "time", 0.1}}, {{"speed", "length/time", {1.0, 2.0}}});
+    BOOST_CHECK_EXCEPTION(output.append_series({{"time", "time", 0.2}}, {{"speed", "length/time", {1.0}}}),
+                          std::exception, [](const std::exception& e) {
+                            return std::string(e.what()).find("'speed' has 1 columns, not 2") != std::string::npos;
+                          });
+  }
+  fs::remove_all(directory);
 }
 
 BOOST_AUTO_TEST_CASE(snapshots_hold_arrays_with_dims_units_time_and_step) {

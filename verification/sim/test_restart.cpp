@@ -51,18 +51,28 @@ ibms::RunSummary run(const ibms::Scene& scene, const std::string& restart = "") 
 // Bitwise equality of two doubles (NaN payloads and signed zeros included).
 bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
-// The finite values of /series/<name> in an output file.
+// The finite values of /series/<name> in an output file; "body_NNN/<quantity>" is column NNN of
+// /series/per_body/<quantity>.
 std::vector<double> series(const std::string& file, const std::string& name) {
+  std::string path = "/series/" + name;
+  std::size_t column = 0;
+  const bool per_body = name.rfind("body_", 0) == 0;
+  if (per_body) {
+    column = std::stoul(name.substr(5, 3));
+    path = "/series/per_body/" + name.substr(name.find('/') + 1);
+  }
   const hid_t f = H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-  const hid_t d = H5Dopen2(f, ("/series/" + name).c_str(), H5P_DEFAULT);
+  const hid_t d = H5Dopen2(f, path.c_str(), H5P_DEFAULT);
   const hid_t s = H5Dget_space(d);
-  hsize_t n = 0;
-  H5Sget_simple_extent_dims(s, &n, nullptr);
-  std::vector<double> values(n);
-  H5Dread(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data());
+  hsize_t dims[2] = {0, 1};
+  H5Sget_simple_extent_dims(s, dims, nullptr);
+  std::vector<double> table(dims[0] * (per_body ? dims[1] : 1));
+  H5Dread(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, table.data());
   H5Sclose(s);
   H5Dclose(d);
   H5Fclose(f);
+  std::vector<double> values(dims[0]);
+  for (hsize_t k = 0; k < dims[0]; ++k) values[k] = per_body ? table[k * dims[1] + column] : table[k];
   values.erase(std::remove_if(values.begin(), values.end(), [](double v) { return !std::isfinite(v); }),
                values.end());
   return values;
@@ -128,8 +138,8 @@ BOOST_AUTO_TEST_CASE(restarted_run_ends_bit_identical_with_bodies_swelling_and_c
   BOOST_TEST(series_max(dir.file("rest.h5"), "contact/n_active_pairs") > 0.0);
   BOOST_TEST(series_max(dir.file("rest.h5"), "body_001/diameter") > 0.2 + 0.05 * 0.6);
 
-  // 7 fluid arrays, the FFTW wisdom, 6 arrays per mass-spring body.
-  BOOST_TEST(ibms::read_checkpoint(dir.file("whole.h5")).arrays.size() == 7u + 1u + 2u * 6u);
+  // 7 fluid arrays, the FFTW wisdom, 8 per-body arrays and their counts, however many bodies.
+  BOOST_TEST(ibms::read_checkpoint(dir.file("whole.h5")).arrays.size() == 7u + 1u + 2u * 8u);
   BOOST_TEST(n_different_values(dir.file("whole.h5"), dir.file("rest.h5")) == 0u);
 }
 
@@ -307,8 +317,15 @@ BOOST_AUTO_TEST_CASE(corrupted_checkpoint_scalars_and_sizes_are_refused) {
   short_array.arrays["fluid_pressure"].pop_back();
   refused(short_array, "fluid_pressure");
   ibms::Checkpoint short_body = good;
-  short_body.arrays["body_001_position"].resize(4);
-  refused(short_body, "body_001_position");
+  short_body.arrays["bodies_position"].resize(4);
+  refused(short_body, "bodies_position");
+  ibms::Checkpoint odd_count = good;
+  odd_count.arrays["bodies_position_count"][1] += 0.5;
+  refused(odd_count, "bodies_position_count");
+  ibms::Checkpoint moved_values = good;  // the counts add up, body 0 gets body 1's share
+  moved_values.arrays["bodies_position_count"][0] += 2;
+  moved_values.arrays["bodies_position_count"][1] -= 2;
+  refused(moved_values, "bodies_position");
 }
 
 BOOST_AUTO_TEST_CASE(restart_with_a_different_scene_or_size_is_refused_and_writes_nothing) {

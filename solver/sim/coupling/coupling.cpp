@@ -1,14 +1,10 @@
 // Choosing the coupling when the Simulation is built, and the stages the couplings share (coupling.hpp).
 #include "sim/coupling/coupling.hpp"
 
-#include <fmt/format.h>
-
 #include "sim/coupling/direct_forcing_coupling.hpp"
 #include "sim/coupling/end_of_step_constraint.hpp"
 
 namespace ibms {
-
-std::string body_prefix(std::size_t b) { return fmt::format("body_{:03d}_", b); }
 
 std::unique_ptr<Coupling> make_coupling(const Scene& scene, const Grid& grid, KernelKind kernel,
                                         const std::vector<MassSpringBody>& bodies, std::vector<BodyCoupling>& markers,

@@ -66,13 +66,10 @@ class Coupling {
   // Whether the series carry coupling_iterations (the products of hold).
   virtual bool counts_products() const { return false; }
 
-  // The coupling's state between steps in the checkpoint, under body_prefix(b) + name per body.
+  // The coupling's state between steps in the checkpoint, per-body arrays (append_body_array).
   virtual void write_checkpoint(const std::vector<BodyCoupling>& /*markers*/, CheckpointArrays& /*arrays*/) const {}
   virtual void read_checkpoint(const CheckpointReader& /*read*/, std::vector<BodyCoupling>& /*markers*/) {}
 };
-
-// The checkpoint names of body b start with this ("body_003_").
-std::string body_prefix(std::size_t b);
 
 // The coupling of `scene` (FluidOnly without bodies). markers: one per body, sized; the
 // end-of-step constraint sizes its own arrays and the bodies' response storage, and gives the

@@ -154,25 +154,22 @@ std::string EndOfStepConstraint::correction_stage() const {
 
 void EndOfStepConstraint::write_checkpoint(const std::vector<BodyCoupling>& markers, CheckpointArrays& arrays) const {
   for (std::size_t b = 0; b < markers.size(); ++b) {
-    const BodyCoupling& c = markers[b];
-    std::vector<double> forces{static_cast<double>(c.previous_force.size())};
-    for (const Vec2& force : c.previous_force) forces.insert(forces.end(), {force[0], force[1]});
-    arrays[body_prefix(b) + "previous_force"] = forces;
+    std::vector<double> forces;
+    for (const Vec2& force : markers[b].previous_force) forces.insert(forces.end(), {force[0], force[1]});
+    append_body_array(arrays, "bodies_previous_force", b, forces);
   }
 }
 
 void EndOfStepConstraint::read_checkpoint(const CheckpointReader& read, std::vector<BodyCoupling>& markers) {
   for (std::size_t b = 0; b < markers.size(); ++b) {
     BodyCoupling& c = markers[b];
-    const std::string name = body_prefix(b) + "previous_force";
-    const std::vector<double>* found = read.find(name);
-    if (found == nullptr || found->empty()) read.fail(name, "missing");
-    const double n = (*found)[0];
-    if (!(n >= 0.0 && n <= static_cast<double>(c.previous_force.capacity()) && n == std::floor(n)))
-      read.fail(name, fmt::format("marker count {} is not in [0, {}]", n, c.previous_force.capacity()));
-    const std::vector<double>& values = read.array(name, 1 + 2 * static_cast<std::size_t>(n));
-    c.previous_force.resize(static_cast<std::size_t>(n));
-    for (std::size_t l = 0; l < c.previous_force.size(); ++l) c.previous_force[l] = {values[1 + 2 * l], values[2 + 2 * l]};
+    const BodySlice values = read.body_array("bodies_previous_force", b, markers.size());
+    // None before the first step, else two per marker, no more than the markers' capacity.
+    if (values.size % 2 != 0 || values.size / 2 > c.previous_force.capacity())
+      read.fail("bodies_previous_force", fmt::format("body {}: {} values are not two per marker for at most {} markers",
+                                                     b, values.size, c.previous_force.capacity()));
+    c.previous_force.resize(values.size / 2);
+    for (std::size_t l = 0; l < c.previous_force.size(); ++l) c.previous_force[l] = {values.data[2 * l], values.data[2 * l + 1]};
   }
 }
 

@@ -24,7 +24,8 @@ class EndOfStepConstraint final : public Coupling {
   std::string forcing_stage() const override;
   std::string correction_stage() const override;
   bool counts_products() const override { return true; }
-  // The latest forces, the next step's predictor: "previous_force" per body (count first, then values).
+  // The latest forces, the next step's predictor: "bodies_previous_force", two values per marker
+  // (none before the first step).
   void write_checkpoint(const std::vector<BodyCoupling>& markers, CheckpointArrays& arrays) const override;
   void read_checkpoint(const CheckpointReader& read, std::vector<BodyCoupling>& markers) override;
 

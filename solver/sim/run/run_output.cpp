@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 
 #include "fluid/boundary_conditions.hpp"
 #include "fluid/operators.hpp"
@@ -25,19 +26,35 @@ namespace ibms {
 
 const char* ibms_version() { return IBMS_VERSION; }
 
-void BodyTable::append(double time, const std::vector<SeriesValue>& values) {
+void BodyTable::append(double time, const std::vector<SeriesValue>& leading, const std::vector<SeriesColumns>& per_body,
+                       const std::vector<char>& present, const std::vector<SeriesValue>& trailing) {
+  const std::size_t n_bodies = per_body.empty() ? 0 : per_body[0].values.size();
   if (headers.empty()) {
     headers.push_back("time [time]");
-    for (const SeriesValue& v : values) headers.push_back(v.name + " [" + v.units + "]");
+    for (const SeriesValue& v : leading) headers.push_back(v.name + " [" + v.units + "]");
+    for (std::size_t b = 0; b < n_bodies; ++b)
+      for (std::size_t q = 0; q < per_body.size(); ++q)
+        if (present[b * per_body.size() + q])
+          headers.push_back(fmt::format("body_{:03d}/{} [{}]", b, per_body[q].name, per_body[q].units));
+    for (const SeriesValue& v : trailing) headers.push_back(v.name + " [" + v.units + "]");
     columns.resize(headers.size());
   }
-  columns[0].push_back(time);
-  for (std::size_t k = 0; k < values.size(); ++k) columns[k + 1].push_back(values[k].value);
+  std::size_t k = 0;
+  columns[k++].push_back(time);
+  for (const SeriesValue& v : leading) columns[k++].push_back(v.value);
+  for (std::size_t b = 0; b < n_bodies; ++b)
+    for (std::size_t q = 0; q < per_body.size(); ++q)
+      if (present[b * per_body.size() + q]) columns[k++].push_back(per_body[q].values[b]);
+  for (const SeriesValue& v : trailing) columns[k++].push_back(v.value);
 }
 
 namespace {
 
-std::vector<SeriesValue> body_series(const Simulation& sim, const ControlVolumeMonitor& control_volumes);
+struct BodyRow {
+  std::vector<SeriesValue> leading, trailing;  // scalars before and after the bodies' columns
+};
+BodyRow body_series(const Simulation& sim, const ControlVolumeMonitor& control_volumes,
+                    std::vector<SeriesColumns>& per_body, std::vector<char>& present);
 std::vector<SeriesValue> probe_series(const Simulation& sim);
 
 void write_body_table(const std::string& h5_path, const Simulation& sim, const BodyTable& table) {
@@ -54,7 +71,8 @@ void write_body_table(const std::string& h5_path, const Simulation& sim, const B
 }
 
 void write_series(OutputFile& out, const Simulation& sim, const ControlVolumeMonitor& control_volumes, double dt,
-                  double cfl, double steady_residual, BodyTable& bodies) {
+                  double cfl, double steady_residual, BodyTable& bodies, std::vector<SeriesColumns>& per_body,
+                  std::vector<char>& present) {
   const FluidState& f = sim.fluid();
   const ProjectionStats& ps = sim.stats().last_projection;
   std::vector<SeriesValue> row({
@@ -78,14 +96,51 @@ void write_series(OutputFile& out, const Simulation& sim, const ControlVolumeMon
     row.push_back({"inflow_flux", "length^2/time", in});
     row.push_back({"net_boundary_flux", "length^2/time", net_inflow(g, f.velocity_face_x, f.velocity_face_y)});
   }
-  std::vector<SeriesValue> body_row = body_series(sim, control_volumes);
-  for (const SeriesValue& v : probe_series(sim)) body_row.push_back(v);
-  if (!body_row.empty()) bodies.append(f.time, body_row);
-  for (const SeriesValue& v : body_row) row.push_back(v);
-  out.append_series(row);
+  BodyRow body_row = body_series(sim, control_volumes, per_body, present);
+  for (const SeriesValue& v : probe_series(sim)) body_row.trailing.push_back(v);
+  if (!body_row.leading.empty() || !per_body.empty() || !body_row.trailing.empty())
+    bodies.append(f.time, body_row.leading, per_body, present, body_row.trailing);
+  for (const SeriesValue& v : body_row.leading) row.push_back(v);
+  for (const SeriesValue& v : body_row.trailing) row.push_back(v);
+  out.append_series(row, per_body);
 }
 
 std::string body_name(std::size_t b) { return fmt::format("body_{:03d}", b); }
+
+// The quantities of every body in a series row, in /series/per_body/<name> and the body table.
+struct BodyQuantity {
+  const char* name;
+  const char* units;
+};
+constexpr BodyQuantity body_quantities[] = {
+    {"centroid_x", "length"},
+    {"centroid_y", "length"},
+    {"velocity_x", "length/time"},
+    {"velocity_y", "length/time"},
+    {"angle", "rad"},               // rigid and prescribed bodies
+    {"angular_velocity", "1/time"},  // rigid and prescribed bodies
+    {"force_x", "force per unit depth"},
+    {"force_y", "force per unit depth"},
+    {"torque", "force length per unit depth"},
+    {"cv_force_x", "force per unit depth"},
+    {"cv_force_y", "force per unit depth"},
+    {"cv_clearance", "length"},
+    {"drag_coefficient", "-"},  // the four coefficients: bodies with a reference_speed
+    {"lift_coefficient", "-"},
+    {"cv_drag_coefficient", "-"},
+    {"cv_lift_coefficient", "-"},
+    {"slip_max", "-"},
+    {"slip_rms", "-"},
+    {"face_slip_max", "-"},
+    {"face_slip_rms", "-"},
+    {"diameter", "length"},
+    {"area", "length^2 per unit depth"},
+    {"deformation", "-"},
+    {"spring_energy", "energy per unit depth"},
+    {"n_substeps", "-"},
+    {"max_target_speed", "length/time"},
+};
+constexpr std::size_t n_body_quantities = sizeof body_quantities / sizeof body_quantities[0];
 
 // output.probes: p (dynamic), u, v at each point, bilinear in the four nearest cell centres; a
 // point within half a cell of a side takes the nearest centre line there (no extrapolation).
@@ -116,85 +171,85 @@ std::vector<SeriesValue> probe_series(const Simulation& sim) {
 
 // Per-body series: centroid of the rim polygon, centre-of-mass velocity, the forces of the step
 // (immersed-boundary reaction and control-volume balance), the slip left at the markers, diameter
-// (the swelling law's D), rim-polygon area, elastic energy and the sub-steps of the latest step.
-std::vector<SeriesValue> body_series(const Simulation& sim, const ControlVolumeMonitor& control_volumes) {
-  std::vector<SeriesValue> row;
+// (the swelling law's D), rim-polygon area, elastic energy and the sub-steps of the latest step;
+// the scalars of the coupling, the bodies' separation and the contacts around them.
+BodyRow body_series(const Simulation& sim, const ControlVolumeMonitor& control_volumes,
+                    std::vector<SeriesColumns>& per_body, std::vector<char>& present) {
+  BodyRow row;
   if (!sim.has_bodies()) return row;
   // Coupling diagnostics of the step: largest fluid velocity component and the Poisson removed
   // mean (compatibility, docs/method.md §1.8), with each body's largest forcing target speed.
-  row.push_back({"max_fluid_velocity_component", "length/time", sim.stats().last_projection.max_velocity});
-  row.push_back({"poisson_removed_mean_bodies", "1/time^2", sim.stats().last_projection.removed_mean});
+  row.leading.push_back({"max_fluid_velocity_component", "length/time", sim.stats().last_projection.max_velocity});
+  row.leading.push_back({"poisson_removed_mean_bodies", "1/time^2", sim.stats().last_projection.removed_mean});
   if (sim.coupling().counts_products())
-    row.push_back({"coupling_iterations", "-", static_cast<double>(sim.stats().last_coupling_iterations)});
-  for (std::size_t b = 0; b < sim.bodies().size(); ++b) {
+    row.leading.push_back({"coupling_iterations", "-", static_cast<double>(sim.stats().last_coupling_iterations)});
+  const std::size_t n_bodies = sim.bodies().size();
+  if (per_body.empty()) {  // the first row: names, units, and which bodies have which quantity
+    for (const BodyQuantity& q : body_quantities) per_body.push_back({q.name, q.units, std::vector<double>(n_bodies)});
+    present.assign(n_bodies * n_body_quantities, 1);
+    for (std::size_t b = 0; b < n_bodies; ++b) {
+      const bool turns = sim.bodies()[b].kind != BodyKind::mass_spring;
+      const bool coefficients = sim.scene().bodies[b].reference_speed > 0.0;
+      for (std::size_t q = 0; q < n_body_quantities; ++q) {
+        const std::string name = body_quantities[q].name;
+        if ((name == "angle" || name == "angular_velocity") && !turns) present[b * n_body_quantities + q] = 0;
+        if (name.find("coefficient") != std::string::npos && !coefficients) present[b * n_body_quantities + q] = 0;
+      }
+    }
+  }
+  constexpr double none = std::numeric_limits<double>::quiet_NaN();
+  for (std::size_t b = 0; b < n_bodies; ++b) {
     const MassSpringBody& body = sim.bodies()[b];
-    const std::string name = body_name(b);
     const auto c = centroid(body);
     const Vec2 velocity = body_velocity(sim, b);  // centre-of-mass velocity (rigid motion: V)
-    row.push_back({name + "/centroid_x", "length", c[0]});
-    row.push_back({name + "/centroid_y", "length", c[1]});
-    row.push_back({name + "/velocity_x", "length/time", velocity[0]});
-    row.push_back({name + "/velocity_y", "length/time", velocity[1]});
-    if (body.kind != BodyKind::mass_spring) {
-      row.push_back({name + "/angle", "rad", sim.rigid()[b].state.angle});
-      row.push_back({name + "/angular_velocity", "1/time", sim.rigid()[b].state.angular_velocity});
-    }
-    // What the fluid does to the body in the step just taken (BodyCoupling::hydrodynamic_force).
+    const bool turns = body.kind != BodyKind::mass_spring;
+    // What the fluid does to the body in the step just taken (BodyCoupling::hydrodynamic_force), and
+    // the same force from the fluid alone: the control-volume balance of the step
+    // (sim/checks/control_volume_monitor.hpp).
     const BodyCoupling& coupling = sim.markers()[b];
-    row.push_back({name + "/force_x", "force per unit depth", coupling.hydrodynamic_force[0]});
-    row.push_back({name + "/force_y", "force per unit depth", coupling.hydrodynamic_force[1]});
-    row.push_back({name + "/torque", "force length per unit depth", coupling.hydrodynamic_torque});
-    // The same force from the fluid alone: the control-volume balance of the step (sim/checks/control_volume_monitor.hpp).
     const BodyControlVolume& cv = control_volumes.body(b);
-    row.push_back({name + "/cv_force_x", "force per unit depth", cv.force[0]});
-    row.push_back({name + "/cv_force_y", "force per unit depth", cv.force[1]});
-    row.push_back({name + "/cv_clearance", "length", cv.clearance});
     const BodySpec& spec = sim.scene().bodies[b];
-    if (spec.reference_speed > 0.0) {
-      // C = F / (rho_f U_ref^2 L_ref / 2); drag along +x, lift along +y.
-      const double length = spec.reference_length > 0.0 ? spec.reference_length : spec.diameter;
-      const double scale = 0.5 * sim.fluid_density() * spec.reference_speed * spec.reference_speed * length;
-      row.push_back({name + "/drag_coefficient", "-", coupling.hydrodynamic_force[0] / scale});
-      row.push_back({name + "/lift_coefficient", "-", coupling.hydrodynamic_force[1] / scale});
-      row.push_back({name + "/cv_drag_coefficient", "-", cv.force[0] / scale});
-      row.push_back({name + "/cv_lift_coefficient", "-", cv.force[1] / scale});
-    }
-    // The no-slip error left at the end of the step, max and RMS over the markers of
-    // |J u^{n+1} - U_target| / U_ref (BodyCoupling::slip_max, slip_rms).
-    row.push_back({name + "/slip_max", "-", coupling.slip_max});
-    row.push_back({name + "/slip_rms", "-", coupling.slip_rms});
-    // The same of the face velocities, |J_f U_f^{n+1} - U_target| / U_ref: what "no_slip" holds
-    // under ibm.constrained_velocity = "faces".
-    row.push_back({name + "/face_slip_max", "-", coupling.face_slip_max});
-    row.push_back({name + "/face_slip_rms", "-", coupling.face_slip_rms});
-    row.push_back({name + "/diameter", "length", body.diameter});
-    row.push_back({name + "/area", "length^2 per unit depth", polygon_area(body)});
-    row.push_back({name + "/deformation", "-", deformation_parameter(body)});
-    row.push_back({name + "/spring_energy", "energy per unit depth", spring_energy(body, body.length_scale())});
-    row.push_back({name + "/n_substeps", "-", static_cast<double>(sim.substep_planner().body_substeps(b))});
+    // C = F / (rho_f U_ref^2 L_ref / 2); drag along +x, lift along +y.
+    const double length = spec.reference_length > 0.0 ? spec.reference_length : spec.diameter;
+    const double scale = spec.reference_speed > 0.0
+                             ? 0.5 * sim.fluid_density() * spec.reference_speed * spec.reference_speed * length
+                             : none;
     double max_target = 0.0;
-    for (const auto& u : sim.markers()[b].target_velocity) max_target = std::max(max_target, std::hypot(u[0], u[1]));
-    row.push_back({name + "/max_target_speed", "length/time", max_target});
+    for (const auto& u : coupling.target_velocity) max_target = std::max(max_target, std::hypot(u[0], u[1]));
+    // The no-slip error left at the end of the step, max and RMS over the markers of
+    // |J u^{n+1} - U_target| / U_ref (BodyCoupling::slip_max, slip_rms), and the same of the face
+    // velocities, what "no_slip" holds under ibm.constrained_velocity = "faces".
+    const double values[n_body_quantities] = {
+        c[0], c[1], velocity[0], velocity[1],
+        turns ? sim.rigid()[b].state.angle : none, turns ? sim.rigid()[b].state.angular_velocity : none,
+        coupling.hydrodynamic_force[0], coupling.hydrodynamic_force[1], coupling.hydrodynamic_torque,
+        cv.force[0], cv.force[1], cv.clearance,
+        coupling.hydrodynamic_force[0] / scale, coupling.hydrodynamic_force[1] / scale, cv.force[0] / scale,
+        cv.force[1] / scale,
+        coupling.slip_max, coupling.slip_rms, coupling.face_slip_max, coupling.face_slip_rms,
+        body.diameter, polygon_area(body), deformation_parameter(body), spring_energy(body, body.length_scale()),
+        static_cast<double>(sim.substep_planner().body_substeps(b)), max_target};
+    for (std::size_t q = 0; q < n_body_quantities; ++q) per_body[q].values[b] = values[q];
   }
   {  // separation: from the walls always, between bodies when there are several
     const Grid& g = sim.grid();
     const BodySeparation sep = body_separation(sim.bodies(), {g.origin_x, g.origin_y},
                                                {g.origin_x + g.length_x, g.origin_y + g.length_y},
                                                {g.periodic_x, g.periodic_y});
-    if (!(g.periodic_x && g.periodic_y)) row.push_back({"bodies/min_wall_distance", "length", sep.min_wall_distance});
-    if (sim.bodies().size() > 1) {
-      row.push_back({"bodies/min_rim_distance", "length", sep.min_rim_distance});
-      row.push_back({"bodies/n_points_inside_others", "-", static_cast<double>(sep.n_points_inside_others)});
-      row.push_back({"bodies/n_edge_crossings", "-", static_cast<double>(sep.n_edge_crossings)});
+    if (!(g.periodic_x && g.periodic_y)) row.trailing.push_back({"bodies/min_wall_distance", "length", sep.min_wall_distance});
+    if (n_bodies > 1) {
+      row.trailing.push_back({"bodies/min_rim_distance", "length", sep.min_rim_distance});
+      row.trailing.push_back({"bodies/n_points_inside_others", "-", static_cast<double>(sep.n_points_inside_others)});
+      row.trailing.push_back({"bodies/n_edge_crossings", "-", static_cast<double>(sep.n_edge_crossings)});
     }
   }
   if (sim.has_contacts()) {  // merged over the sub-steps of the step
     const ContactStats& cs = sim.stats().last_contact_stats;
-    row.push_back({"contact/n_active_pairs", "-", static_cast<double>(cs.n_active_pairs)});
-    row.push_back({"contact/n_wall_contacts", "-", static_cast<double>(cs.n_wall_contacts)});
-    row.push_back({"contact/max_overlap", "length", cs.max_overlap});
+    row.trailing.push_back({"contact/n_active_pairs", "-", static_cast<double>(cs.n_active_pairs)});
+    row.trailing.push_back({"contact/n_wall_contacts", "-", static_cast<double>(cs.n_wall_contacts)});
+    row.trailing.push_back({"contact/max_overlap", "length", cs.max_overlap});
     if (sim.contact_model().law == ContactLawKind::collision_time)
-      row.push_back({"contact/collision_time", "time", sim.contact_model().collision_time});
+      row.trailing.push_back({"contact/collision_time", "time", sim.contact_model().collision_time});
   }
   return row;
 }
@@ -287,7 +342,7 @@ void RunOutput::end_step(Simulation& sim, const ControlVolumeMonitor& control_vo
   last_residual_ = steady_residual;
   if (sim.fluid().step % sim.scene().output.series_every != 0) return;
   auto t = sim.timers().time(Stage::output);
-  write_series(file_, sim, control_volumes, dt, cfl, steady_residual, body_table_);
+  write_series(file_, sim, control_volumes, dt, cfl, steady_residual, body_table_, per_body_, present_);
   series_step_ = sim.fluid().step;
 }
 
@@ -299,7 +354,7 @@ void RunOutput::checkpoint(Simulation& sim, double next_snapshot) {
 void RunOutput::finish(Simulation& sim, const ControlVolumeMonitor& control_volumes, double next_snapshot) {
   auto t = sim.timers().time(Stage::output);
   if (last_dt_ > 0.0 && series_step_ != sim.fluid().step)
-    write_series(file_, sim, control_volumes, last_dt_, last_cfl_, last_residual_, body_table_);
+    write_series(file_, sim, control_volumes, last_dt_, last_cfl_, last_residual_, body_table_, per_body_, present_);
   // The checkpoint first: write_snapshot refills the velocity ghost layers.
   write_simulation_checkpoint(file_, sim, next_snapshot);
   write_snapshot(file_, sim);

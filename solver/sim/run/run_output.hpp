@@ -17,11 +17,15 @@ namespace ibms {
 const char* ibms_version();
 const char* ibms_git_commit();
 
-// Body series kept in memory for <stem>_bodies.csv (one column per series, time first).
+// Body series kept in memory for <stem>_bodies.csv (one column per series, time first): the
+// leading scalars, then body by body its quantities (body_NNN/<name>, those the body has), then the
+// trailing scalars (separation, contacts, probes). The headers come from the first row.
 struct BodyTable {
   std::vector<std::string> headers;
   std::vector<std::vector<double>> columns;
-  void append(double time, const std::vector<SeriesValue>& values);
+  // present[b * per_body.size() + q]: body b has quantity q.
+  void append(double time, const std::vector<SeriesValue>& leading, const std::vector<SeriesColumns>& per_body,
+              const std::vector<char>& present, const std::vector<SeriesValue>& trailing);
 };
 
 // The output of one run, opened before the first step. Each call is timed as Stage::output.
@@ -50,6 +54,9 @@ class RunOutput {
   std::string h5_path_;
   OutputFile file_;
   BodyTable body_table_;
+  // The per-body quantities of a series row (/series/per_body) and which bodies have each.
+  std::vector<SeriesColumns> per_body_;
+  std::vector<char> present_;
   // The final step's series row is written even when output.series_every does not divide its step.
   long series_step_ = -1;
   double last_dt_ = 0.0, last_cfl_ = 0.0, last_residual_ = 0.0;

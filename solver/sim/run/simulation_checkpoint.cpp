@@ -83,27 +83,29 @@ void write_simulation_checkpoint(OutputFile& out, const Simulation& sim, double 
       {"ny", static_cast<double>(sim.grid().ny)},
       {"n_bodies", static_cast<double>(sim.bodies().size())},
   };
+  // Per-body arrays, all bodies in one dataset each (append_body_array).
   for (std::size_t b = 0; b < sim.bodies().size(); ++b) {
     const MassSpringBody& body = sim.bodies()[b];
-    const std::string prefix = body_prefix(b);
-    arrays[prefix + "position"] = interleaved(body.position);
-    arrays[prefix + "velocity"] = interleaved(body.velocity);
-    arrays[prefix + "mass"] = body.mass;
-    arrays[prefix + "diameter"] = {body.diameter};
-    arrays[prefix + "triangle_momentum"] = interleaved(sim.markers()[b].triangle_momentum);
     const BodyCoupling& c = sim.markers()[b];
-    arrays[prefix + "inner_angular_momentum"] = {c.inner_angular_momentum, c.inner_reference_centre[0],
-                                                 c.inner_reference_centre[1]};
+    append_body_array(arrays, "bodies_position", b, interleaved(body.position));
+    append_body_array(arrays, "bodies_velocity", b, interleaved(body.velocity));
+    append_body_array(arrays, "bodies_mass", b, body.mass);
+    append_body_array(arrays, "bodies_diameter", b, {body.diameter});
+    append_body_array(arrays, "bodies_triangle_momentum", b, interleaved(c.triangle_momentum));
+    append_body_array(arrays, "bodies_inner_angular_momentum", b,
+                      {c.inner_angular_momentum, c.inner_reference_centre[0], c.inner_reference_centre[1]});
+    std::vector<double> rigid, acceleration;
     if (body.kind != BodyKind::mass_spring) {
       const RigidState& r = sim.rigid()[b].state;
-      arrays[prefix + "rigid_state"] = {r.centre[0], r.centre[1], r.angle, r.velocity[0], r.velocity[1],
-                                        r.angular_velocity};
+      rigid = {r.centre[0], r.centre[1], r.angle, r.velocity[0], r.velocity[1], r.angular_velocity};
       // The virtual mass's right-hand side: the previous fluid step's acceleration.
       if (sim.rigid()[b].virtual_mass > 0.0) {
         const auto& a = sim.rigid()[b].previous_acceleration;
-        arrays[prefix + "rigid_acceleration"] = {a[0], a[1], a[2]};
+        acceleration = {a[0], a[1], a[2]};
       }
     }
+    append_body_array(arrays, "bodies_rigid_state", b, rigid);
+    append_body_array(arrays, "bodies_rigid_acceleration", b, acceleration);
   }
   sim.coupling().write_checkpoint(sim.markers(), arrays);  // the coupling's own section
   // The FFTW planner state, one character code per value (optional on reading).
@@ -166,26 +168,29 @@ double restore_simulation(const Checkpoint& checkpoint, const std::string& path,
     guard.energy_floor = FluidGuard::floor_fraction * 0.5 * guard.speed_scale * guard.speed_scale *
                          sim.grid().length_x * sim.grid().length_y;
   }
-  for (std::size_t b = 0; b < sim.bodies().size(); ++b) {
+  const std::size_t n_bodies = sim.bodies().size();
+  const auto points = [&](const std::string& name, std::size_t b, std::vector<Vec2>& out) {
+    const BodySlice v = read.body_array(name, b, n_bodies, 2 * out.size());
+    for (std::size_t k = 0; k < out.size(); ++k) out[k] = {v.data[2 * k], v.data[2 * k + 1]};
+  };
+  for (std::size_t b = 0; b < n_bodies; ++b) {
     MassSpringBody& body = sim.bodies()[b];
-    const std::string prefix = body_prefix(b);
-    read.into(prefix + "position", body.position);
-    read.into(prefix + "velocity", body.velocity);
-    read.into(prefix + "mass", body.mass);
-    body.diameter = read.array(prefix + "diameter", 1)[0];
-    read.into(prefix + "triangle_momentum", sim.markers()[b].triangle_momentum);
     BodyCoupling& c = sim.markers()[b];
-    const std::vector<double> angular = read.array(prefix + "inner_angular_momentum", 3);
-    c.inner_angular_momentum = angular[0];
-    c.inner_reference_centre = {angular[1], angular[2]};
-    if (body.kind != BodyKind::mass_spring) {
-      const std::vector<double> r = read.array(prefix + "rigid_state", 6);
-      sim.rigid()[b].state = {{r[0], r[1]}, r[2], {r[3], r[4]}, r[5]};
-      if (sim.rigid()[b].virtual_mass > 0.0) {
-        const std::vector<double> a = read.array(prefix + "rigid_acceleration", 3);
-        sim.rigid()[b].previous_acceleration = {a[0], a[1], a[2]};
-      }
-    }
+    points("bodies_position", b, body.position);
+    points("bodies_velocity", b, body.velocity);
+    const BodySlice mass = read.body_array("bodies_mass", b, n_bodies, body.mass.size());
+    body.mass.assign(mass.data, mass.data + mass.size);
+    body.diameter = read.body_array("bodies_diameter", b, n_bodies, 1).data[0];
+    points("bodies_triangle_momentum", b, c.triangle_momentum);
+    const BodySlice angular = read.body_array("bodies_inner_angular_momentum", b, n_bodies, 3);
+    c.inner_angular_momentum = angular.data[0];
+    c.inner_reference_centre = {angular.data[1], angular.data[2]};
+    const bool rigid = body.kind != BodyKind::mass_spring;
+    const BodySlice r = read.body_array("bodies_rigid_state", b, n_bodies, rigid ? 6 : 0);
+    const bool virtual_mass = rigid && sim.rigid()[b].virtual_mass > 0.0;
+    const BodySlice a = read.body_array("bodies_rigid_acceleration", b, n_bodies, virtual_mass ? 3 : 0);
+    if (rigid) sim.rigid()[b].state = {{r.data[0], r.data[1]}, r.data[2], {r.data[3], r.data[4]}, r.data[5]};
+    if (virtual_mass) sim.rigid()[b].previous_acceleration = {a.data[0], a.data[1], a.data[2]};
   }
   sim.coupling().read_checkpoint(read, sim.markers());
   return next_snapshot_time;
