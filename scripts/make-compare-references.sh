@@ -2,8 +2,8 @@
 # Makes the ibms high-resolution references that `ibms compare` reads (docs/compare.md):
 #   validation/<cavity case>/reference/ibms_centreline_{u,v}.csv   (256^2 run of the case's scene)
 #   validation/settling_disk/reference/ibms_settling_history.csv    (400 x 1200 run, D/h = 50)
-#   validation/cavity_swelling_particles/reference/ibms_trajectories_{nonswelling,swelling}.csv
-#   validation/cavity_deformable_objects/reference/ibms_deformation_k{10,100}.csv
+#   validation/cavity_swelling_particles/reference/ibms[_papers_coupling]_trajectories_{nonswelling,swelling}.csv
+#   validation/cavity_deformable_objects/reference/ibms[_papers_coupling]_deformation_k{10,100}.csv
 #     (the body cases at their validation grid, 100 x 100, as their ctest runs them)
 #   validation/dfg_cylinder_2d1/reference/ibms_dfg_2d1.csv          (D/h = 40, a `slow` grid)
 #   validation/dfg_cylinder_2d2/reference/ibms_dfg_2d2_forces.csv   (D/h = 30, t >= 8)
@@ -16,7 +16,7 @@
 # CAVITY_CASES="..." restricts the cavity cases; SKIP_SETTLING=1 skips the settling disk;
 # ONLY_BODIES=1 makes only the two body cases' references; ONLY_DFG=1 only the two DFG cases' (their
 # runs WORK_DIR/dfg_2d1_40 and dfg_2d2_30, e.g. links to build/validation/dfg_cylinder_*/ outputs). Their runs are WORK_DIR/<case>_<variant>.h5
-# (variant nonswelling|swelling|k10|k100); links to the ctest outputs are reused, e.g.
+# (variant nonswelling|swelling|k10|k100, with _papers for the papers' coupling); links to the ctest outputs are reused, e.g.
 # build/validation/cavity_deformable_objects/k10{.h5,_bodies.csv} linked as
 # WORK_DIR/cavity_deformable_objects_k10{.h5,_bodies.csv}.
 set -euo pipefail
@@ -133,29 +133,38 @@ PY
 fi
 [[ ${ONLY_DFG:-0} == 1 ]] && { echo "references written"; exit 0; }
 
-# Body cavities (docs/compare.md): ibms's own validation runs at the cases' 100 x 100.
-run_body_case() {  # case, variant -> sets base; runs the scene unless WORK_DIR has its _bodies.csv
-  base=$work/$1_$2
+# Body cavities (docs/compare.md): ibms's own validation runs at the cases' 100 x 100, under the
+# scenes' end-of-step constraint (files ibms_<what>.csv) and under the papers' coupling
+# (ibms_papers_coupling_<what>.csv, the runs <case>_<variant>_papers with ibm.coupling = "uhlmann").
+run_body_case() {  # case, variant, coupling suffix ("" or _papers) -> sets base; runs the scene unless WORK_DIR has its _bodies.csv
+  base=$work/$1_$2$3
   if [[ ! -s ${base}_bodies.csv ]]; then
-    echo "running $1 $2"
-    "$ibms" run "$src/validation/$1/scene_$2.toml" -o "$base.h5" --quiet
+    echo "running $1 $2$3"
+    local papers=()
+    [[ $3 == _papers ]] && papers=(--set 'ibm.coupling="uhlmann"')
+    "$ibms" run "$src/validation/$1/scene_$2.toml" "${papers[@]}" -o "$base.h5" --quiet
   fi
   # The root attribute git_commit (docs/output.md), without h5py: the first string of exactly 12 hex digits in the file.
   made_by=$(/usr/bin/python3 -c "import h5py; f = h5py.File('$base.h5', 'r'); print(f.attrs['git_commit'])" 2>/dev/null ||
             strings -n 12 "$base.h5" | grep -m1 -xE '[0-9a-f]{12}|unknown' || echo unknown)
 }
+coupling_name() {  # coupling suffix -> words for the header
+  if [[ $1 == _papers ]]; then echo "the papers' coupling (ibm.coupling = \"uhlmann\")"; else echo "the scene's end-of-step constraint"; fi
+}
 # Trajectories as cavity_swelling_particles/check.cpp writes them (10 <= t <= 20, 10 digits), every
 # ${TRAJECTORY_STRIDE:-1}-th output time (to keep the files small).
 stride=${TRAJECTORY_STRIDE:-2}   # 2: ~200 kB per file instead of ~400 kB
+for coupling in "" _papers; do
 for variant in nonswelling swelling; do
-  wanted cavity_swelling_particles ibms_trajectories_$variant.csv || continue
-  run_body_case cavity_swelling_particles $variant
+  file=ibms${coupling:+_papers_coupling}_trajectories_$variant.csv
+  wanted cavity_swelling_particles "$file" || continue
+  run_body_case cavity_swelling_particles $variant "$coupling"
   { generated cavity_swelling_particles
     echo "# ibms reference for 'ibms compare cavity_swelling_particles' (docs/compare.md): particle centroids"
     echo "# (rim-polygon area centroid) and diameters of ibms's own $variant run of"
-    echo "# validation/cavity_swelling_particles/scene_$variant.toml (100 x 100, DEM stiffness 1e7, as ctest runs it),"
-    echo "# 10 <= t <= 20, one output time in ${stride}. ibms commit $made_by; written by"
-    echo "# scripts/make-compare-references.sh at commit $commit."
+    echo "# validation/cavity_swelling_particles/scene_$variant.toml (100 x 100, DEM stiffness 1e7, as ctest runs it)"
+    echo "# under $(coupling_name "$coupling"), 10 <= t <= 20, one output time in ${stride}."
+    echo "# ibms commit $made_by; written by scripts/make-compare-references.sh at commit $commit."
     echo "time [-],particle [-],x [-],y [-],diameter [-]"
     awk -F, -v stride="$stride" 'BEGIN { OFS = "," } /^#/ { next }
       !h { h = 1; for (k = 1; k <= NF; ++k) { if ($k ~ /^body_[0-9]+\/centroid_x/) { n = split($k, a, /[_\/]/); cx[a[2] + 0] = k }
@@ -163,23 +172,26 @@ for variant in nonswelling swelling; do
                                                if ($k ~ /^body_[0-9]+\/diameter/) { split($k, a, /[_\/]/); cd[a[2] + 0] = k } }
            nb = length(cx); next }
       $1 + 0 >= 10 && $1 + 0 <= 20 { if (m++ % stride) next; for (b = 0; b < nb; ++b) printf "%.10g,%d,%.10g,%.10g,%.10g\n", $1, b, $cx[b], $cy[b], $cd[b] }' \
-      "${base}_bodies.csv"; } > "$(target cavity_swelling_particles ibms_trajectories_$variant.csv)"
+      "${base}_bodies.csv"; } > "$(target cavity_swelling_particles "$file")"
 done
 # Deformation parameter and area / A0 (A0: the body's first output) of every body, t <= 20.
 for k in 10 100; do
-  wanted cavity_deformable_objects ibms_deformation_k$k.csv || continue
-  run_body_case cavity_deformable_objects k$k
+  file=ibms${coupling:+_papers_coupling}_deformation_k$k.csv
+  wanted cavity_deformable_objects "$file" || continue
+  run_body_case cavity_deformable_objects k$k "$coupling"
   { generated cavity_deformable_objects
     echo "# ibms reference for 'ibms compare cavity_deformable_objects' (docs/compare.md): deformation parameter"
     echo "# (r_max - r_min)/(r_max + r_min) of the rim distances from the rim centroid and rim-polygon area / A0 of"
     echo "# every body, every output time t <= 20, of ibms's own run of validation/cavity_deformable_objects/scene_k$k.toml"
-    echo "# (100 x 100, as ctest runs it). ibms commit $made_by; written by scripts/make-compare-references.sh at commit $commit."
+    echo "# (100 x 100, as ctest runs it) under $(coupling_name "$coupling")."
+    echo "# ibms commit $made_by; written by scripts/make-compare-references.sh at commit $commit."
     echo "time [-],particle [-],deformation [-],area_ratio [-]"
     awk -F, 'BEGIN { OFS = "," } /^#/ { next }
       !h { h = 1; for (k = 1; k <= NF; ++k) { if ($k ~ /^body_[0-9]+\/deformation/) { split($k, a, /[_\/]/); cd[a[2] + 0] = k }
                                                if ($k ~ /^body_[0-9]+\/area/) { split($k, a, /[_\/]/); ca[a[2] + 0] = k } }
            nb = length(cd); next }
       $1 + 0 <= 20 { for (b = 0; b < nb; ++b) { if (!(b in a0)) a0[b] = $ca[b]; printf "%.10g,%d,%.10g,%.10g\n", $1, b, $cd[b], $ca[b] / a0[b] } }' \
-      "${base}_bodies.csv"; } > "$(target cavity_deformable_objects ibms_deformation_k$k.csv)"
+      "${base}_bodies.csv"; } > "$(target cavity_deformable_objects "$file")"
+done
 done
 echo "references written"

@@ -248,6 +248,8 @@ int compare_swelling_particles(const std::vector<std::string>& files, const std:
   const std::string dir = validation_dir + "/" + swelling_case + "/reference/";
   const BodySeries ref_plain = read_trajectories(dir + "ibms_trajectories_nonswelling.csv");
   const BodySeries ref_swell = read_trajectories(dir + "ibms_trajectories_swelling.csv");
+  const BodySeries papers_plain = read_trajectories(dir + "ibms_papers_coupling_trajectories_nonswelling.csv");
+  const BodySeries papers_swell = read_trajectories(dir + "ibms_papers_coupling_trajectories_swelling.csv");
 
   std::printf("ibms compare %s: non-swelling %s, swelling %s\n", swelling_case.c_str(), files[0].c_str(), files[1].c_str());
   Verdict::header();
@@ -258,18 +260,17 @@ int compare_swelling_particles(const std::vector<std::string>& files, const std:
                path_plain - path_swell, path_plain > path_swell);
   verdict.gate(fmt::format("mean path {:g}<=t<={:g}: swelling - non-swelling (check 4)", t_late, t_end), "> 0",
                late_swell - late_plain, late_swell > late_plain);
-  const auto info_pair = [](const std::string& what, double a, double b, double ra, double rb) {
-    Verdict::info("non-swelling: " + what, a, ra);
-    Verdict::info("swelling: " + what, b, rb);
+  // Each figure of the submitted pair beside ibms's under both couplings.
+  const auto info_pair = [&](const std::string& what, const auto& figure) {
+    Verdict::info("non-swelling: " + what, figure(plain), figure(ref_plain), figure(papers_plain));
+    Verdict::info("swelling: " + what, figure(swell), figure(ref_swell), figure(papers_swell));
   };
-  info_pair(fmt::format("mean centroid path length {:g}<=t<={:g}", t_stop, t_end), path_plain, path_swell,
-            mean_path_length(ref_plain, t_stop, t_end), mean_path_length(ref_swell, t_stop, t_end));
-  info_pair(fmt::format("mean centroid path length {:g}<=t<={:g}", t_late, t_end), late_plain, late_swell,
-            mean_path_length(ref_plain, t_late, t_end), mean_path_length(ref_swell, t_late, t_end));
-  info_pair("particles", plain.bodies(), swell.bodies(), ref_plain.bodies(), ref_swell.bodies());
-  info_pair(fmt::format("largest output interval in [{:g}, {:g}]", t_stop, t_end), max_interval(plain, t_stop, t_end),
-            max_interval(swell, t_stop, t_end), max_interval(ref_plain, t_stop, t_end),
-            max_interval(ref_swell, t_stop, t_end));
+  for (const double from : {t_stop, t_late})
+    info_pair(fmt::format("mean centroid path length {:g}<=t<={:g}", from, t_end),
+              [&](const BodySeries& s) { return mean_path_length(s, from, t_end); });
+  info_pair("particles", [](const BodySeries& s) { return static_cast<double>(s.bodies()); });
+  info_pair(fmt::format("largest output interval in [{:g}, {:g}]", t_stop, t_end),
+            [&](const BodySeries& s) { return max_interval(s, t_stop, t_end); });
   std::printf("  not checked from trajectories: active contacts in the swelling run for %g<=t<=%g (check 4),\n"
               "  containment and interpenetration (check 2); the case's check.cpp tests those on ibms's run\n",
               t_late, t_end);
@@ -283,6 +284,8 @@ int compare_deformable_objects(const std::vector<std::string>& files, const std:
   const std::string dir = validation_dir + "/" + deformable_case + "/reference/";
   const DeformationFigures ref10 = deformation_figures(dir + "ibms_deformation_k10.csv");
   const DeformationFigures ref100 = deformation_figures(dir + "ibms_deformation_k100.csv");
+  const DeformationFigures papers10 = deformation_figures(dir + "ibms_papers_coupling_deformation_k10.csv");
+  const DeformationFigures papers100 = deformation_figures(dir + "ibms_papers_coupling_deformation_k100.csv");
 
   std::printf("ibms compare %s: k = 10 %s, k = 100 %s\n", deformable_case.c_str(), files[0].c_str(), files[1].c_str());
   Verdict::header();
@@ -297,16 +300,18 @@ int compare_deformable_objects(const std::vector<std::string>& files, const std:
     verdict.gate(fmt::format("{}: max area / A0 (check 4)", label), fmt::format("<= {:g}", area_max), f->area_hi,
                  f->area_hi <= area_max);
   }
-  Verdict::info("mean deformation ratio k = 10 / k = 100", ratio, ref10.mean / ref100.mean);
-  for (const auto& [label, f, r] : {std::tuple{"k = 10", &k10, &ref10}, std::tuple{"k = 100", &k100, &ref100}}) {
-    Verdict::info(fmt::format("{}: mean deformation parameter", label), f->mean, r->mean);
-    Verdict::info(fmt::format("{}: max deformation parameter", label), f->max, r->max);
+  // Each figure beside ibms's under both couplings.
+  Verdict::info("mean deformation ratio k = 10 / k = 100", ratio, ref10.mean / ref100.mean, papers10.mean / papers100.mean);
+  for (const auto& [label, f, r, p] : {std::tuple{"k = 10", &k10, &ref10, &papers10},
+                                       std::tuple{"k = 100", &k100, &ref100, &papers100}}) {
+    Verdict::info(fmt::format("{}: mean deformation parameter", label), f->mean, r->mean, p->mean);
+    Verdict::info(fmt::format("{}: max deformation parameter", label), f->max, r->max, p->max);
     if (f->have_area) {
-      Verdict::info(fmt::format("{}: min area / A0", label), f->area_lo, r->area_lo);
-      Verdict::info(fmt::format("{}: max area / A0", label), f->area_hi, r->area_hi);
+      Verdict::info(fmt::format("{}: min area / A0", label), f->area_lo, r->area_lo, p->area_lo);
+      Verdict::info(fmt::format("{}: max area / A0", label), f->area_hi, r->area_hi, p->area_hi);
     }
-    Verdict::info(fmt::format("{}: bodies", label), f->bodies, r->bodies);
-    Verdict::info(fmt::format("{}: output times in [0, {:g}]", label, deformable_end), f->times, r->times);
+    Verdict::info(fmt::format("{}: bodies", label), f->bodies, r->bodies, p->bodies);
+    Verdict::info(fmt::format("{}: output times in [0, {:g}]", label, deformable_end), f->times, r->times, p->times);
   }
   if (!k10.have_area || !k100.have_area)
     std::printf("  area bounds (check 4) not checked for a file without area_ratio or area\n");

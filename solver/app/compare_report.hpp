@@ -22,6 +22,12 @@ struct Verdict {
   static void info(const std::string& metric, double submitted, double reference) {
     std::printf("  %-62s submitted %.6g, reference %.6g   info\n", metric.c_str(), submitted, reference);
   }
+  // Against ibms's runs of a case under each coupling (the scene's end-of-step constraint and the
+  // papers' coupling, reference/ibms_*.csv and reference/ibms_papers_coupling_*.csv).
+  static void info(const std::string& metric, double submitted, double end_of_step, double papers) {
+    std::printf("  %-62s submitted %.6g, ibms end-of-step %.6g, ibms papers' coupling %.6g   info\n", metric.c_str(),
+                submitted, end_of_step, papers);
+  }
   static void header() { std::printf("  %-62s %10s %12s   %s\n", "metric", "tolerance", "measured", "result"); }
 };
 

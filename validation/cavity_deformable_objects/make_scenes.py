@@ -32,8 +32,13 @@ kinematic_viscosity = 0.01
 top = {{ speed = 0.1 }}
 
 [ibm]
+# The end-of-step constraint on the face velocities (docs/method.md \u00a73.7; the wheels' rims respond
+# in the marker system). The papers' coupling is one key away, --set ibm.coupling='"uhlmann"';
+# reference/ holds ibms's runs under each (README.md).
 kernel = "roma3"
-forcing_passes = 1
+coupling = "no_slip"
+constrained_velocity = "faces"
+forcing_passes = 1          # the first step's direct forcing
 inner_fluid_inertia = "kempe"
 """
 

@@ -40,8 +40,13 @@ top = {{ speed = 1.0, stop_time = 10.0 }}
 bottom = {{ speed = -1.0, stop_time = 10.0 }}
 
 [ibm]
+# The end-of-step constraint on the face velocities (docs/method.md \u00a73.7; the wheels' rims respond
+# in the marker system). The papers' coupling is one key away, --set ibm.coupling='"uhlmann"';
+# reference/ holds ibms's runs under each (README.md).
 kernel = "roma3"
-forcing_passes = 1
+coupling = "no_slip"
+constrained_velocity = "faces"
+forcing_passes = 1          # the first step's direct forcing
 inner_fluid_inertia = "kempe"
 """
 
