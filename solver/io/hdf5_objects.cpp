@@ -80,22 +80,36 @@ Hdf5Handle intermediate_group_creation(const std::string& file) {
   return list;
 }
 
-void write_double_dataset(hid_t location, const std::string& name, const std::vector<hsize_t>& dims,
-                          const double* data, const std::string& units, const std::string& file) {
+namespace {
+
+void write_dataset(hid_t location, const std::string& name, const std::vector<hsize_t>& dims, hid_t file_type,
+                   hid_t memory_type, const void* data, const std::string& units, const std::string& file) {
   const std::string what = fmt::format("cannot write dataset '{}'", name);
   const Hdf5Handle space = checked_handle(
       dims.empty() ? H5Screate(H5S_SCALAR) : H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr),
       H5Sclose, file, what);
   const Hdf5Handle link_list = intermediate_group_creation(file);
   const Hdf5Handle dataset = checked_handle(
-      H5Dcreate2(location, name.c_str(), H5T_NATIVE_DOUBLE, space.get(), link_list.get(), H5P_DEFAULT, H5P_DEFAULT),
+      H5Dcreate2(location, name.c_str(), file_type, space.get(), link_list.get(), H5P_DEFAULT, H5P_DEFAULT),
       H5Dclose, file, what);
   hsize_t n_values = 1;
   for (const hsize_t extent : dims) n_values *= extent;
   if (n_values > 0) {
-    check_hdf5(H5Dwrite(dataset.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), file, what);
+    check_hdf5(H5Dwrite(dataset.get(), memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), file, what);
   }
   write_string_attribute(dataset.get(), "units", units, file);
+}
+
+}  // namespace
+
+void write_double_dataset(hid_t location, const std::string& name, const std::vector<hsize_t>& dims,
+                          const double* data, const std::string& units, const std::string& file) {
+  write_dataset(location, name, dims, H5T_NATIVE_DOUBLE, H5T_NATIVE_DOUBLE, data, units, file);
+}
+
+void write_integer_dataset(hid_t location, const std::string& name, const std::vector<hsize_t>& dims,
+                           const long long* data, const std::string& units, const std::string& file) {
+  write_dataset(location, name, dims, H5T_STD_I64LE, H5T_NATIVE_LLONG, data, units, file);
 }
 
 bool link_exists(hid_t location, const std::string& name) {

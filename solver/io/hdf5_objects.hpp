@@ -29,6 +29,10 @@ Hdf5Handle intermediate_group_creation(const std::string& file);
 void write_double_dataset(hid_t location, const std::string& name, const std::vector<hsize_t>& dims,
                           const double* data, const std::string& units, const std::string& file);
 
+// The same for 64-bit integers (index arrays such as an XDMF topology).
+void write_integer_dataset(hid_t location, const std::string& name, const std::vector<hsize_t>& dims,
+                           const long long* data, const std::string& units, const std::string& file);
+
 bool link_exists(hid_t location, const std::string& name);  // every path component checked
 
 }  // namespace ibms

@@ -225,42 +225,59 @@ void OutputFile::write_pending_series() {
   pending_rows_ = 0;
 }
 
-void OutputFile::write_snapshot(long step, double time, const std::vector<SnapshotArray>& arrays) {
+void OutputFile::write_snapshot(long step, double time, const std::vector<SnapshotArray>& arrays,
+                                const std::vector<std::size_t>& body_points) {
   if (step < 0) throw InputError(fmt::format("{}: snapshot step {} is negative", path_, step));
-  XdmfSnapshot record{fmt::format("/snapshots/{:06d}", step), time, {}, {}};
+  XdmfSnapshot record;
+  record.group = fmt::format("/snapshots/{:06d}", step);
+  record.time = time;
   const std::string what = fmt::format("cannot write snapshot {}", record.group);
   if (link_exists(file_.get(), record.group)) throw InputError(fmt::format("{}: {}: already written", path_, what));
+  std::size_t n_points = 0;
+  for (const std::size_t n : body_points) n_points += n;
+  const auto has_body_array = [&](const char* name) {
+    return std::any_of(arrays.begin(), arrays.end(), [&](const SnapshotArray& a) {
+      return a.name == std::string("bodies/") + name && a.dims == std::vector<std::size_t>{n_points};
+    });
+  };
+  if (!body_points.empty() && !(has_body_array("x") && has_body_array("y")))
+    throw InputError(fmt::format("{}: {}: bodies/x and bodies/y of {} points are needed", path_, what, n_points));
   const Hdf5Handle link_list = intermediate_group_creation(path_);
   const Hdf5Handle group = checked_handle(
       H5Gcreate2(file_.get(), record.group.c_str(), link_list.get(), H5P_DEFAULT, H5P_DEFAULT), H5Gclose, path_, what);
   write_double_attribute(group.get(), "time", time, path_);
   write_integer_attribute(group.get(), "step", step, path_);
-  std::map<std::string, std::map<std::string, std::size_t>> body_arrays;  // body group -> array -> size
   for (const SnapshotArray& array : arrays) {
     if (array.dims.empty() || array.data == nullptr || array.name.empty()) {
       throw InputError(fmt::format("{}: {}: array '{}' needs a name, dims and data", path_, what, array.name));
     }
     const std::vector<hsize_t> dims(array.dims.begin(), array.dims.end());
     write_double_dataset(group.get(), array.name, dims, array.data, array.units, path_);
-    const auto slash = array.name.rfind('/');
     const bool is_grid_field = array.dims.size() == 2 && array.dims[0] == static_cast<std::size_t>(grid_.ny) &&
                                array.dims[1] == static_cast<std::size_t>(grid_.nx);
-    if (is_grid_field && slash == std::string::npos) record.cell_arrays.push_back(array.name);
-    if (array.dims.size() == 1 && slash != std::string::npos && array.name.rfind("body_", 0) == 0) {
-      body_arrays[array.name.substr(0, slash)][array.name.substr(slash + 1)] = array.dims[0];
-    }
+    if (is_grid_field && array.name.find('/') == std::string::npos) record.cell_arrays.push_back(array.name);
+    const bool body_node_array = !body_points.empty() && array.name.rfind("bodies/", 0) == 0 &&
+                                 array.dims == std::vector<std::size_t>{n_points};
+    if (body_node_array && array.name != "bodies/x" && array.name != "bodies/y")
+      record.body_node_arrays.push_back(array.name.substr(7));
   }
-  // A body appears in the sidecar when it has x and y of one length; its other arrays of that
-  // length become node attributes.
-  for (const auto& [body_group, members] : body_arrays) {
-    const auto x = members.find("x");
-    const auto y = members.find("y");
-    if (x == members.end() || y == members.end() || x->second != y->second) continue;
-    XdmfBody body{body_group, x->second, {}};
-    for (const auto& [name, size] : members) {
-      if (name != "x" && name != "y" && size == body.n_points) body.node_arrays.push_back(name);
+  if (!body_points.empty()) {
+    std::vector<long long> first{0}, topology;
+    std::vector<double> index;
+    topology.reserve(2 * body_points.size() + n_points);
+    for (std::size_t b = 0; b < body_points.size(); ++b) {
+      topology.push_back(3);  // XDMF polygon
+      topology.push_back(static_cast<long long>(body_points[b]));
+      for (std::size_t k = 0; k < body_points[b]; ++k) topology.push_back(first.back() + static_cast<long long>(k));
+      first.push_back(first.back() + static_cast<long long>(body_points[b]));
+      index.push_back(static_cast<double>(b));
     }
-    record.bodies.push_back(std::move(body));
+    write_integer_dataset(group.get(), "bodies/first_point", {first.size()}, first.data(), "-", path_);
+    write_integer_dataset(group.get(), "bodies/topology", {topology.size()}, topology.data(), "-", path_);
+    write_double_dataset(group.get(), "bodies/body", {index.size()}, index.data(), "-", path_);
+    record.n_bodies = body_points.size();
+    record.n_body_points = n_points;
+    record.topology_size = topology.size();
   }
   flush();
   snapshots_.push_back(std::move(record));

@@ -6,7 +6,8 @@
 //   /series/per_body/*  extendable 2-D datasets (rows, bodies), one per quantity of the bodies, the
 //                same rows (attribute columns = "body index")
 //   /snapshots/NNNNNN/*  (step, 6+ digits) attributes time, step; grid fields (ny, nx) x fastest,
-//                body arrays body_NNN/<name> (n)
+//                the bodies' rim arrays bodies/<name> (all rim points, body after body), with
+//                bodies/first_point (n_bodies + 1), bodies/body and the polygons bodies/topology
 //   /checkpoint  the latest restart state (checkpoint.hpp)
 // Every dataset has a `units` attribute. The file is flushed after each write, so a killed run
 // leaves a readable file; /series rows are held back and written in blocks (series_block_rows rows,
@@ -66,8 +67,13 @@ class OutputFile {
   static constexpr double series_block_seconds = 1.0;
 
   // /snapshots/NNNNNN with the arrays; then rewrites the XDMF sidecar. A step written twice,
-  // an empty dims or a null data pointer is an error.
-  void write_snapshot(long step, double time, const std::vector<SnapshotArray>& arrays);
+  // an empty dims or a null data pointer is an error. body_points: the rim point count of each
+  // body, when the arrays hold bodies/x and bodies/y of their sum (and other bodies/<name> of the
+  // same length, node attributes in the sidecar): the snapshot gets bodies/first_point (each
+  // body's first point, and the total), bodies/body (0, 1, ...) and bodies/topology, one polygon
+  // per body in XDMF's Mixed form (3, n, the n point indices).
+  void write_snapshot(long step, double time, const std::vector<SnapshotArray>& arrays,
+                      const std::vector<std::size_t>& body_points = {});
 
   // Replaces /checkpoint: 1-D double datasets `arrays` (units "state"), double attributes
   // `scalars` (integers such as the step are stored as doubles, exact up to 2^53), attribute

@@ -52,22 +52,24 @@ void append_fluid_grid(std::string& out, const std::string& h5, const Grid& grid
   out += "        </Grid>\n";
 }
 
-void append_body_grid(std::string& out, const std::string& h5, const XdmfSnapshot& snapshot, const XdmfBody& body) {
-  const std::string group = snapshot.group + "/" + body.group;
-  const std::string n = std::to_string(body.n_points);
-  out += fmt::format("        <Grid Name=\"{}\" GridType=\"Uniform\">\n", xml_escaped(body.group));
+void append_bodies_grid(std::string& out, const std::string& h5, const XdmfSnapshot& snapshot) {
+  const std::string group = snapshot.group + "/bodies";
+  const std::string n = std::to_string(snapshot.n_body_points);
+  out += "        <Grid Name=\"bodies\" GridType=\"Uniform\">\n";
   out += fmt::format("          <Time Value=\"{}\"/>\n", snapshot.time);
-  // One polyline through the points in order, back to the first: the closed rim.
-  out += fmt::format("          <Topology TopologyType=\"Polyline\" NodesPerElement=\"{}\" NumberOfElements=\"1\">\n",
-                     body.n_points + 1);
-  out += fmt::format("            <DataItem Dimensions=\"1 {}\" NumberType=\"Int\" Format=\"XML\">", body.n_points + 1);
-  for (std::size_t k = 0; k < body.n_points; ++k) out += fmt::format("{} ", k);
-  out += "0</DataItem>\n          </Topology>\n";
+  // One polygon per body through its rim points in order: the closed rim.
+  out += fmt::format("          <Topology TopologyType=\"Mixed\" NumberOfElements=\"{}\">\n", snapshot.n_bodies);
+  out += fmt::format("            <DataItem Dimensions=\"{}\" NumberType=\"Int\" Precision=\"8\" Format=\"HDF\">{}:{}/topology</DataItem>\n",
+                     snapshot.topology_size, xml_escaped(h5), xml_escaped(group));
+  out += "          </Topology>\n";
   out += "          <Geometry GeometryType=\"X_Y\">\n";
   out += hdf_item(h5, group + "/x", n, "            ");
   out += hdf_item(h5, group + "/y", n, "            ");
   out += "          </Geometry>\n";
-  for (const std::string& name : body.node_arrays) {
+  out += "          <Attribute Name=\"body\" AttributeType=\"Scalar\" Center=\"Cell\">\n";
+  out += hdf_item(h5, group + "/body", std::to_string(snapshot.n_bodies), "            ");
+  out += "          </Attribute>\n";
+  for (const std::string& name : snapshot.body_node_arrays) {
     out += fmt::format("          <Attribute Name=\"{}\" AttributeType=\"Scalar\" Center=\"Node\">\n", xml_escaped(name));
     out += hdf_item(h5, group + "/" + name, n, "            ");
     out += "          </Attribute>\n";
@@ -89,7 +91,7 @@ std::string xdmf_text(const std::string& h5_basename, const Grid& grid, const st
                        xml_escaped(snapshot.group));
     out += fmt::format("        <Time Value=\"{}\"/>\n", snapshot.time);
     append_fluid_grid(out, h5_basename, grid, snapshot);
-    for (const XdmfBody& body : snapshot.bodies) append_body_grid(out, h5_basename, snapshot, body);
+    if (snapshot.n_bodies > 0) append_bodies_grid(out, h5_basename, snapshot);
     out += "      </Grid>\n";
   }
   out += "    </Grid>\n  </Domain>\n</Xdmf>\n";

@@ -1,7 +1,8 @@
 // XDMF 3 sidecar so ParaView opens the HDF5 snapshots directly (docs/design.md §5), written by hand
 // (libxdmf drags in the MPI build of HDF5). One temporal collection; per snapshot a spatial
 // collection holding a 2DRectMesh on the cell corners (VXVY from /grid/x_faces, /grid/y_faces)
-// with cell-centred attributes, and each body's points as a closed polyline (X_Y geometry).
+// with cell-centred attributes, and the rims of all bodies as one grid of polygons (X_Y geometry,
+// a Mixed topology of one polygon per body).
 // DataItems name the .h5 file by its basename so the pair can be moved together.
 #pragma once
 #include <cstddef>
@@ -12,17 +13,16 @@
 
 namespace ibms {
 
-struct XdmfBody {
-  std::string group;                     // "body_000"
-  std::size_t n_points = 0;
-  std::vector<std::string> node_arrays;  // other arrays of the body (n), e.g. "vx"
-};
-
 struct XdmfSnapshot {
   std::string group;                     // "/snapshots/000010"
   double time = 0.0;
   std::vector<std::string> cell_arrays;  // arrays with dims (ny, nx), e.g. "u"
-  std::vector<XdmfBody> bodies;          // body groups with x and y arrays
+  // The bodies: <group>/bodies/x, y (n_body_points), the Mixed topology <group>/bodies/topology
+  // (topology_size), the cell attribute <group>/bodies/body (n_bodies) and node arrays of n_body_points.
+  std::size_t n_bodies = 0;
+  std::size_t n_body_points = 0;
+  std::size_t topology_size = 0;
+  std::vector<std::string> body_node_arrays;  // e.g. "u"
 };
 
 // The XML text of the sidecar.

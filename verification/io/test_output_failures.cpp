@@ -129,8 +129,13 @@ BOOST_AUTO_TEST_CASE(failed_xdmf_write_is_an_output_error_and_leaves_no_temporar
   std::vector<ibms::XdmfSnapshot> snapshots;
   ibms::write_xdmf_sidecar(xmf.string(), "out.h5", grid, snapshots);  // a good sidecar first
   const std::string before = read(xmf);
-  for (long step = 0; step < 50; ++step)
-    snapshots.push_back({"/snapshots/" + std::to_string(100000 + step), 0.1 * step, {"u", "v", "p"}, {}});
+  for (long step = 0; step < 50; ++step) {
+    ibms::XdmfSnapshot snapshot;
+    snapshot.group = "/snapshots/" + std::to_string(100000 + step);
+    snapshot.time = 0.1 * step;
+    snapshot.cell_arrays = {"u", "v", "p"};
+    snapshots.push_back(snapshot);
+  }
   std::string message;
   {
     const FileSizeLimit limit(before.size() + 16);  // the longer sidecar cannot be written

@@ -50,10 +50,10 @@ struct TinyRun {
     for (std::size_t k = 0; k < 5; ++k) x[k] = std::cos(k), y[k] = std::sin(k);
     const std::vector<ibms::SnapshotArray> arrays = {
         {"u", "length/time", {3, 4}, u.data()},    {"p", "mass/(length time^2)", {3, 4}, p.data()},
-        {"body_000/x", "length", {5}, x.data()},   {"body_000/y", "length", {5}, y.data()},
-        {"body_000/vx", "length/time", {5}, vx.data()}};
-    output.write_snapshot(10, 0.5, arrays);
-    output.write_snapshot(20, 1.25, arrays);
+        {"bodies/x", "length", {5}, x.data()},   {"bodies/y", "length", {5}, y.data()},
+        {"bodies/vx", "length/time", {5}, vx.data()}};
+    output.write_snapshot(10, 0.5, arrays, {2, 3});  // two bodies of 2 and 3 rim points
+    output.write_snapshot(20, 1.25, arrays, {2, 3});
     output.write_checkpoint({{"old", {9.0}}}, {{"time", 1.0}}, 1);
     output.write_checkpoint({{"velocity", {1.0, 2.0, 3.0}}, {"empty", {}}}, {{"time", 1.25}, {"step", 20.0}}, 2);
   }
@@ -179,12 +179,31 @@ BOOST_AUTO_TEST_CASE(snapshots_hold_arrays_with_dims_units_time_and_step) {
   BOOST_TEST(dims_of(file.get(), "/snapshots/000010/u") == (std::vector<hsize_t>{3, 4}));
   BOOST_TEST(values_of(file.get(), "/snapshots/000020/u")[5] == 5.0);  // row-major, x fastest
   BOOST_TEST(units_of(file.get(), "/snapshots/000010/u") == "length/time");
-  BOOST_TEST(dims_of(file.get(), "/snapshots/000020/body_000/x") == std::vector<hsize_t>{5});
-  BOOST_TEST(units_of(file.get(), "/snapshots/000020/body_000/vx") == "length/time");
+  BOOST_TEST(dims_of(file.get(), "/snapshots/000020/bodies/x") == std::vector<hsize_t>{5});
+  BOOST_TEST(units_of(file.get(), "/snapshots/000020/bodies/vx") == "length/time");
+  BOOST_TEST(values_of(file.get(), "/snapshots/000020/bodies/first_point") == (std::vector<double>{0, 2, 5}));
+  BOOST_TEST(values_of(file.get(), "/snapshots/000020/bodies/body") == (std::vector<double>{0, 1}));
+  // XDMF Mixed: polygon (3), its point count, its points.
+  BOOST_TEST(values_of(file.get(), "/snapshots/000020/bodies/topology") ==
+             (std::vector<double>{3, 2, 0, 1, 3, 3, 2, 3, 4}));
   const ibms::Hdf5Handle snapshot =
       ibms::checked_handle(H5Gopen2(file.get(), "/snapshots/000020", H5P_DEFAULT), H5Gclose, "", "snapshot");
   BOOST_TEST(ibms::read_double_attribute(snapshot.get(), "time", "") == 1.25);
   BOOST_TEST(ibms::read_double_attribute(snapshot.get(), "step", "") == 20.0);
+}
+
+BOOST_AUTO_TEST_CASE(a_snapshot_with_bodies_needs_their_rim_coordinates) {
+  std::string pattern = (fs::temp_directory_path() / "ibms_io_test_XXXXXX").string();
+  const fs::path directory = mkdtemp(pattern.data());
+  {
+    ibms::OutputFile output((directory / "out.h5").string(), "", tiny_grid, "0", "0");
+    const std::vector<double> x(4, 0.5);
+    BOOST_CHECK_EXCEPTION(output.write_snapshot(1, 0.1, {{"bodies/x", "length", {4}, x.data()}}, {4}),
+                          std::exception, [](const std::exception& e) {
+                            return std::string(e.what()).find("bodies/x and bodies/y of 4 points") != std::string::npos;
+                          });
+  }
+  fs::remove_all(directory);
 }
 
 BOOST_AUTO_TEST_CASE(read_checkpoint_returns_the_last_checkpoint_written) {
@@ -211,9 +230,12 @@ BOOST_AUTO_TEST_CASE(xdmf_sidecar_is_balanced_and_lists_both_snapshots) {
   BOOST_TEST(xml.find("Dimensions=\"3 4\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">out.h5:/snapshots/000010/u<") != std::string::npos);
   BOOST_TEST(xml.find(">out.h5:/snapshots/000020/p<") != std::string::npos);
   BOOST_TEST(xml.find(">out.h5:/grid/x_faces<") != std::string::npos);
-  BOOST_TEST(xml.find(">out.h5:/snapshots/000020/body_000/y<") != std::string::npos);
-  BOOST_TEST(xml.find("TopologyType=\"Polyline\" NodesPerElement=\"6\"") != std::string::npos);
-  BOOST_TEST(xml.find(">out.h5:/snapshots/000020/body_000/vx<") != std::string::npos);
+  BOOST_TEST(xml.find(">out.h5:/snapshots/000020/bodies/y<") != std::string::npos);
+  BOOST_TEST(xml.find("TopologyType=\"Mixed\" NumberOfElements=\"2\"") != std::string::npos);
+  BOOST_TEST(xml.find("Dimensions=\"9\" NumberType=\"Int\" Precision=\"8\" Format=\"HDF\">out.h5:/snapshots/000020/bodies/topology<") !=
+             std::string::npos);
+  BOOST_TEST(xml.find(">out.h5:/snapshots/000020/bodies/vx<") != std::string::npos);
+  BOOST_TEST(xml.find(">out.h5:/snapshots/000020/bodies/body<") != std::string::npos);
 }
 
 BOOST_AUTO_TEST_CASE(csv_has_comments_then_header_with_units_then_exact_rows) {

@@ -105,7 +105,6 @@ void write_series(OutputFile& out, const Simulation& sim, const ControlVolumeMon
   out.append_series(row, per_body);
 }
 
-std::string body_name(std::size_t b) { return fmt::format("body_{:03d}", b); }
 
 // The quantities of every body in a series row, in /series/per_body/<name> and the body table.
 struct BodyQuantity {
@@ -272,20 +271,23 @@ void write_snapshot(OutputFile& out, Simulation& sim) {
                                     {"v", "length/time", dims, v.data()},
                                     {"p", "mass/(length time^2)", dims, p.data()},
                                     {"vorticity", "1/time", dims, w.data()}};
-  // Surface (rim) points of every body: body_NNN/x, y, u, v.
-  std::vector<std::vector<double>> body_data;
-  body_data.reserve(4 * sim.bodies().size());
-  for (std::size_t b = 0; b < sim.bodies().size(); ++b) {
-    const MassSpringBody& body = sim.bodies()[b];
-    const std::size_t n_rim = static_cast<std::size_t>(body.n_surface);
-    for (int q = 0; q < 4; ++q) {
-      std::vector<double>& values = body_data.emplace_back(n_rim);
-      for (std::size_t l = 0; l < n_rim; ++l) values[l] = q < 2 ? body.position[l][q] : body.velocity[l][q - 2];
-      static const char* names[4] = {"x", "y", "u", "v"};
-      arrays.push_back({body_name(b) + "/" + names[q], q < 2 ? "length" : "length/time", {n_rim}, values.data()});
-    }
+  // Surface (rim) points of all bodies, body after body: bodies/x, y, u, v.
+  std::vector<std::size_t> body_points;
+  std::size_t n_points = 0;
+  for (const MassSpringBody& body : sim.bodies()) {
+    body_points.push_back(static_cast<std::size_t>(body.n_surface));
+    n_points += static_cast<std::size_t>(body.n_surface);
   }
-  out.write_snapshot(f.step, f.time, arrays);
+  std::vector<std::vector<double>> rims(4);
+  if (n_points > 0) {
+    for (std::vector<double>& values : rims) values.reserve(n_points);
+    for (const MassSpringBody& body : sim.bodies())
+      for (int l = 0; l < body.n_surface; ++l)
+        for (int q = 0; q < 4; ++q) rims[q].push_back(q < 2 ? body.position[l][q] : body.velocity[l][q - 2]);
+    static const char* names[4] = {"bodies/x", "bodies/y", "bodies/u", "bodies/v"};
+    for (int q = 0; q < 4; ++q) arrays.push_back({names[q], q < 2 ? "length" : "length/time", {n_points}, rims[q].data()});
+  }
+  out.write_snapshot(f.step, f.time, arrays, n_points > 0 ? body_points : std::vector<std::size_t>{});
 }
 
 void write_profiles(const std::string& h5_path, const Simulation& sim) {
