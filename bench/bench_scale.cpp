@@ -3,7 +3,7 @@
 // and direction, D/h = 16, 50 rim points each), the papers' contacts (k_Dn = 1e7, e_D = 0.5, CDS
 // on the rim points, walls on), series every 10 steps, the final snapshot and checkpoint, one
 // thread, a fixed step. Kinds: rigid disks, mass-spring wheels, swelling wheels; optionally a
-// resting bed (the bodies start in touch, rows of spacing D from the floor up). For each run it
+// resting bed (the bodies start in touch, their contact spheres touching, rows from the floor up). For each run it
 // prints each stage's time per step from the solver's own timers and its ratio to the fluid stages
 // (predictor + projection), and for each kind the least-squares exponent p of cost per step ~ N^p
 // over the numbers of bodies run (N = n^2).
@@ -52,9 +52,13 @@ kernel = "roma3"
 )", 0.002 * steps, length, length, cells, cells);
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
-      // Spread over the box, or a bed: rows of spacing D (in touch) from the floor up, centred.
-      const double x = bed ? 0.5 * length + (i - 0.5 * (n - 1)) * diameter : (i + 0.5) * spacing;
-      const double y = bed ? 0.5 * diameter + j * diameter : (j + 0.5) * spacing;
+      // Spread over the box, or a bed: rows from the floor up, centred, the contact spheres (radius
+      // r = h/2) of neighbours and of the bottom row and the floor just touching, so that gravity
+      // loads the contacts from zero (rims exactly D apart would put rim points of neighbours on
+      // one another).
+      const double r = 0.5 * diameter / cells_per_diameter, pitch = diameter + 2.0 * r;
+      const double x = bed ? 0.5 * length + (i - 0.5 * (n - 1)) * pitch : (i + 0.5) * spacing;
+      const double y = bed ? 0.5 * diameter + r + j * pitch : (j + 0.5) * spacing;
       text += fmt::format("[[bodies]]\ncentre = [{}, {}]\ndiameter = {}\nn_surface_points = {}\ndensity = 1.5\n", x, y,
                           diameter, rim_points);
       if (kind == "rigid") text += "kind = \"rigid\"\n";
