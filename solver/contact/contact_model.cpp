@@ -223,14 +223,14 @@ void find_contact_groups(const ContactModel& model, const std::vector<MassSpring
           if (b != a) test_pair(std::min(a, b), std::max(a, b));
     const double cell = std::max(2.0 * largest_radius + largest_reach, std::numeric_limits<double>::min());
     std::array<long, 2> cells{1, 1};
-    for (int d = 0; d < 2; ++d)
-      cells[d] = std::clamp(static_cast<long>(std::floor(box.length[d] / cell)), 1L, 1L << 20);
+    for (int d = 0; d < 2; ++d)  // clamped as a double: with prescribed bodies only, cell is tiny
+      cells[d] = static_cast<long>(std::clamp(std::floor(box.length[d] / cell), 1.0, 1048576.0));
     // Cells tile the box (side length / cells >= cell); a periodic coordinate is wrapped first.
     const auto cell_index = [&](int b, int d) {
       double x = circle[b][d] - box.origin[d];
       if (box.periodic[d]) x -= box.length[d] * std::floor(x / box.length[d]);
-      const long k = static_cast<long>(std::floor(x * cells[d] / box.length[d]));
-      return std::clamp(k, 0L, cells[d] - 1);
+      const double k = std::floor(x * cells[d] / box.length[d]);  // clamped as a double (NaN: cell 0)
+      return k >= 0.0 ? static_cast<long>(std::min(k, static_cast<double>(cells[d] - 1))) : 0L;
     };
     std::vector<std::pair<long, int>>& hashed = groups.hashed;
     hashed.clear();

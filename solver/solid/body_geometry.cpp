@@ -116,15 +116,15 @@ BodySeparation body_separation(const std::vector<MassSpringBody>& bodies, std::a
   // the result does not depend on the hashing order.
   const double cell = std::max(2.0 * extent, std::numeric_limits<double>::min());
   std::array<long, 2> cells{1, 1};
-  for (int d = 0; d < 2; ++d)
-    cells[d] = std::clamp(static_cast<long>(std::floor((upper[d] - lower[d]) / cell)), 1L, 1L << 20);
+  for (int d = 0; d < 2; ++d)  // clamped as a double: bodies of no extent make cell tiny
+    cells[d] = static_cast<long>(std::clamp(std::floor((upper[d] - lower[d]) / cell), 1.0, 1048576.0));
   // Cells tile the box (side length / cells >= cell); a periodic coordinate is wrapped first.
   const auto cell_of = [&](std::size_t b, int d) {
     const double length = upper[d] - lower[d];
     double x = 0.5 * (box[b].low[d] + box[b].high[d]) - lower[d];
     if (periodic[d]) x -= length * std::floor(x / length);
-    const long k = static_cast<long>(std::floor(x * cells[d] / length));
-    return std::clamp(k, 0L, cells[d] - 1);
+    const double k = std::floor(x * cells[d] / length);  // clamped as a double (NaN: cell 0)
+    return k >= 0.0 ? static_cast<long>(std::min(k, static_cast<double>(cells[d] - 1))) : 0L;
   };
   std::vector<std::pair<long, std::size_t>> hashed(n);
   for (std::size_t b = 0; b < n; ++b) hashed[b] = {cell_of(b, 0) + cells[0] * cell_of(b, 1), b};

@@ -180,3 +180,13 @@ BOOST_AUTO_TEST_CASE(the_groups_of_many_bodies_are_those_of_every_pair) {
     }
   }
 }
+
+BOOST_AUTO_TEST_CASE(prescribed_bodies_alone_form_their_own_groups) {
+  // No free body: the hash of free bodies is empty and its cells are as small as they get.
+  const WallBox box{{0.0, 0.0}, {1.0, 1.0}, {false, false}};
+  ContactGroups groups;
+  find_contact_groups(model(), {disk({0.3, 0.5}, 0.2, BodyKind::prescribed), disk({0.52, 0.5}, 0.2, BodyKind::prescribed)},
+                      box, 0.01, {0.0, 0.0}, groups);
+  BOOST_TEST(groups.n_groups == 2);
+  BOOST_TEST(!groups.any_contact());
+}
