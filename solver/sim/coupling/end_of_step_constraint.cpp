@@ -147,7 +147,8 @@ std::string EndOfStepConstraint::forcing_stage() const {
 
 std::string EndOfStepConstraint::correction_stage() const {
   return "no-slip corrections (force corrections projected until the slip at t^{n+1} <= " +
-         fmt::format("{:g}", slip_tolerance_) + " U_ref" +
+         fmt::format("{:g}", slip_tolerance_) +
+         " U_ref; GMRES preconditioned by J S per body and each rim's leak" +
          (has_mass_spring_ ? "; mass-spring rims: target at t^{n+1}, their linearised response in the marker system)"
                            : ")");
 }
