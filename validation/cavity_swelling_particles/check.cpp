@@ -94,13 +94,16 @@ int main(int argc, char** argv) {
     const double t_stop = criteria::particles_t_stop, t_late = criteria::particles_t_late,
                  t_end = criteria::particles_t_end;
     const double min_gap = std::atof(argv[1]);
-    const std::string name = argv[2];  // the case folder's name; the collision-time set prefixes its metrics
+    const std::string name = argv[2];  // the case folder's name
     const SeriesTable plain = read_series_csv(std::string(argv[3]) + "_bodies.csv");
     const SeriesTable swell = read_series_csv(std::string(argv[4]) + "_bodies.csv");
     const std::string out_dir = argv[5];
     write_trajectories(plain, t_stop, t_end, out_dir + "/trajectories_nonswelling.csv", "non-swelling");
     write_trajectories(swell, t_stop, t_end, out_dir + "/trajectories_swelling.csv", "swelling");
-    const std::string prefix = out_dir.find("collision_time") != std::string::npos ? "collision_time: " : "";
+    // The collision-time set and the papers'-coupling set record their metrics under a prefix.
+    const std::string prefix = out_dir.find("collision_time") != std::string::npos    ? "collision_time: "
+                               : out_dir.find("papers_coupling") != std::string::npos ? "papers' coupling: "
+                                                                                     : "";
     bool all = true;
     for (const auto& [label, s] : {std::pair{"non-swelling", &plain}, std::pair{"swelling", &swell}}) {
       const double reached = s->at("time").back();
