@@ -62,6 +62,13 @@ bool MarkerPreconditioner::factorise(const Grid& grid, KernelKind kernel, bool o
     const BodyCoupling& c = coupling[b];
     const Eigen::Index n = static_cast<Eigen::Index>(c.marker.size());
     Block& block = blocks_[b];
+    // A body whose rim responds in the marker system (mass-spring) keeps the identity: its rim's
+    // inertia and springs, not the kernel, set that part of the system.
+    block.identity = !c.body_velocity_change.empty();
+    if (block.identity) {
+      block.leak = 0.0;
+      continue;
+    }
     if (block.factorised_at == c.marker) continue;
     moved = true;
     block.factorised_at.assign(c.marker.begin(), c.marker.end());
@@ -109,7 +116,7 @@ void MarkerPreconditioner::normal_pattern(const std::vector<BodyCoupling>& coupl
   std::size_t first = 0;
   for (std::size_t b = 0; b < coupling.size(); ++b) {
     for (std::size_t k = 0; k < coupling[b].marker.size(); ++k)
-      for (int d = 0; d < 2; ++d) z[first + 2 * k + d] = blocks_[b].normal[k][d];
+      for (int d = 0; d < 2; ++d) z[first + 2 * k + d] = blocks_[b].identity ? 0.0 : blocks_[b].normal[k][d];
     first += 2 * coupling[b].marker.size();
   }
 }
@@ -117,7 +124,7 @@ void MarkerPreconditioner::normal_pattern(const std::vector<BodyCoupling>& coupl
 void MarkerPreconditioner::set_leaks(const std::vector<BodyCoupling>& coupling, const double* y) {
   std::size_t first = 0;
   for (std::size_t b = 0; b < coupling.size(); ++b) {
-    const double leak = mean_normal(blocks_[b].normal, y + first);
+    const double leak = blocks_[b].identity ? 0.0 : mean_normal(blocks_[b].normal, y + first);
     // A body too small to hold a pressure (fewer than three markers) or a leak of the wrong sign
     // (the pattern is not a pressure there) gets no leak part.
     blocks_[b].leak = coupling[b].marker.size() >= 3 && leak > 0.0 ? leak : 0.0;
@@ -131,6 +138,11 @@ void MarkerPreconditioner::apply(const std::vector<BodyCoupling>& coupling, cons
     const BodyCoupling& c = coupling[b];
     const Eigen::Index n = static_cast<Eigen::Index>(c.marker.size());
     Block& block = blocks_[b];
+    if (block.identity) {
+      std::copy(v + first, v + first + 2 * n, x + first);
+      first += 2 * static_cast<std::size_t>(n);
+      continue;
+    }
     for (int d = 0; d < 2; ++d) {
       block.rhs.resize(n);
       for (Eigen::Index k = 0; k < n; ++k) block.rhs[k] = v[first + 2 * k + d];
