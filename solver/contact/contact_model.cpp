@@ -6,6 +6,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "core/cell_hash.hpp"
 #include "core/constants.hpp"
 #include "solid/spring_dashpot.hpp"
 
@@ -222,41 +223,10 @@ void find_contact_groups(const ContactModel& model, const std::vector<MassSpring
         for (int b = 0; b < n_bodies; ++b)
           if (b != a) test_pair(std::min(a, b), std::max(a, b));
     const double cell = std::max(2.0 * largest_radius + largest_reach, std::numeric_limits<double>::min());
-    std::array<long, 2> cells{1, 1};
-    for (int d = 0; d < 2; ++d)  // clamped as a double: with prescribed bodies only, cell is tiny
-      cells[d] = static_cast<long>(std::clamp(std::floor(box.length[d] / cell), 1.0, 1048576.0));
-    // Cells tile the box (side length / cells >= cell); a periodic coordinate is wrapped first.
-    const auto cell_index = [&](int b, int d) {
-      double x = circle[b][d] - box.origin[d];
-      if (box.periodic[d]) x -= box.length[d] * std::floor(x / box.length[d]);
-      const double k = std::floor(x * cells[d] / box.length[d]);  // clamped as a double (NaN: cell 0)
-      return k >= 0.0 ? static_cast<long>(std::min(k, static_cast<double>(cells[d] - 1))) : 0L;
-    };
-    std::vector<std::pair<long, int>>& hashed = groups.hashed;
-    hashed.clear();
-    for (int b = 0; b < n_bodies; ++b)
-      if (bodies[b].kind != BodyKind::prescribed) hashed.emplace_back(cell_index(b, 0) + cells[0] * cell_index(b, 1), b);
-    std::sort(hashed.begin(), hashed.end());
-    for (const auto& [key_a, a] : hashed) {
-      const long ia = key_a % cells[0], ja = key_a / cells[0];
-      // Neighbouring cells, each once (a periodic direction of fewer than three cells wraps onto itself).
-      std::array<long, 9> keys{};
-      int n_keys = 0;
-      for (long dj = -1; dj <= 1; ++dj)
-        for (long di = -1; di <= 1; ++di) {
-          long i = ia + di, j = ja + dj;
-          if (box.periodic[0]) i = ((i % cells[0]) + cells[0]) % cells[0];
-          if (box.periodic[1]) j = ((j % cells[1]) + cells[1]) % cells[1];
-          if (i < 0 || i >= cells[0] || j < 0 || j >= cells[1]) continue;
-          const long key = i + cells[0] * j;
-          if (std::find(keys.begin(), keys.begin() + n_keys, key) == keys.begin() + n_keys) keys[n_keys++] = key;
-        }
-      for (int k = 0; k < n_keys; ++k) {
-        auto it = std::lower_bound(hashed.begin(), hashed.end(), std::pair<long, int>{keys[k], -1});
-        for (; it != hashed.end() && it->first == keys[k]; ++it)
-          if (it->second > a) test_pair(a, it->second);
-      }
-    }
+    for_each_near_pair(
+        n_bodies, [&](int b) { return std::array<double, 2>{circle[b][0], circle[b][1]}; },
+        [&](int b) { return bodies[b].kind != BodyKind::prescribed; }, box.origin, box.length, box.periodic, cell,
+        groups.hashed, test_pair);
   }
   // Every parent has a lower index than its child (unions point to the lower root, path halving
   // to an ancestor), so one ascending pass makes each entry its root, and a second relabels the

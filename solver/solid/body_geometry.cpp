@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 
+#include "core/cell_hash.hpp"
+
 namespace ibms {
 
 namespace {
@@ -115,37 +117,16 @@ BodySeparation body_separation(const std::vector<MassSpringBody>& bodies, std::a
   // than `extent` apart sit in the same or neighbouring cells; the pairs found are sorted, so that
   // the result does not depend on the hashing order.
   const double cell = std::max(2.0 * extent, std::numeric_limits<double>::min());
-  std::array<long, 2> cells{1, 1};
-  for (int d = 0; d < 2; ++d)  // clamped as a double: bodies of no extent make cell tiny
-    cells[d] = static_cast<long>(std::clamp(std::floor((upper[d] - lower[d]) / cell), 1.0, 1048576.0));
-  // Cells tile the box (side length / cells >= cell); a periodic coordinate is wrapped first.
-  const auto cell_of = [&](std::size_t b, int d) {
-    const double length = upper[d] - lower[d];
-    double x = 0.5 * (box[b].low[d] + box[b].high[d]) - lower[d];
-    if (periodic[d]) x -= length * std::floor(x / length);
-    const double k = std::floor(x * cells[d] / length);  // clamped as a double (NaN: cell 0)
-    return k >= 0.0 ? static_cast<long>(std::min(k, static_cast<double>(cells[d] - 1))) : 0L;
-  };
-  std::vector<std::pair<long, std::size_t>> hashed(n);
-  for (std::size_t b = 0; b < n; ++b) hashed[b] = {cell_of(b, 0) + cells[0] * cell_of(b, 1), b};
-  std::sort(hashed.begin(), hashed.end());
+  std::vector<std::pair<long, int>> hashed;
   std::vector<std::pair<std::size_t, std::size_t>> pairs;
-  for (std::size_t a = 0; a < n; ++a) {
-    const long ia = cell_of(a, 0), ja = cell_of(a, 1);
-    for (long dj = -1; dj <= 1; ++dj)
-      for (long di = -1; di <= 1; ++di) {
-        long i = ia + di, j = ja + dj;
-        if (periodic[0]) i = ((i % cells[0]) + cells[0]) % cells[0];
-        if (periodic[1]) j = ((j % cells[1]) + cells[1]) % cells[1];
-        if (i < 0 || i >= cells[0] || j < 0 || j >= cells[1]) continue;
-        const long key = i + cells[0] * j;
-        auto it = std::lower_bound(hashed.begin(), hashed.end(), std::pair<long, std::size_t>{key, 0});
-        for (; it != hashed.end() && it->first == key; ++it)
-          if (it->second > a) pairs.emplace_back(a, it->second);
-      }
-  }
-  std::sort(pairs.begin(), pairs.end());
-  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  for_each_near_pair(
+      static_cast<int>(n),
+      [&](int b) {
+        return Vec{0.5 * (box[b].low[0] + box[b].high[0]), 0.5 * (box[b].low[1] + box[b].high[1])};
+      },
+      [](int) { return true; }, lower, {upper[0] - lower[0], upper[1] - lower[1]}, periodic, cell, hashed,
+      [&](int a, int b) { pairs.emplace_back(a, b); });
+  std::sort(pairs.begin(), pairs.end());  // each pair once; in index order
   // The smallest rim distance of one pair, over the points of each within `bound` of the other's box.
   std::vector<Vec> near_a, near_b;
   const auto pair_distance = [&](std::size_t a, std::size_t b, const Vec& shift, double bound) {
