@@ -17,6 +17,7 @@
 #include "app/compare.hpp"
 #include "app/info.hpp"
 #include "core/errors.hpp"
+#include "fluid/fft_wisdom_cache.hpp"
 #include "fluid/threads.hpp"
 #include "scene/scene_reader.hpp"
 #include "sim/run/run.hpp"
@@ -72,14 +73,20 @@ int run_command(const std::string& scene_path, const std::vector<std::string>& o
   ibms::Scene scene = ibms::read_scene_file(scene_path, overrides);
   if (!output.empty()) scene.output.file = output;
   // The original run's FFTW plans before this run makes its own (bit-identical continuation);
-  // a checkpoint that cannot be read is reported by run_simulation, which reads it again.
+  // a checkpoint that cannot be read is reported by run_simulation, which reads it again. A fresh
+  // run of measured plans takes them from the machine's cache (fluid/fft_wisdom_cache.hpp); a
+  // restart takes none from it, so that the checkpoint's plans are the ones FFTW finds.
+  const bool measured = scene.run.fft_plans == ibms::RunSpec::FftPlans::measure;
   if (!restart.empty()) {
     try {
       ibms::import_checkpoint_planner_wisdom(ibms::read_checkpoint(restart));
     } catch (const ibms::InputError&) {
     }
+  } else if (measured) {
+    ibms::load_fft_wisdom_cache();
   }
   ibms::Simulation sim(scene);
+  if (measured) ibms::save_fft_wisdom_cache();
   ibms::RunSummary summary;
   try {
     summary = ibms::run_simulation(sim, {scene.output.file, quiet, restart, &stop_signal, govern_threads});
@@ -168,7 +175,11 @@ int main(int argc, char** argv) {
                                 validation_dir.empty() ? ibms::default_validation_dir() : validation_dir);
     if (info->parsed()) {
       const ibms::Scene scene = ibms::read_scene_file(scene_path, overrides);
+      // describe_scene builds the run's Simulation: its plans as the run makes them.
+      const bool measured = scene.run.fft_plans == ibms::RunSpec::FftPlans::measure;
+      if (measured) ibms::load_fft_wisdom_cache();
       std::fputs(ibms::describe_scene(scene).c_str(), stdout);
+      if (measured) ibms::save_fft_wisdom_cache();
       return 0;
     }
   } catch (const ibms::InputError& e) {

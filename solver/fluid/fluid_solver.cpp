@@ -55,11 +55,11 @@ FluidSolver::FluidSolver(const Grid& grid, double kinematic_viscosity, const Flu
     boundaries_.side(s).kind = boundaries_.kind(grid, s);
   const BoundarySide &l = boundaries_.left, &r = boundaries_.right, &b = boundaries_.bottom, &t = boundaries_.top;
   poisson_ = std::make_unique<SpectralSolver>(grid, poisson_kind(l.kind), poisson_kind(r.kind), poisson_kind(b.kind),
-                                              poisson_kind(t.kind));
+                                              poisson_kind(t.kind), schemes.fft_planning);
   helmholtz_ = std::make_unique<SpectralSolver>(grid, helmholtz_kind(l.kind), helmholtz_kind(r.kind),
-                                                helmholtz_kind(b.kind), helmholtz_kind(t.kind));
+                                                helmholtz_kind(b.kind), helmholtz_kind(t.kind), schemes.fft_planning);
   helmholtz_y_ = std::make_unique<SpectralSolver>(grid, helmholtz_kind(l.kind), helmholtz_kind(r.kind),
-                                                  helmholtz_kind(b.kind), helmholtz_kind(t.kind));
+                                                  helmholtz_kind(b.kind), helmholtz_kind(t.kind), schemes.fft_planning);
 }
 
 void FluidSolver::set_given_faces(double time, FaceField& face_x, FaceField& face_y) const {

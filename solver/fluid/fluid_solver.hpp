@@ -84,6 +84,7 @@ struct FluidSchemes {
   // Up to this viscous number nu dt / h^2 the quadratic closure takes one sweep from the explicit
   // estimate (complete_prediction); 0: always FluidSolver::closure_sweeps sweeps from u^n.
   double single_sweep_viscous_number = 0.25;
+  FftPlanning fft_planning = FftPlanning::measure;  // the three spectral solvers' plans
 };
 
 // A force of the step as it enters the face velocities of the momentum interpolation (balanced

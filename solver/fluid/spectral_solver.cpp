@@ -48,11 +48,12 @@ double logical_size(SpectralBoundary b, int n) { return b == SpectralBoundary::p
 
 }  // namespace
 
-SpectralSolver::SpectralSolver(const Grid& grid, SpectralBoundary boundary_x, SpectralBoundary boundary_y)
-    : SpectralSolver(grid, boundary_x, boundary_x, boundary_y, boundary_y) {}
+SpectralSolver::SpectralSolver(const Grid& grid, SpectralBoundary boundary_x, SpectralBoundary boundary_y,
+                               FftPlanning planning)
+    : SpectralSolver(grid, boundary_x, boundary_x, boundary_y, boundary_y, planning) {}
 
 SpectralSolver::SpectralSolver(const Grid& grid, SpectralBoundary left, SpectralBoundary right,
-                               SpectralBoundary bottom, SpectralBoundary top)
+                               SpectralBoundary bottom, SpectralBoundary top, FftPlanning planning)
     : nx_(grid.nx), ny_(grid.ny) {
   const auto periodic = [](SpectralBoundary low, SpectralBoundary high) {
     return low == SpectralBoundary::periodic || high == SpectralBoundary::periodic;
@@ -69,8 +70,9 @@ SpectralSolver::SpectralSolver(const Grid& grid, SpectralBoundary left, Spectral
   prepare_fft_threads();  // plans below use thread_count() threads
   // Row-major (ny, nx): the first FFTW dimension is y.
   const Transform tx = transform(left, right), ty = transform(bottom, top);
-  forward_ = fftw_plan_r2r_2d(ny_, nx_, buffer_, buffer_, ty.forward, tx.forward, FFTW_MEASURE);
-  inverse_ = fftw_plan_r2r_2d(ny_, nx_, buffer_, buffer_, ty.inverse, tx.inverse, FFTW_MEASURE);
+  const unsigned flags = planning == FftPlanning::estimate ? FFTW_ESTIMATE : FFTW_MEASURE;
+  forward_ = fftw_plan_r2r_2d(ny_, nx_, buffer_, buffer_, ty.forward, tx.forward, flags);
+  inverse_ = fftw_plan_r2r_2d(ny_, nx_, buffer_, buffer_, ty.inverse, tx.inverse, flags);
   if (!forward_ || !inverse_) throw std::runtime_error("SpectralSolver: FFTW planning failed");
 }
 
@@ -117,6 +119,9 @@ std::string fft_planner_wisdom() {
 }
 
 bool import_fft_planner_wisdom(const std::string& wisdom) {
+  // FFTW knows its threaded solvers, which wisdom made on threads names, only once its threads
+  // are set up; before that it refuses such wisdom whole.
+  prepare_fft_threads();
   return !wisdom.empty() && fftw_import_wisdom_from_string(wisdom.c_str()) != 0;
 }
 

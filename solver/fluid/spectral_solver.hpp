@@ -2,7 +2,7 @@
 // (docs/method.md §6): DCT-II/III for Neumann at both ends of a direction, DST-II/III for homogeneous
 // Dirichlet at both ends, DCT-IV (REDFT11) for Neumann at the low end and Dirichlet at the high one,
 // DST-IV (RODFT11) for the reverse (open channels), R2HC/HC2R for periodic directions. L is the compact 5-point Laplacian with the ghost rules of
-// fluid/boundary_conditions.hpp. Plans are made once (FFTW_MEASURE); solve() allocates nothing.
+// fluid/boundary_conditions.hpp. Plans are made once (FftPlanning); solve() allocates nothing.
 #pragma once
 #include <fftw3.h>
 
@@ -16,6 +16,14 @@ namespace ibms {
 
 enum class SpectralBoundary { periodic, neumann, dirichlet };
 
+// How a SpectralSolver plans its transforms. `measure` (FFTW_MEASURE) times candidate algorithms
+// and keeps the fastest: two processes may pick different ones, which differ at round-off, unless
+// they share wisdom (the checkpoint's, or the cache of fluid/fft_wisdom_cache.hpp). `estimate`
+// (FFTW_ESTIMATE) picks them from the sizes alone, the same at every run of one binary on one
+// machine, provided the process holds no measured wisdom for those sizes (FFTW uses wisdom of a
+// stronger rigour for a weaker request): `ibms run` loads no cache for such a scene.
+enum class FftPlanning { measure, estimate };
+
 struct SpectralSolveStats {
   double removed_mean = 0.0;  // mean of r projected out when a I + b L is singular [units of r]
 };
@@ -23,10 +31,11 @@ struct SpectralSolveStats {
 class SpectralSolver {
  public:
   // Boundary kind per direction; a periodic grid direction must be `periodic`.
-  SpectralSolver(const Grid& grid, SpectralBoundary boundary_x, SpectralBoundary boundary_y);
+  SpectralSolver(const Grid& grid, SpectralBoundary boundary_x, SpectralBoundary boundary_y,
+                 FftPlanning planning = FftPlanning::measure);
   // Boundary kind per side (low and high end of each direction); periodic only at both ends.
   SpectralSolver(const Grid& grid, SpectralBoundary left, SpectralBoundary right, SpectralBoundary bottom,
-                 SpectralBoundary top);
+                 SpectralBoundary top, FftPlanning planning = FftPlanning::measure);
   ~SpectralSolver();
   SpectralSolver(const SpectralSolver&) = delete;
   SpectralSolver& operator=(const SpectralSolver&) = delete;
@@ -48,9 +57,9 @@ class SpectralSolver {
   fftw_plan forward_ = nullptr, inverse_ = nullptr;
 };
 
-// FFTW planner state ("wisdom"). Plans are measured (FFTW_MEASURE), so two processes may pick
-// different algorithms for the same transform, which differ at round-off; a restart imports the
-// original run's wisdom before its plans are made so that it continues bit-identically.
+// FFTW planner state ("wisdom"). Measured plans may differ between processes (FftPlanning); a
+// restart imports the original run's wisdom before its plans are made so that it continues
+// bit-identically.
 std::string fft_planner_wisdom();
 // false if FFTW rejects the text (then planning simply measures afresh).
 bool import_fft_planner_wisdom(const std::string& wisdom);

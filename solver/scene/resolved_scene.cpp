@@ -97,6 +97,7 @@ std::string resolved_scene_toml(const Scene& scene) {
   out += fmt::format("solid_substeps = {}\n", toml_string(scene_schema::name_of(run.solid_substeps)));
   out += fmt::format("on_body_instability = {}\n", toml_string(scene_schema::name_of(run.on_body_instability)));
   out += fmt::format("on_fluid_instability = {}\n", toml_string(scene_schema::name_of(run.on_fluid_instability)));
+  out += fmt::format("fft_plans = {}\n", toml_string(scene_schema::name_of(run.fft_plans)));
 
   const DomainSpec& domain = scene.domain;
   out += "\n[domain]\n";

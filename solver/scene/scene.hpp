@@ -15,6 +15,7 @@ namespace ibms {
 struct RunSpec {
   enum class SolidSubsteps { per_group, global };
   enum class OnInstability { stop, warn };
+  enum class FftPlans { measure, estimate };
   double end_time = 1.0;             // stop time [time]
   double time_step = 0.0;            // fixed dt [time]; 0 selects the adaptive step
   double cfl = 0.5;                  // adaptive dt = cfl / max(|u|/dx + |v|/dy) [-]
@@ -38,6 +39,12 @@ struct RunSpec {
   // it) or whose largest speed exceeds FluidGuard::speed_factor times the scene's speed scale
   // (sim/checks/fluid_guard.hpp, docs/method.md §7) stops the run ("stop") or is reported once ("warn").
   OnInstability on_fluid_instability = OnInstability::stop;
+  // How the fluid's FFTs are planned (fluid/spectral_solver.hpp, docs/design.md §9): "measure"
+  // times candidate algorithms (the fastest; kept between runs in the wisdom cache, so which one
+  // wins, and so the last bits of the result, can differ between machines or a cleared cache),
+  // "estimate" picks them from the sizes alone (the same plans, and so the same bits, at every run
+  // on one machine: the validation scenes whose references are regenerated bit for bit).
+  FftPlans fft_plans = FftPlans::measure;
 };
 
 struct DomainSpec {

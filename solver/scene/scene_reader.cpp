@@ -37,6 +37,7 @@ void read_run(const TomlTableReader& table, RunSpec& run) {
   table.read_choice("solid_substeps", run.solid_substeps);
   table.read_choice("on_body_instability", run.on_body_instability);
   table.read_choice("on_fluid_instability", run.on_fluid_instability);
+  table.read_choice("fft_plans", run.fft_plans);
 }
 
 void read_domain(const TomlTableReader& table, DomainSpec& domain) {

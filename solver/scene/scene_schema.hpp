@@ -22,7 +22,7 @@ inline constexpr std::string_view run_keys[] = {"end_time",         "time_step",
                                                 "max_time_step",    "steady_tolerance",
                                                 "max_steps",        "max_cfl",
                                                 "max_viscous_number", "solid_substeps", "on_body_instability",
-                                                "on_fluid_instability"};
+                                                "on_fluid_instability", "fft_plans"};
 inline constexpr std::string_view domain_keys[] = {"length_x", "length_y",   "cells_x",
                                                    "cells_y",  "periodic_x", "periodic_y"};
 inline constexpr std::string_view fluid_keys[] = {"density", "kinematic_viscosity", "gravity", "convection",
@@ -91,6 +91,8 @@ IBMS_SCENE_CHOICES(RunSpec::SolidSubsteps, {RunSpec::SolidSubsteps::per_group, "
 // run.on_body_instability and run.on_fluid_instability.
 IBMS_SCENE_CHOICES(RunSpec::OnInstability, {RunSpec::OnInstability::stop, "stop"},
                    {RunSpec::OnInstability::warn, "warn"});
+IBMS_SCENE_CHOICES(RunSpec::FftPlans, {RunSpec::FftPlans::measure, "measure"},
+                   {RunSpec::FftPlans::estimate, "estimate"});
 IBMS_SCENE_CHOICES(FluidSpec::Convection, {FluidSpec::Convection::central, "central"},
                    {FluidSpec::Convection::quick, "quick"}, {FluidSpec::Convection::fromm, "fromm"});
 IBMS_SCENE_CHOICES(FluidSpec::WallClosure, {FluidSpec::WallClosure::linear, "linear"},

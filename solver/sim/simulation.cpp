@@ -138,8 +138,11 @@ Simulation::Simulation(const Scene& scene)
     : scene_(scene),
       grid_(grid_from_scene(scene)),
       fluid_solver_(grid_, scene.fluid.kinematic_viscosity, boundaries_from_scene(scene),
-                    FluidSchemes{convection_scheme(scene.fluid.convection),
-                                 scene.fluid.wall_closure == FluidSpec::WallClosure::quadratic}),
+                    FluidSchemes{.convection = convection_scheme(scene.fluid.convection),
+                                 .quadratic_wall = scene.fluid.wall_closure == FluidSpec::WallClosure::quadratic,
+                                 .fft_planning = scene.run.fft_plans == RunSpec::FftPlans::estimate
+                                                     ? FftPlanning::estimate
+                                                     : FftPlanning::measure}),
       fluid_(fluid_solver_.make_state()),
       kernel_(kernel_kind(scene.ibm.kernel)),
       inner_fluid_inertia_(inner_fluid_inertia_of(scene.ibm.inner_fluid_inertia)),
