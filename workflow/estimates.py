@@ -100,6 +100,13 @@ def info(scene, sets, ibms, wf):
     return tuple(cache[key])
 
 
+def cached_cost(scene, sets, wf):
+    """The cell-steps of `ibms info` when the cache holds them, else None (never runs ibms)."""
+    key = _key(scene, sets)
+    entry = _load(wf).get(key) if key else None
+    return entry[1] if entry else None
+
+
 def resources(scene, sets, ibms, wf, status_path=None, enabled=True):
     if not enabled or not scene:
         return dict(DEFAULT)

@@ -5,6 +5,13 @@
                                          next workflow run runs exactly those again
   ibms_workflow.py summary BUILD         one line per job that did not pass, counts, and exit
                                          status 1 when any did not pass (0 otherwise)
+  ibms_workflow.py schedule BUILD [LEVEL] [--cores N] [--jobs]
+                                         estimated wall time of the level's jobs on N cores (default
+                                         2) from their last measured times (workflow/priorities.py):
+                                         the order before priorities (all benches exclusive, no
+                                         priorities: the exclusive jobs run last) and with them
+                                         (exclusive jobs first, and last); --jobs lists every job's
+                                         seconds, their source, cores and priority
 """
 import glob
 import json
@@ -29,7 +36,55 @@ def statuses(build):
         yield path, st
 
 
+def schedule(build, level="default", cores=2, list_jobs=False):
+    import yaml
+    import priorities
+    import sweeps as sweep_files
+    source = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    with open(os.path.join(source, "workflow", "config", level + ".yaml")) as f:
+        config = yaml.safe_load(f)
+    wf = ctest_jobs.state_dir(build)
+    ibms = os.path.join(build, "solver", "ibms")
+    jobs = ctest_jobs.load_jobs(build, source, labels=config.get("labels", ["validation"]),
+                                exclude_cases=config.get("exclude_cases", []))
+    sweeps = {}
+    for path in config.get("sweeps", []):
+        s = sweep_files.load(os.path.join(source, path), source, build)
+        sweeps[s["name"]] = s
+    benches, bench_level = config.get("benches", []), config.get("bench_level", "default")
+    times = priorities.measured(build, wf)
+    cases = [("before: every bench exclusive, no priorities", dict(one_core_benches=set()), "none"),
+             ("after: map benches on one core, longest first, exclusive jobs first", {}, "first"),
+             ("after, exclusive jobs last (config exclusive=last)", {}, "last")]
+    for title, extra, exclusive in cases:
+        plan = priorities.plan(jobs, benches, bench_level, sweeps, build, wf, ibms, cores,
+                               exclusive if exclusive != "none" else "first", times=times, **extra)
+        order = {j: 0 for j in plan} if exclusive == "none" else None  # ties: the plan's order
+        makespan, _ = priorities.simulate(plan, cores, order)
+        excl = sum(v["seconds"] for v in plan.values() if v["cores"] > 1)
+        one = sum(v["seconds"] for v in plan.values() if v["cores"] == 1)
+        print("%s\n  estimated wall time on %d cores: %.0f s (%.1f min); exclusive jobs %.0f s, "
+              "one-core jobs %.0f s (%.0f s on %d cores)" % (title, cores, makespan, makespan / 60, excl, one,
+                                                           one / cores, cores))
+    if list_jobs:
+        plan = priorities.plan(jobs, benches, bench_level, sweeps, build, wf, ibms, cores, times=times)
+        _, started = priorities.simulate(plan, cores)
+        print("\n%-78s %9s %6s %8s %8s  %s" % ("job", "seconds", "cores", "priority", "start", "source"))
+        for j, v in sorted(plan.items(), key=lambda kv: started[kv[0]][0]):
+            print("%-78s %9.1f %6d %8d %8.0f  %s" % (j, v["seconds"], v["cores"], v["priority"], started[j][0],
+                                                     v["source"]))
+    return 0
+
+
 def main(argv):
+    if len(argv) >= 3 and argv[1] == "schedule":
+        args = [a for a in argv[2:] if not a.startswith("--")]
+        cores = 2
+        if "--cores" in argv:
+            cores = int(argv[argv.index("--cores") + 1])
+            args.remove(str(cores))
+        return schedule(os.path.abspath(args[0]), args[1] if len(args) > 1 else "default", cores,
+                        "--jobs" in argv)
     if len(argv) != 3 or argv[1] not in ("forget-failed", "summary"):
         sys.exit(__doc__)
     build = os.path.abspath(argv[2])

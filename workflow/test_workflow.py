@@ -1,11 +1,17 @@
 #!/usr/bin/python3
-"""Unit test of the workflow's helpers (no Snakemake run, no solver): sweep files expand into the
-right --set values (linked keys, two axes, ids), bad expressions are refused; jobs come out of a
-ctest test list as runs and checks with their fixtures, inputs and per-check results file; the
-runner's status file and its ctest-format log (read back by the report's reader) for a passing, a
-failing and a not-run test; `ibms compare` lines parse; the report's sweep section draws a figure.
+"""Unit test of the workflow's helpers (no Snakemake run but a dry run, no solver): sweep files
+expand into the right --set values (linked keys, two axes, ids), bad expressions are refused; jobs
+come out of a ctest test list as runs and checks with their fixtures, inputs and per-check results
+file; the runner's status file and its ctest-format log (read back by the report's reader) for a
+passing, a failing and a not-run test; `ibms compare` lines parse; the report's sweep section
+draws a figure; job priorities (workflow/priorities.py) come out longest first for a synthetic set
+of jobs, the exclusive jobs above (or, with `exclusive: last`, among) the one-core ones, the classes
+partition the jobs, measured times survive in the times file, and the list schedule finishes
+sooner longest first.
 With a build directory, also: the convergence sweeps run the same grids as their validation cases
-register in CMake (so the two cannot drift apart).
+register in CMake (so the two cannot drift apart), and a dry run of the default level
+(`snakemake -n`, when installed) gives every job exactly one rule, <kind>_p<priority>, carrying
+that priority.
 usage: test_workflow.py WORK_DIR [BUILD_DIR]   exit 0 pass, 1 fail, 77 skipped (matplotlib missing)"""
 import json
 import os
@@ -22,6 +28,7 @@ try:
 except ImportError:
     sys.exit(77)
 import ctest_jobs  # noqa: E402
+import priorities  # noqa: E402
 import runner  # noqa: E402
 import sweeps  # noqa: E402
 
@@ -148,6 +155,7 @@ def main():
     report_sweeps.sweeps_section(out, build, work)
     check(os.path.isfile(os.path.join(work, "sweep0.pdf")) and any("includegraphics" in o for o in out),
           "the report's sweep section draws the figure")
+    test_priorities(build, jobs)
     # -- the sweeps and the cases' own convergence studies use the same grids
     if len(sys.argv) > 2:
         real = ctest_jobs.load_jobs(os.path.abspath(sys.argv[2]), SOURCE, ["validation"])
@@ -159,8 +167,123 @@ def main():
                           for a in j["sets"] if a.startswith("domain.cells_x="))
             grid = sorted(sw["grid"]["domain.cells_x"])
             check(case == grid, "%s: grids %s = the case's validation runs %s" % (sweep_file, grid, case))
+        test_dry_run_rules(os.path.abspath(sys.argv[2]))
     print("%d failure(s)" % len(failures))
     return 1 if failures else 0
+
+
+def test_priorities(build, jobs):
+    """Longest first on synthetic jobs: the ctest jobs above with made-up times, benches, a sweep."""
+    wf = ctest_jobs.state_dir(build)
+    times = {"run/settling_disk_100_run": (40.0, "pass"), "run/dkt_two_disks_run_160": (3.0, "FAIL"),
+             "check/settling_disk_check": (0.05, "pass"), "bench/work_precision/default": (900.0, "pass"),
+             "bench/stability/default": (35.0, "pass"), "sweep/s/a": (300.0, "pass"), "sweep/s/b": (0.5, "pass"),
+             "sweep/s/c": (7.0, "pass")}
+    sw = {"s": {"scene": None, "points": [{"id": "a", "sets": []}, {"id": "b", "sets": []}, {"id": "c", "sets": []}]}}
+    benches = ["work_precision", "overhead", "stability"]
+    plan = priorities.plan(jobs, benches, "default", sw, build, wf, None, 2, times=times)
+    one = sorted((v for v in plan.values()
+                  if v["cores"] == 1 and v["kind"] not in ("report", "results", "sweep_collect")),
+                 key=lambda v: -v["seconds"])
+    prios = [v["priority"] for v in one]
+    check(prios == sorted(prios, reverse=True) and prios[0] > prios[-1],
+          "one-core jobs: a longer one never below a shorter one: %s"
+          % [(v["name"], v["seconds"], v["priority"]) for v in one])
+    check(plan["bench/stability"]["cores"] == 1 and plan["bench/work_precision"]["cores"] == 2
+          and plan["bench/overhead"]["cores"] == 2, "map benches on one core, timing benches on every core")
+    excl = sorted((v for v in plan.values() if v["cores"] > 1), key=lambda v: -v["seconds"])
+    check([v["name"] for v in excl] == ["work_precision", "verification", "overhead"]
+          and [v["priority"] for v in excl] == sorted([v["priority"] for v in excl], reverse=True)
+          and min(v["priority"] for v in excl) > 2 * max(prios),
+          "exclusive jobs longest first, each above any two one-core jobs: %s"
+          % [(v["name"], v["seconds"], v["priority"]) for v in excl])
+    check(plan["run/dkt_two_disks_run_160"]["seconds"] == priorities.UNKNOWN_SECONDS
+          and plan["bench/overhead"]["seconds"] == priorities.FALLBACK_SECONDS[("bench", "default")]["overhead"]
+          and plan["sweep/s/a"]["seconds"] == 300.0,
+          "a failed run's time is a lower bound; a bench not measured takes the table's seconds")
+    last = priorities.plan(jobs, benches, "default", sw, build, wf, None, 2, exclusive="last", times=times)
+    check(last["bench/work_precision"]["priority"] == priorities.priority_class(900.0),
+          "exclusive=last: no offset (%s)" % last["bench/work_precision"]["priority"])
+    for kind in ("run", "check", "bench", "sweep"):
+        cl = priorities.classes(plan, kind)
+        names = [n for members in cl.values() for n in members]
+        check(sorted(names) == sorted(v["name"] for v in plan.values() if v["kind"] == kind)
+              and len(names) == len(set(names)), "%s: the classes partition the jobs: %s" % (kind, cl))
+    # the list schedule: longest first beats the given order when the long job comes last
+    syn = {"a%d" % i: dict(seconds=1.0, cores=1, deps=[]) for i in range(4)}
+    syn["long"] = dict(seconds=8.0, cores=1, deps=[])
+    for v in syn.values():
+        v["priority"] = priorities.priority(v["seconds"], v["cores"])
+    in_order, _ = priorities.simulate(syn, 2, order={j: 0 for j in syn})
+    longest, starts = priorities.simulate(syn, 2)
+    check(in_order == 10 and longest == 8 and starts["long"][0] == 0,
+          "2 cores, 4 x 1 s + 8 s: %g s in the given order, %g s longest first" % (in_order, longest))
+    # an exclusive job blocks both cores wherever it runs: first or last, the same end
+    mix = {"x": dict(seconds=5.0, cores=2, deps=[]), "p": dict(seconds=8.0, cores=1, deps=[]),
+           "q": dict(seconds=4.0, cores=1, deps=[]), "r": dict(seconds=4.0, cores=1, deps=[]),
+           "end": dict(seconds=1.0, cores=1, deps=["x", "p", "q", "r"])}
+    spans = []
+    for exclusive in ("first", "last"):
+        for v in mix.values():
+            v["priority"] = priorities.priority(v["seconds"], v["cores"], exclusive) if not v["deps"] else 0
+        span, st = priorities.simulate(mix, 2)
+        spans.append((span, st["x"][0]))
+    check(spans == [(14.0, 0.0), (14.0, 8.0)], "exclusive job first or last: (end, its start) %s" % spans)
+    # the times file keeps what the status files said, benches under their level
+    os.makedirs(os.path.join(wf, "bench"), exist_ok=True)
+    with open(os.path.join(wf, "bench", "stability.status"), "w") as f:
+        json.dump({"name": "bench_stability", "status": "pass", "seconds": 12.5}, f)
+    priorities.record(build, wf, plan, "quick")
+    os.remove(os.path.join(wf, "bench", "stability.status"))
+    m = priorities.measured(build, wf)
+    check(m.get("bench/stability/quick") == (12.5, "pass") and "bench/stability/default" not in m
+          and m.get("run/settling_disk_100_run", (None,))[0] is not None,
+          "times file: a bench under its level; runs from their status files")
+
+
+def test_dry_run_rules(build):
+    """A dry run of the default level: each job exactly one rule, <kind>_p<priority> carrying that
+    priority, the map benches on one core. Skipped without snakemake."""
+    import re
+    import subprocess
+    if not shutil.which("snakemake"):
+        print("skip  dry run: no snakemake")
+        return
+    # --nolock, --rerun-incomplete: this test also runs inside the workflow's verification job
+    out = subprocess.run(["snakemake", "-s", os.path.join(HERE, "Snakefile"), "--directory", build,
+                          "--configfile", os.path.join(HERE, "config", "default.yaml"), "--config", "build=" + build,
+                          "--cores", "2", "-n", "--forceall", "--nolock", "--rerun-incomplete"],
+                         capture_output=True, text=True)
+    jobs, cur = [], None
+    for line in out.stdout.splitlines():
+        m = re.match(r"^(?:local)?rule (\S+):", line)
+        if m:
+            cur = {"rule": m.group(1), "priority": 0, "threads": 1}
+            jobs.append(cur)
+        elif cur is not None and ":" in line:
+            k, v = line.strip().split(":", 1)
+            if k in ("output", "wildcards"):
+                cur[k] = v.strip()
+            elif k in ("priority", "threads"):
+                cur[k] = int(float(v))
+    outputs = [j.get("output") for j in jobs if j.get("output")]
+    check(out.returncode == 0 and len(jobs) > 50 and len(outputs) == len(set(outputs)),
+          "dry run: %d jobs, each output made by one job (exit %d) %s"
+          % (len(jobs), out.returncode, out.stderr[-500:] if out.returncode else ""))
+    kinds, bad = {}, []
+    for j in jobs:
+        m = re.match(r"^(case_run|case_check|bench|sweep_run)_p(\d+)$", j["rule"])
+        if m:
+            kinds[m.group(1)] = kinds.get(m.group(1), 0) + 1
+            if int(m.group(2)) != j["priority"]:
+                bad.append(j["rule"])
+        elif j["rule"] not in ("all", "results", "report", "sweep_collect", "verification"):
+            bad.append(j["rule"])
+    check(not bad and set(kinds) == {"case_run", "case_check", "bench", "sweep_run"},
+          "dry run: rules <kind>_p<priority> with that priority; jobs per kind %s %s" % (kinds, bad))
+    threads = {j.get("wildcards", "").replace("bench=", ""): j["threads"] for j in jobs if j["rule"].startswith("bench_")}
+    check(threads.get("stability") == 1 and threads.get("fluid_stability") == 1
+          and threads.get("work_precision", 1) > 1, "dry run: bench threads %s" % threads)
 
 
 if __name__ == "__main__":
