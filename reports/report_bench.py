@@ -199,7 +199,8 @@ def body_work_precision(out, build, fig_dir, source, cases):
     if not cases:
         return
     out.append(r"\subsection{Bodies: the DFG cylinders under both immersed-boundary couplings}")
-    out.append("The cylinder of the DFG benchmarks at $D/h = 10$--$40$ (labels; \\texttt{validation/dfg\\_cylinder\\_2d1} "
+    out.append("The cylinder of the DFG benchmarks at $D/h = 10$ and 20 (the bench's default level; 30 and 40 at its "
+               "\\texttt{full} level) (labels; \\texttt{validation/dfg\\_cylinder\\_2d1} "
                "and \\texttt{\\_2d2}, each scene's grid refined as its CMakeLists does) under the papers' direct forcing "
                "(\\texttt{uhlmann}: 3 passes, markers retracted by $0.25h$, $\\nu\\Delta t/h^2 \\le 0.2$, as the 2D-1 "
                "case calibrated it) and under the no-slip coupling on the face velocities (\\texttt{no\\_slip}: slip tolerance "

@@ -55,17 +55,21 @@ ONE_CORE_BENCHES = {
                  "spring / DEM stiffness, with area change, speed ratio and contact-pair counts",
     "fluid_stability": "maps of outcome over CFL number and cell Reynolds number, with measured CFL, "
                        "energy ratios and speeds, beside the von Neumann limit",
+    "forcing_passes": "errors and rim slip per forcing-pass count; its ms per step compare passes "
+                      "measured one after another in one process on one thread: a ratio, and a "
+                      "one-thread job on the other core shares no core with it",
 }
 
 # Seconds of the benches and of the ctest verification on the shared 2-core machine, used until
 # the workflow has measured them in this build. Default level: bench_work_precision 14.5 min in a
-# default-level run of the workflow, bench_fluid_stability 201 s and bench_forcing_passes 174 s in
+# default-level run of the workflow less the 546 s of its DFG 2D-2 runs at D/h = 30, which moved to
+# its full level (an estimate: its 2D-1 runs at D/h = 30 moved too), bench_fluid_stability 201 s and bench_forcing_passes 174 s in
 # a paper-level run (docs/workflow.md), bench_stability 40 s and bench_overhead 5 s
 # (bench/README.md); the verification `ctest -j 2 -L "unit|convergence"`: 254 s of test time in
 # CTestCostData.txt. Quick: bench_work_precision 1 + 7 min (bench/README.md), bench_forcing_passes
 # a guess (a third of its grids); full: bench/README.md's "adds 39 min", forcing passes a guess.
 FALLBACK_SECONDS = {
-    ("bench", "default"): {"work_precision": 870, "fluid_stability": 201, "forcing_passes": 174,
+    ("bench", "default"): {"work_precision": 324, "fluid_stability": 201, "forcing_passes": 174,
                            "stability": 40, "overhead": 5},
     ("bench", "quick"): {"work_precision": 480, "fluid_stability": 201, "forcing_passes": 30,
                          "stability": 40, "overhead": 5},
