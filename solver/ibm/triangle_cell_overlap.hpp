@@ -1,7 +1,9 @@
 // Exact overlap areas of a triangle with the cells of the grid, for the inner-fluid momentum
-// I_T = sum_ij alpha_T(i,j) u_ij h^2 of docs/method.md §1.7 (variant K, step 1): each cell square is
-// clipped by the triangle (Sutherland-Hodgman; the triangle is convex) and the clipped polygon's
-// shoelace area is its overlap. Summed over the triangles of a fan, the overlaps add up to the
+// I_T = sum_ij alpha_T(i,j) u_ij h^2 of docs/method.md §1.7 (variant K, step 1): the overlap of the
+// (convex) triangle with a cell is the sum over its three edges of the signed area between the edge,
+// held to the cell's row band, and the band's floor, within the cell's columns (the area of the
+// triangle's vertical sections inside the cell; verification/oracles/clipped_cell_overlaps clips
+// the square instead, and the test compares the two cell by cell). Summed over the triangles of a fan, the overlaps add up to the
 // polygon's area to round-off, so the inner-fluid momentum is split between triangles without
 // loss. Periodic directions wrap cell indices; in wall directions only cells inside the box count.
 #pragma once

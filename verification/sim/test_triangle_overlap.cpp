@@ -1,7 +1,9 @@
 // The exact triangle-cell overlaps of ibm/triangle_cell_overlap (used for the inner-fluid
 // momentum of docs/method.md §1.7, variant K): for every triangle the overlaps add up to its area,
 // and over a fan (c, l, l+1) to the polygon's area, to round-off, in the interior, across a
-// periodic boundary and for both orientations.
+// periodic boundary and for both orientations; and cell by cell they equal the overlaps found by
+// clipping each cell square with the triangle (verification/oracles/clipped_cell_overlaps), on
+// random triangles, thin fan triangles and triangles whose vertices and edges lie on grid lines.
 #define BOOST_TEST_MODULE triangle_overlap
 #include <boost/test/unit_test.hpp>
 
@@ -10,6 +12,11 @@
 
 #include "core/constants.hpp"
 #include "ibm/triangle_cell_overlap.hpp"
+#include "oracles/clipped_cell_overlaps.hpp"
+
+#include <map>
+#include <random>
+#include <utility>
 
 using namespace ibms;
 
@@ -52,9 +59,66 @@ BOOST_AUTO_TEST_CASE(triangle_overlaps_sum_to_triangle_and_polygon_area) {
   const double wrapped = fan_error(periodic, 0.98, 0.02, 0.125, 48, false);  // straddles both periodic seams
   BOOST_TEST_MESSAGE("relative area error: interior " << interior << ", clockwise " << reversed
                                                      << ", across periodic seams " << wrapped);
-  // Each overlap is a shoelace sum of O(h^2) terms; ~10^2 cells per triangle give a few
-  // 1e-16 relative error; 1e-13 is round-off with margin.
+  // Each overlap is a sum of O(h^2) terms; ~10^2 cells per triangle give a few 1e-16 relative
+  // error; 1e-13 is round-off with margin.
   BOOST_TEST(interior < 1e-13);
   BOOST_TEST(reversed < 1e-13);
   BOOST_TEST(wrapped < 1e-13);
+}
+
+namespace {
+
+// Largest |overlap - oracle| of any cell over the cell area (a cell that one side lists and the
+// other does not counts with its whole overlap).
+double worst_cell_difference(const Grid& grid, const std::array<double, 2>& a, const std::array<double, 2>& b,
+                             const std::array<double, 2>& c) {
+  std::vector<CellOverlap> mine;
+  add_triangle_cell_overlaps(grid, a, b, c, mine);
+  const std::vector<CellOverlap> oracle = oracle::clipped_cell_overlaps(grid, a, b, c);
+  const double cell = grid.dx() * grid.dy();
+  std::map<std::pair<int, int>, double> difference;
+  for (const CellOverlap& o : mine) difference[{o.i, o.j}] += o.area;
+  for (const CellOverlap& o : oracle) difference[{o.i, o.j}] -= o.area;
+  double worst = 0.0;
+  for (const auto& [ij, d] : difference) worst = std::max(worst, std::abs(d) / cell);
+  return worst;
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(triangle_overlaps_equal_clipping_cell_by_cell) {
+  const Grid walls(40, 30, 1.0, 0.75);  // dx = dy = 0.025
+  const Grid periodic(40, 30, 1.0, 0.75, true, true);
+  std::mt19937 random(20261206);
+  std::uniform_real_distribution<double> anywhere(-0.05, 1.05), near(-0.06, 0.06), along(0.0, 1.0);
+  double worst = 0.0;
+  int triangles = 0;
+  const auto check = [&](const Grid& g, const std::array<double, 2>& a, const std::array<double, 2>& b,
+                         const std::array<double, 2>& c) {
+    worst = std::max(worst, worst_cell_difference(g, a, b, c));
+    ++triangles;
+  };
+  for (int k = 0; k < 300; ++k) {  // random triangles of every size and shape, partly outside the box
+    const std::array<double, 2> a{anywhere(random), 0.75 * anywhere(random)};
+    const std::array<double, 2> b{a[0] + 4 * near(random), a[1] + 4 * near(random)};
+    const std::array<double, 2> c{a[0] + near(random), a[1] + near(random)};
+    check(k % 2 ? walls : periodic, a, b, c);
+  }
+  for (int l = 0; l < 63; ++l) {  // thin fan triangles of a disk of D = 16 h, as the bodies make them
+    const double t0 = 2 * pi * l / 63, t1 = 2 * pi * (l + 1) / 63;
+    check(walls, {0.5013, 0.3771}, {0.5013 + 0.2 * std::cos(t0), 0.3771 + 0.2 * std::sin(t0)},
+          {0.5013 + 0.2 * std::cos(t1), 0.3771 + 0.2 * std::sin(t1)});
+  }
+  // Vertices on grid nodes and edges along grid lines (horizontal and vertical), both orientations.
+  const double h = 0.025;
+  for (int k = 0; k < 40; ++k) {
+    const double x = h * (3 + static_cast<int>(30 * along(random))), y = h * (3 + static_cast<int>(20 * along(random)));
+    const int m = 1 + k % 5, n = 1 + (k / 5) % 4;
+    check(walls, {x, y}, {x + m * h, y}, {x, y + n * h});
+    check(walls, {x, y}, {x, y + n * h}, {x + m * h, y + 0.5 * h});
+    check(periodic, {x, y}, {x - m * h, y - n * h}, {x + 0.37 * h, y - n * h});
+  }
+  BOOST_TEST_MESSAGE(triangles << " triangles: largest cell difference from clipping " << worst
+                               << " of a cell's area");
+  BOOST_TEST(worst < 1e-12);
 }
