@@ -184,6 +184,8 @@ def title_block(out, env, build):
                                                           esc(get.get("git commit (from outputs)", "--")))],
             ["source tree at report time", "\\texttt{%s}" % esc(get.get("source tree at report time", "--"))],
             ["date", esc(get.get("report date", "--"))],
+            ["main job level / time", "%s / %s" % (esc(get.get("main job level", "--")),
+                                                   esc(get.get("main job time to this report", "--")))],
             ["machine", esc(get.get("CPU", "--"))],
             ["newest output", esc(get.get("newest output started", "--"))],
             ["threads / build type", "%s / %s" % (threads, esc(get.get("build type", "--")))]]
@@ -199,7 +201,28 @@ def _headline(c):
     return "%s: %s (target %s)" % (esc(h["metric"]), cases_mod.measured_text(h), h["target_text"])
 
 
-def summary_page(out, order, metas, judged, params):
+def slow_checks_not_run(build):
+    """The `slow` checks of the validation cases (ctest's list in the build, runs left out) that have
+    no status in this build's workflow state: the verdicts this level does not give."""
+    try:
+        listing = subprocess.run(["ctest", "--show-only=json-v1", "-L", "slow"], cwd=build, capture_output=True,
+                                 text=True, timeout=60)
+        import json
+        tests = json.loads(listing.stdout).get("tests", [])
+    except (OSError, ValueError, subprocess.SubprocessError):
+        return []
+    names = []
+    for t in tests:
+        labels = [v for p in t.get("properties", []) if p.get("name") == "LABELS" for v in p.get("value", [])]
+        name = t["name"]
+        if "slow" not in labels or re.search(r"_run(_|$)", name):
+            continue
+        if not os.path.exists(os.path.join(build, "workflow_state", "tests", name + ".status")):
+            names.append(name)
+    return names
+
+
+def summary_page(out, order, metas, judged, params, not_run=()):
     out.append(r"\vspace{-1ex}\section*{Summary: one row per validation case}")
     out.append(r"\addcontentsline{toc}{section}{Summary}")
     counts = {}
@@ -226,6 +249,10 @@ def summary_page(out, order, metas, judged, params):
                r"without a target are \emph{info} (\S\ref{sec:checks}).}" %
                ", ".join("%d %s" % (n, v) for v, n in sorted(counts.items())) + "\n")
     out.append(class_counts_table(order, metas, judged))
+    if not_run:
+        out.append(r"{\small \emph{Not run at this level} (the paper level's \texttt{slow} label: finer grids, "
+                   r"their Richardson values and gates, the references' regeneration): %s.}" %
+                   ", ".join(tt(n) for n in not_run) + "\n")
     misses = [(case, r) for case in order for r in judged.get(case, {}).get("rows", [])
               if r["verdict"] in ("miss", "fail")]
     if misses:
@@ -599,7 +626,7 @@ def document(build, source, fig_dir):
     env = data.environment(build, source, h5s)
     out = [PREAMBLE]
     title_block(out, env, build)
-    summary_page(out, order, metas, judged, params)
+    summary_page(out, order, metas, judged, params, slow_checks_not_run(build))
     out.append(r"\newpage\tableofcontents\newpage")
     checks_by_case_section(out, order, metas, judged)
     verification_section(out, conv, tests, fig_dir)

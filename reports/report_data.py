@@ -203,6 +203,22 @@ def h5_root_attributes(h5_paths):
     return {}
 
 
+def main_job(build):
+    """(level, time from the main job's start to now) from BUILD/workflow_state/main_job.json, which
+    scripts/run-main.sh writes when it starts (before the install and the build); the report is the
+    main job's last step, so that time is the main job's."""
+    import json
+    import time
+    try:
+        with open(os.path.join(build, "workflow_state", "main_job.json")) as f:
+            job = json.load(f)
+        minutes = (time.time() - float(job["started"])) / 60.0
+        return ("%s (%s cores)" % (job["level"], job.get("cores", "?")),
+                "%.1f min, install and build included" % minutes)
+    except (OSError, ValueError, KeyError):
+        return "not recorded (not started by scripts/run-main.sh)", "not recorded"
+
+
 def environment(build, source, h5_paths):
     """Ordered (label, value) pairs describing versions, commit and machine."""
     import datetime
@@ -249,6 +265,9 @@ def environment(build, source, h5_paths):
         pass
     env.append(("operating system", "%s, kernel %s" % (os_name, platform.release())))
     env.append(("report date", datetime.datetime.now().astimezone().strftime("%Y-%m-%d %H:%M %Z")))
+    level, elapsed = main_job(build)
+    env.append(("main job level", level))
+    env.append(("main job time to this report", elapsed))
     env.append(("Python", sys.version.split()[0] + " (" + sys.executable + ")"))
     import matplotlib
     env.append(("numpy / matplotlib", np.__version__ + " / " + matplotlib.__version__))

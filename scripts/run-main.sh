@@ -33,6 +33,9 @@ scripts/install-deps.sh --report
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release
 cmake --build "$build" -j "$jobs"
 build=$(realpath "$build")
+# The level and the start (before install and build) for the report's title page.
+mkdir -p "$build/workflow_state"
+printf '{"level": "%s", "cores": %s, "started": %s}\n' "$level" "$jobs" "$start" > "$build/workflow_state/main_job.json"
 # Jobs that did not pass last time run again (their status files are removed).
 /usr/bin/python3 workflow/ibms_workflow.py forget-failed "$build"
 echo "== workflow (level $level, $jobs cores)"
