@@ -1,6 +1,6 @@
 // stable_substep (docs/method.md §5.1, §5.3) is meaningful: a wheel integrated at the returned
 // sub-step (safety 0.5) stays bounded, and at 3x that step it blows up. The bound on omega_max
-// is also compared with the exact largest eigenvalue of M^-1 K (Eigen) in the log.
+// is compared with the exact largest eigenvalue of M^-1 K (Eigen): above it, by at most 7 %.
 #define BOOST_TEST_MODULE stable_substep
 #include <boost/test/unit_test.hpp>
 
@@ -84,6 +84,9 @@ BOOST_AUTO_TEST_CASE(run_at_stable_substep_stays_bounded) {
       const double worst = max_energy_ratio(body, dt, n_steps);
       BOOST_TEST_MESSAGE("e=" << e << (cross ? " cross" : "") << "    " << ratio << "    " << dt << "    " << worst);
       BOOST_TEST(ratio >= 1.0);  // a bound, never an underestimate
+      // and a tight one (measured 1.036 and 1.059: the Collatz-Wielandt iteration, stopped once an
+      // iterate gains less than 1e-3, approaches rho(|M^-1 K|)); a looser one wastes sub-steps
+      BOOST_TEST(ratio <= 1.07);
       // omega dt <= 1 at safety 0.5, and symplectic Euler keeps H~ = H - (dt/2) omega^2 x v, so
       // H <= H0 (1 + omega dt/2)/(1 - omega dt/2) <= 3 H0 (damping only lowers it).
       BOOST_TEST(worst <= 3.0);
