@@ -3,6 +3,8 @@
 // (verification/oracles/brute_force_pair_search.hpp).
 #include "contact/cds_pair_search.hpp"
 
+#include "core/cell_hash.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -180,18 +182,52 @@ void find_touching_pairs_body_bounds(const ContactSpheres& spheres, const WallBo
     const double r = spheres.radius[s];
     bb = {std::min(bb[0], x[0] - r), std::max(bb[1], x[0] + r), std::min(bb[2], x[1] - r), std::max(bb[3], x[1] + r)};
   }
-  for (int a = 0; a < n_bodies; ++a)
-    for (int b = a + 1; b < n_bodies; ++b) {
-      ++result.n_pair_checks;  // the broad-phase test of the two bodies' boxes
-      const auto& p = bounds[a];
-      const auto& q = bounds[b];
-      // Touching spheres lie in both boxes: disjoint boxes have no touching pair (closed intervals
-      // overlap test; a pair at exactly r_i + r_j does not touch either way).
-      if (p[1] < q[0] || q[1] < p[0] || p[3] < q[2] || q[3] < p[2]) continue;
-      for (int k = start[a]; k < start[a + 1]; ++k)
-        for (int m = start[b]; m < start[b + 1]; ++m)
-          check_pair(spheres, box, std::min(order[k], order[m]), std::max(order[k], order[m]), result);
-    }
+  // Broad phase without an all-pairs loop: the boxes' centres hashed into cells of the largest box
+  // side, so that two overlapping boxes (centres less than the mean of their sides apart in each
+  // direction) are always visited.
+  double side = 0.0;
+  std::array<double, 2> low{HUGE_VAL, HUGE_VAL}, high{-HUGE_VAL, -HUGE_VAL};
+  for (int b = 0; b < n_bodies; ++b) {
+    if (start[b + 1] == start[b]) continue;  // a body without spheres
+    const auto& bb = bounds[b];
+    side = std::max({side, bb[1] - bb[0], bb[3] - bb[2]});
+    low = {std::min(low[0], bb[0]), std::min(low[1], bb[2])};
+    high = {std::max(high[0], bb[1]), std::max(high[1], bb[3])};
+  }
+  thread_local std::vector<std::pair<long, int>> hashed;
+  thread_local std::vector<int> near_a, near_b;
+  const auto visit = [&](int a, int b) {
+    ++result.n_pair_checks;  // the broad-phase test of the two bodies' boxes
+    const auto& p = bounds[a];
+    const auto& q = bounds[b];
+    // Touching spheres lie in both boxes: disjoint boxes have no touching pair (closed intervals
+    // overlap test; a pair at exactly r_i + r_j does not touch either way).
+    if (p[1] < q[0] || q[1] < p[0] || p[3] < q[2] || q[3] < p[2]) return;
+    // Narrow phase: two touching spheres' own boxes overlap, so each meets the boxes' common part;
+    // only the spheres of each body that do are paired.
+    const std::array<double, 4> common{std::max(p[0], q[0]), std::min(p[1], q[1]), std::max(p[2], q[2]),
+                                       std::min(p[3], q[3])};
+    const auto collect = [&](int body, std::vector<int>& out) {
+      out.clear();
+      for (int k = start[body]; k < start[body + 1]; ++k) {
+        const int t = order[k];
+        const auto& x = spheres.centre[t];
+        const double r = spheres.radius[t];
+        if (x[0] + r >= common[0] && x[0] - r <= common[1] && x[1] + r >= common[2] && x[1] - r <= common[3])
+          out.push_back(t);
+      }
+    };
+    collect(a, near_a);
+    collect(b, near_b);
+    for (const int k : near_a)
+      for (const int m : near_b) check_pair(spheres, box, std::min(k, m), std::max(k, m), result);
+  };
+  if (side > 0.0)
+    for_each_near_pair(
+        n_bodies, [&](int b) { return std::array<double, 2>{0.5 * (bounds[b][0] + bounds[b][1]),
+                                                            0.5 * (bounds[b][2] + bounds[b][3])}; },
+        [&](int b) { return start[b + 1] > start[b]; }, low, {high[0] - low[0], high[1] - low[1]}, {false, false},
+        side, hashed, visit);
   sort_pairs(result);
 }
 

@@ -45,10 +45,12 @@ struct PairSearchResult {
 };
 
 PairSearchResult find_touching_pairs_cell_list(const ContactSpheres& spheres, const WallBox& box);
-// Broad phase on the bodies' bounding boxes (of their spheres), then every sphere pair of each
-// pair of bodies whose boxes overlap: for a few bodies of many spheres each, far fewer distance
-// checks than the cell list, whose bins are mostly filled with spheres of one body. n_pair_checks
-// counts the body-box tests too. Periodic boxes use the cell list.
+// Broad phase on the bodies' bounding boxes (of their spheres; pairs of boxes from a hash of their
+// centres, core/cell_hash.hpp, no all-pairs loop), then, for each pair of bodies whose boxes
+// overlap, the sphere pairs of the spheres of each that meet the boxes' common part: for bodies of
+// many spheres each, far fewer distance checks than the cell list, whose bins are mostly filled
+// with spheres of one body. n_pair_checks counts the body-box tests too. Periodic boxes use the
+// cell list.
 PairSearchResult find_touching_pairs_body_bounds(const ContactSpheres& spheres, const WallBox& box);
 // The same into `out` (cleared, capacity reused) for walled boxes; periodic boxes: the cell list.
 void find_touching_pairs_body_bounds(const ContactSpheres& spheres, const WallBox& box, PairSearchResult& out);
