@@ -117,14 +117,13 @@ BodySeparation body_separation(const std::vector<MassSpringBody>& bodies, std::a
   // than `extent` apart sit in the same or neighbouring cells; the pairs found are sorted, so that
   // the result does not depend on the hashing order.
   const double cell = std::max(2.0 * extent, std::numeric_limits<double>::min());
+  const auto box_centre = [&](int b) {
+    return Vec{0.5 * (box[b].low[0] + box[b].high[0]), 0.5 * (box[b].low[1] + box[b].high[1])};
+  };
   std::vector<std::pair<long, int>> hashed;
   std::vector<std::pair<std::size_t, std::size_t>> pairs;
   for_each_near_pair(
-      static_cast<int>(n),
-      [&](int b) {
-        return Vec{0.5 * (box[b].low[0] + box[b].high[0]), 0.5 * (box[b].low[1] + box[b].high[1])};
-      },
-      [](int) { return true; }, lower, {upper[0] - lower[0], upper[1] - lower[1]}, periodic, cell, hashed,
+      static_cast<int>(n), box_centre, [](int) { return true; }, lower, {upper[0] - lower[0], upper[1] - lower[1]}, periodic, cell, hashed,
       [&](int a, int b) { pairs.emplace_back(a, b); });
   std::sort(pairs.begin(), pairs.end());  // each pair once; in index order
   // The smallest rim distance of one pair, over the points of each within `bound` of the other's box.
@@ -177,15 +176,21 @@ BodySeparation body_separation(const std::vector<MassSpringBody>& bodies, std::a
       }
     }
   }
-  // No pair found within `extent` of each other: the nearest pair is farther apart than any pair
-  // the cells hold, and every pair is visited, each pruned by its boxes' gap (a sparse scene).
-  if (!(s.min_rim_distance <= extent))
-    for (std::size_t a = 0; a < n; ++a)
-      for (std::size_t b = a + 1; b < n; ++b) {
-        const Vec shift = shift_of(a, b);
-        if (box_gap(box[a], shifted(box[b], shift)) < s.min_rim_distance)
-          s.min_rim_distance = std::min(s.min_rim_distance, pair_distance(a, b, shift, s.min_rim_distance));
-      }
+  // A pass with cells of side c visits every pair whose boxes' centres are less than c apart in each
+  // direction, so every pair of rims less than c - extent apart. No pair found within that reach (a
+  // sparse scene): the centres hashed again into cells twice as large, until a pair within reach is
+  // found or one cell holds the box (every pair), each pair pruned by its boxes' gap.
+  const double span = std::max(upper[0] - lower[0], upper[1] - lower[1]);
+  for (double c = cell; !(s.min_rim_distance <= c - extent) && c < span;) {
+    c *= 2.0;
+    for_each_near_pair(
+        static_cast<int>(n), box_centre, [](int) { return true; }, lower, {upper[0] - lower[0], upper[1] - lower[1]}, periodic, c, hashed,
+        [&](int a, int b) {
+          const Vec shift = shift_of(a, b);
+          if (box_gap(box[a], shifted(box[b], shift)) < s.min_rim_distance)
+            s.min_rim_distance = std::min(s.min_rim_distance, pair_distance(a, b, shift, s.min_rim_distance));
+        });
+  }
   return s;
 }
 
