@@ -7,7 +7,9 @@
 // prints each stage's time per step from the solver's own timers and its ratio to the fluid stages
 // (predictor + projection), and for each kind the least-squares exponent p of cost per step ~ N^p
 // over the numbers of bodies run (N = n^2).
-// Usage: bench_scale [--n 4,8,16,32] [--kinds rigid,wheel,swelling] [--steps 40] [--bed]
+// --collision-time: contact.model = "collision_time" (the linear law with k and c chosen per contact
+// so that it lasts 10 fluid steps, docs/method.md §5.5) instead of the papers' k_Dn = 1e7.
+// Usage: bench_scale [--n 4,8,16,32] [--kinds rigid,wheel,swelling] [--steps 40] [--bed] [--collision-time]
 #include <unistd.h>
 
 #include <cmath>
@@ -32,7 +34,8 @@ constexpr double diameter = 1.0, spacing = 1.6;  // D, and the box per body and 
 constexpr int cells_per_diameter = 16, rim_points = 50;
 
 // The scene of n x n bodies of `kind` (rigid | wheel | swelling) as TOML.
-std::string scene_text(int n, const std::string& kind, int steps, bool bed, const std::string& output) {
+std::string scene_text(int n, const std::string& kind, int steps, bool bed, bool collision_time,
+                       const std::string& output) {
   const double length = spacing * n;
   const int cells = static_cast<int>(std::lround(length * cells_per_diameter / diameter));
   std::string text = fmt::format(R"([run]
@@ -66,9 +69,8 @@ kernel = "roma3"
       if (kind == "swelling")
         text += "[bodies.swelling]\nonset_time = 0.0\nrate = 0.1\nmax_diameter = 1.1\n";
     }
-  text += fmt::format(R"([contact]
-stiffness = 1.0e7
-restitution_coefficient = 0.5
+  text += collision_time ? "[contact]\nmodel = \"collision_time\"\n" : "[contact]\nstiffness = 1.0e7\n";
+  text += fmt::format(R"(restitution_coefficient = 0.5
 cds_radius = {}
 walls = true
 [output]
@@ -86,10 +88,10 @@ struct Figures {
   double fluid = 0, ib = 0, bodies_stage = 0, contacts = 0, output = 0, other = 0, wall = 0;
 };
 
-Figures run(int n, const std::string& kind, int steps, bool bed) {
+Figures run(int n, const std::string& kind, int steps, bool bed, bool collision_time) {
   const BenchScratch scratch("ibms_bench_scale");
   const std::string out = (scratch.path / "run.h5").string();
-  const Scene scene = read_scene_string(scene_text(n, kind, steps, bed, out), "bench_scale.toml");
+  const Scene scene = read_scene_string(scene_text(n, kind, steps, bed, collision_time, out), "bench_scale.toml");
   Simulation sim(scene);
   const RunSummary summary = run_simulation(sim, {out, /*quiet=*/true});
   const StageTimers& t = sim.timers();
@@ -130,27 +132,30 @@ std::vector<std::string> split(const std::string& text) {
 int main(int argc, char** argv) {
   std::vector<std::string> sizes{"4", "8", "16", "32"}, kinds{"rigid", "wheel", "swelling"};
   int steps = 40;
-  bool bed = false;
+  bool bed = false, collision_time = false;
   for (int a = 1; a < argc; ++a) {
     const std::string arg = argv[a];
     if (arg == "--n" && a + 1 < argc) sizes = split(argv[++a]);
     else if (arg == "--kinds" && a + 1 < argc) kinds = split(argv[++a]);
     else if (arg == "--steps" && a + 1 < argc) steps = std::atoi(argv[++a]);
     else if (arg == "--bed") bed = true;
+    else if (arg == "--collision-time") collision_time = true;
     else {
-      std::fprintf(stderr, "usage: bench_scale [--n 4,8,16,32] [--kinds rigid,wheel,swelling] [--steps 40] [--bed]\n");
+      std::fprintf(stderr, "usage: bench_scale [--n 4,8,16,32] [--kinds rigid,wheel,swelling] [--steps 40] [--bed] "
+                           "[--collision-time]\n");
       return 2;
     }
   }
   try {
-    std::printf("bench_scale: n x n bodies, D/h = %d, %d rim points, k_Dn = 1e7, series every 10 steps, %d steps%s, one "
-                "thread\n", cells_per_diameter, rim_points, steps, bed ? ", a resting bed" : "");
+    std::printf("bench_scale: n x n bodies, D/h = %d, %d rim points, %s, series every 10 steps, %d steps%s, one "
+                "thread\n", cells_per_diameter, rim_points,
+                collision_time ? "collision-time contacts (10 steps)" : "k_Dn = 1e7", steps, bed ? ", a resting bed" : "");
     std::printf("  %-9s %6s %8s | ms per step: %8s %8s %8s %8s %8s %8s | / fluid: %6s %6s %6s %6s\n", "kind", "bodies",
                 "cells", "fluid", "IB", "bodies", "contacts", "output", "run", "IB", "bodies", "output", "run");
     for (const std::string& kind : kinds) {
       std::vector<double> n_bodies, per_step, fluid_per_step;
       for (const std::string& size : sizes) {
-        const Figures f = run(std::atoi(size.c_str()), kind, steps, bed);
+        const Figures f = run(std::atoi(size.c_str()), kind, steps, bed, collision_time);
         const double per = 1e3 / static_cast<double>(f.steps);
         std::printf("  %-9s %6d %8d | %25.3f %8.3f %8.3f %8.3f %8.3f %8.3f | %16.2f %6.2f %6.2f %6.2f\n", kind.c_str(),
                     f.bodies, f.cells, f.fluid * per, f.ib * per, f.bodies_stage * per, f.contacts * per,
