@@ -301,6 +301,58 @@ def class_counts_table(order, metas, judged):
                       rows, size=None) + "}")
 
 
+def quantities_summary_section(out, order, metas, judged, fig_dir):
+    """All quantities with a reference value: predicted against reference (one scatter plot, the
+    reference's band as an error bar), and the bias and scatter per class of evidence (as the NIST
+    FDS validation guide summarises its quantities)."""
+    points = cases_mod.predicted_against_reference(judged)
+    if not points:
+        return
+    out.append(r"\section{All quantities against their references}\label{sec:quantities}")
+    out.append("Every judged figure whose target names a reference value (%d figures): the prediction "
+               "against the reference, the bar the target's band (published bounds or reading uncertainty, "
+               "else the case's own tolerance), in each quantity's units; a relative deviation $x$ of a "
+               "reference $v$ is drawn as $v(1+x)$. Below, the bias (mean of prediction / reference $-1$) and "
+               "its scatter (standard deviation) per class of evidence." % len(points))
+    import matplotlib.pyplot as plt
+    fig, ax = plt.subplots(figsize=(5.2, 4.4))
+    colours = {"pass": "tab:green", "miss": "tab:orange", "fail": "tab:red"}
+    for case, metric, v, y, lo, hi, verdict in points:
+        ax.errorbar([v], [y], xerr=[[max(v - lo, 0.0)], [max(hi - v, 0.0)]], fmt="o", ms=4,
+                    color=colours.get(verdict, "grey"), elinewidth=1, capsize=2)
+    values = [abs(p[2]) for p in points] + [abs(p[3]) for p in points]
+    lo_v, hi_v = max(min(values) * 0.5, 1e-6), max(values) * 2
+    ax.plot([lo_v, hi_v], [lo_v, hi_v], "k-", lw=0.8)
+    for f in (0.9, 1.1):
+        ax.plot([lo_v, hi_v], [f * lo_v, f * hi_v], "k:", lw=0.6)
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xlabel("reference value (its units)")
+    ax.set_ylabel("ibms (same units)")
+    for verdict, colour in colours.items():
+        ax.plot([], [], "o", color=colour, label=verdict)
+    ax.plot([], [], "k:", label="$\\pm$10 %")
+    ax.legend(loc="upper left", fontsize=8)
+    ax.tick_params(labelsize=8)
+    path = os.path.join(fig_dir, "quantities_summary.pdf")
+    fig.savefig(path)
+    plt.close(fig)
+    out.append(figure(path, "Every quantity with a reference value against it (green pass, orange miss, red "
+                            "FAIL; bars: the target's band; dotted: $\\pm$10\\,\\%).", height=0.4))
+    rows = []
+    for key, name in EVIDENCE_CLASSES:
+        dev = [p[3] / p[2] - 1.0 for p in points
+               if p[2] != 0 and evidence_class(metas.get(p[0], dict(mark="own", detail=""))) == key]
+        if not dev:
+            continue
+        mean = float(np.mean(dev))
+        spread = float(np.std(dev)) if len(dev) > 1 else 0.0
+        rows.append([esc(name), str(len(dev)), cases_mod.fmt_value(mean, True, True),
+                     cases_mod.fmt_value(spread, True)])
+    out.append(r"{\fontsize{8}{9}\selectfont" + "\n" +
+               longtable("lrrr", ["class of evidence", "figures", "bias", "scatter"], rows, size=None) + "}")
+
+
 def checks_by_case_section(out, order, metas, judged):
     out.append(r"\section{Validation checks by case}\label{sec:checks}")
     out.append("Every line of \\texttt{validation/results.csv} (last line per case and metric), grouped by "
@@ -629,6 +681,7 @@ def document(build, source, fig_dir):
     summary_page(out, order, metas, judged, params, slow_checks_not_run(build))
     out.append(r"\newpage\tableofcontents\newpage")
     checks_by_case_section(out, order, metas, judged)
+    quantities_summary_section(out, order, metas, judged, fig_dir)
     verification_section(out, conv, tests, fig_dir)
     bench.kernel_moment_section(out, build)
     solid.solid_section(out, build, fig_dir)

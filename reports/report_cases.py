@@ -196,10 +196,11 @@ class Target:
     from; `percent` formats relative figures."""
 
     def __init__(self, kind, tol=None, lo=None, hi=None, source="", percent=False, unit="", explicit=True,
-                 published=False):
-        # published: the source's own bounds or uncertainty (judged even over a passing check)
+                 published=False, reference=None):
+        # published: the source's own bounds or uncertainty (judged even over a passing check);
+        # reference: the reference value the band is about (the summary's scatter plot), if any
         self.kind, self.tol, self.lo, self.hi, self.explicit = kind, tol, lo, hi, explicit
-        self.published = published
+        self.published, self.reference = published, reference
         self.source, self.percent, self.unit = source, percent, unit
 
     def met(self, x):
@@ -244,7 +245,7 @@ def _dfg_relative(ctx, m, finest_only=True):
     if ref and isinstance(ref.get("lower"), float):
         v = ref["value"]
         return Target("band", lo=ref["lower"] / v - 1, hi=ref["upper"] / v - 1, percent=True, explicit=False,
-                      published=True, source="inside the published bounds %s" % cite("schafer1996")), None
+                      published=True, reference=v, source="inside the published bounds %s" % cite("schafer1996")), None
     return None, None
 
 
@@ -261,15 +262,15 @@ def _dkt_quantity(ref_key, tol_kind):
         v = ref["value"]
         if tol_kind == "speed":
             tol = ctx["crit"].get("dkt_speed_tolerance")
-            return Target("band", lo=v * (1 - tol), hi=v * (1 + tol), unit=" cm/s",
+            return Target("band", lo=v * (1 - tol), hi=v * (1 + tol), unit=" cm/s", reference=v,
                           source="%.3g\\,\\%% of %s cm/s, the trailing disk's tolerance (case\\_criteria.hpp) %s"
                                  % (100 * tol, num(v), cite("wan2006"))), None
         if isinstance(tol_kind, float):  # a README target in seconds
-            return Target("band", lo=v - tol_kind, hi=v + tol_kind, unit=" s",
+            return Target("band", lo=v - tol_kind, hi=v + tol_kind, unit=" s", reference=v,
                           source="%s s of %s s: the README's first-design target %s"
                                  % (num(tol_kind), num(v), cite("wan2006"))), None
         u = ref.get("reading_uncertainty", 0.0)
-        return Target("band", lo=v - u, hi=v + u, unit=" s", explicit=False, published=True,
+        return Target("band", lo=v - u, hi=v + u, unit=" s", explicit=False, published=True, reference=v,
                       source="%s $\\pm$ %s s: reading uncertainty %s"
                              % (num(v), num(u), cite("wan2006"))), None
     return rule
@@ -284,7 +285,7 @@ def _settling_speed(ctx, m):
     if not ref or tol is None:
         return None, None
     v = ref["value"]
-    return Target("band", lo=v * (1 - tol), hi=v * (1 + tol), unit=" cm/s",
+    return Target("band", lo=v * (1 - tol), hi=v * (1 + tol), unit=" cm/s", reference=v,
                   source="%.3g\\,\\%% of %s cm/s %s (case\\_criteria.hpp)" % (100 * tol, num(v), cite("wan2006"))), None
 
 
@@ -478,3 +479,23 @@ def mark_cell(mark):
 def measured_text(row):
     x = _float(row["measured"])
     return fmt_value(x, row["percent"], signed=row["percent"])
+
+
+def predicted_against_reference(judged):
+    """Every judged figure whose target carries its reference value: (case, metric, reference,
+    predicted, band low, band high, verdict), the band and the prediction in the reference's units
+    (a relative deviation x of a reference v predicts v (1 + x))."""
+    points = []
+    for folder, c in judged.items():
+        for r in c["rows"]:
+            t = r.get("target")
+            if t is None or t.reference is None or t.kind != "band":
+                continue
+            x, v = _float(r["measured"]), t.reference
+            if not math.isfinite(x):
+                continue
+            if t.percent:
+                points.append((folder, r["metric"], v, v * (1 + x), v * (1 + t.lo), v * (1 + t.hi), r["verdict"]))
+            else:
+                points.append((folder, r["metric"], v, x, t.lo, t.hi, r["verdict"]))
+    return points
