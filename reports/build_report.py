@@ -30,6 +30,7 @@ import report_bench as bench  # noqa: E402
 import report_solid as solid  # noqa: E402
 import report_sweeps as sweeps  # noqa: E402
 import report_cases as cases_mod  # noqa: E402
+import report_trace as trace  # noqa: E402
 from report_latex import esc, num, status_cell, figure, longtable, tt  # noqa: E402
 
 PREAMBLE = r"""\documentclass[10pt,a4paper]{article}
@@ -692,6 +693,7 @@ def document(build, source, fig_dir):
     bench.overhead_section(out, build)
     bench.forcing_passes_section(out, build, source)
     sweeps.sweeps_section(out, build, fig_dir)
+    trace.traceability_section(out, build, source, tests)
     environment_section(out, env, tests)
     bench.run_times_section(out, tests)
     known_limitations(out, order, judged)

@@ -1,0 +1,149 @@
+"""Traceability (after MOOSE's requirement traceability matrix): each section of docs/method.md is a
+requirement, identified by its number (M1.9, M3.7, MA8, ...); the tests that cite it (a 'method.md §N'
+in the test's own sources, as test_method_citations checks them) trace to it, each with its
+verdict at this build from ctest's own logs; the sections no test cites are listed. Then every test
+of the build with the claim its source states first and its verdict. Nothing is hard-coded: the
+sections come from docs/method.md, the tests and their sources from ctest's list in the build."""
+import glob
+import json
+import os
+import re
+import subprocess
+from collections import OrderedDict
+
+from report_latex import esc, longtable, tt
+
+CITATION = re.compile(r"method\.md\s*§\s*(A?\d+(?:\.\d+)?[a-z]?)")
+
+
+def method_sections(source):
+    """OrderedDict number -> title of docs/method.md's numbered headings (## 1., ### 1.9, ## A8.)."""
+    sections = OrderedDict()
+    with open(os.path.join(source, "docs", "method.md"), encoding="utf-8") as f:
+        for line in f:
+            m = re.match(r"#{2,3} (A?\d+(?:\.\d+)?[a-z]?)\.? (.*)", line.rstrip())
+            if m:
+                sections[m.group(1)] = re.sub(r"\s*\[[^\]]*\]\s*$", "", m.group(2))
+    return sections
+
+
+def ctest_tests(build):
+    """[(name, labels, command)] of every test the build defines."""
+    try:
+        listing = subprocess.run(["ctest", "--show-only=json-v1"], cwd=build, capture_output=True, text=True,
+                                 timeout=60)
+        tests = json.loads(listing.stdout).get("tests", [])
+    except (OSError, ValueError, subprocess.SubprocessError):
+        return []
+    out = []
+    for t in tests:
+        labels = [v for p in t.get("properties", []) if p.get("name") == "LABELS" for v in p.get("value", [])]
+        out.append((t["name"], labels, t.get("command", [])))
+    return out
+
+
+def test_sources(name, command, source):
+    """The source files of a test: the scripts and sources its command names, else the program's
+    source (verification/**/<program>.cpp, or a case's check.cpp)."""
+    found = []
+    for arg in command:
+        if arg.startswith(source) and os.path.isfile(arg) and re.search(r"\.(sh|py|cpp|cmake)$", arg):
+            found.append(arg)
+    if command:
+        program = os.path.basename(command[0])
+        found += glob.glob(os.path.join(source, "verification", "**", program + ".cpp"), recursive=True)
+        found += glob.glob(os.path.join(source, "bench", program + ".cpp"))
+        if program.endswith("_check"):
+            case_dir = os.path.join(source, "validation", "*")
+            found += [p for p in glob.glob(os.path.join(case_dir, "check.cpp"))
+                      if program.split("_")[0] in p]
+    return sorted(set(found))
+
+
+def first_claim(paths):
+    """The first sentence of the first source's leading comment (its stated claim)."""
+    for path in paths:
+        try:
+            with open(path, encoding="utf-8", errors="replace") as f:
+                lines = f.read().splitlines()
+        except OSError:
+            continue
+        text = []
+        for line in lines:
+            s = line.strip()
+            if s.startswith("#!") or (not text and not s):
+                continue
+            m = re.match(r"(//+|#+)\s?(.*)", s)
+            if not m:
+                break
+            text.append(m.group(2))
+        claim = " ".join(text).strip()
+        claim = re.sub(r"^Claims?(,? labels? \w+)?( \([^)]*\))?:\s*(- )?", "", claim)
+        if claim:
+            sentence = re.split(r"(?<=[.;])\s", claim, 1)[0]
+            return sentence if len(sentence) <= 220 else sentence[:217].rsplit(" ", 1)[0] + " ..."
+    return ""
+
+
+def cited_sections(paths):
+    cited = set()
+    for path in paths:
+        try:
+            with open(path, encoding="utf-8", errors="replace") as f:
+                cited.update(CITATION.findall(f.read()))
+        except OSError:
+            continue
+    return cited
+
+
+def traceability_section(out, build, source, ctest_results):
+    tests = ctest_tests(build)
+    if not tests:
+        return
+    status = {t["name"]: t["status"] for t in ctest_results}
+    sections = method_sections(source)
+    traced = OrderedDict((n, []) for n in sections)
+    rows = []
+    for name, labels, command in tests:
+        paths = test_sources(name, command, source)
+        verdict = status.get(name, "not run")
+        for n in cited_sections(paths):
+            key = n if n in traced else n.split(".")[0]
+            if key in traced:
+                traced[key].append((name, verdict))
+        rows.append((name, labels, first_claim(paths), verdict))
+    out.append(r"\section{Traceability: method sections, tests, verdicts}\label{sec:trace}")
+    n_run = sum(1 for r in rows if r[3] != "not run")
+    out.append("Each numbered section of \\texttt{docs/method.md} is a requirement, named M\\textit{n}; a test traces "
+               "to it when its sources cite it (\\texttt{method.md \\S n}, the citations "
+               "\\texttt{test\\_method\\_citations} keeps valid). Verdicts are ctest's own for this build "
+               "(\\texttt{Testing/Temporary/LastTest*.log}: %d of the build's %d tests ran; \\emph{not run}: "
+               "not in the logs, e.g.\\ a label this level leaves out)." % (n_run, len(rows)))
+
+    def verdict_text(v):
+        return {"pass": r"\textcolor{passgreen}{pass}", "FAIL": r"\textcolor{red}{\textbf{FAIL}}"}.get(v, esc(v))
+
+    matrix = []
+    untested = []
+    for n, title in sections.items():
+        cited = traced[n]
+        if not cited:
+            untested.append("M%s" % n)
+            continue
+        passed = sum(1 for _, v in cited if v == "pass")
+        failed = sum(1 for _, v in cited if v == "FAIL")
+        names = ", ".join(tt(t) for t, _ in sorted(set(cited))[:6]) + (" (+%d)" % (len(set(cited)) - 6)
+                                                                       if len(set(cited)) > 6 else "")
+        matrix.append(["M%s" % esc(n), esc(title[:60]), names, "%d / %d%s" % (passed, len(set(cited)),
+                                                                             ", %d FAIL" % failed if failed else "")])
+    out.append(r"{\fontsize{7}{8}\selectfont" + "\n" +
+               longtable(r"l>{\raggedright\arraybackslash}p{4.2cm}>{\raggedright\arraybackslash}p{8.4cm}r",
+                         ["req.", "method section", "tests citing it", "pass / tests"], matrix, size=None) + "}")
+    out.append("\\noindent\\emph{Sections no test cites} (%d of %d): %s.\n" %
+               (len(untested), len(sections), ", ".join(untested) if untested else "none"))
+    table = [[tt(name), esc(", ".join(labels)), esc(claim) or "--", verdict_text(v)] for name, labels, claim, v in rows]
+    out.append(r"\subsection*{Every test with its stated claim}")
+    out.append(r"{\fontsize{7}{8}\selectfont" + "\n" +
+               longtable(r">{\raggedright\arraybackslash}p{4.2cm}l>{\raggedright\arraybackslash}p{9.0cm}l",
+                         ["test", "labels", "claim (the first sentence of its source's header)", "verdict"], table,
+                         size=None) + "}")
