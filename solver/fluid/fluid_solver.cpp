@@ -28,6 +28,7 @@ double upwind_kappa(ConvectionScheme scheme) {
   switch (scheme) {
     case ConvectionScheme::quick: return 0.5;
     case ConvectionScheme::fromm: return 0.0;
+    case ConvectionScheme::upwind3: return 1.0 / 3.0;
     case ConvectionScheme::central: break;
   }
   return 1.0;
@@ -37,6 +38,7 @@ const char* convection_name(ConvectionScheme scheme) {
   switch (scheme) {
     case ConvectionScheme::quick: return "QUICK";
     case ConvectionScheme::fromm: return "Fromm";
+    case ConvectionScheme::upwind3: return "third-order upwind-biased (kappa 1/3)";
     case ConvectionScheme::central: break;
   }
   return "central";

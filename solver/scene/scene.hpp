@@ -54,13 +54,13 @@ struct DomainSpec {
 };
 
 struct FluidSpec {
-  enum class Convection { central, quick, fromm };
+  enum class Convection { central, quick, fromm, upwind3 };
   enum class WallClosure { linear, quadratic };
   double density = 1.0;              // rho_f [mass/length^3]
   double kinematic_viscosity = 0.01; // nu [length^2/time]
   std::array<double, 2> gravity{0.0, 0.0};  // g [length/time^2]; acts on bodies only (docs/method.md §2.6)
   // Spatial options (fluid/fluid_solver.hpp, FluidSchemes; docs/fluid-accuracy.md): convected face
-  // values central | quick | fromm, and the viscous wall closure linear | quadratic.
+  // values central | quick | fromm | upwind3, and the viscous wall closure linear | quadratic.
   Convection convection = Convection::central;
   WallClosure wall_closure = WallClosure::linear;
 };

@@ -94,7 +94,8 @@ IBMS_SCENE_CHOICES(RunSpec::OnInstability, {RunSpec::OnInstability::stop, "stop"
 IBMS_SCENE_CHOICES(RunSpec::FftPlans, {RunSpec::FftPlans::measure, "measure"},
                    {RunSpec::FftPlans::estimate, "estimate"});
 IBMS_SCENE_CHOICES(FluidSpec::Convection, {FluidSpec::Convection::central, "central"},
-                   {FluidSpec::Convection::quick, "quick"}, {FluidSpec::Convection::fromm, "fromm"});
+                   {FluidSpec::Convection::quick, "quick"}, {FluidSpec::Convection::fromm, "fromm"},
+                   {FluidSpec::Convection::upwind3, "upwind3"});
 IBMS_SCENE_CHOICES(FluidSpec::WallClosure, {FluidSpec::WallClosure::linear, "linear"},
                    {FluidSpec::WallClosure::quadratic, "quadratic"});
 IBMS_SCENE_CHOICES(WallSpec::Kind, {WallSpec::Kind::wall, "wall"}, {WallSpec::Kind::inflow, "inflow"},

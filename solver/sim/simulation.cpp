@@ -117,6 +117,7 @@ ConvectionScheme convection_scheme(FluidSpec::Convection convection) {
   switch (convection) {
     case FluidSpec::Convection::quick: return ConvectionScheme::quick;
     case FluidSpec::Convection::fromm: return ConvectionScheme::fromm;
+    case FluidSpec::Convection::upwind3: return ConvectionScheme::upwind3;
     case FluidSpec::Convection::central: break;
   }
   return ConvectionScheme::central;

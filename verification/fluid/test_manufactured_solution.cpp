@@ -204,6 +204,13 @@ BOOST_AUTO_TEST_CASE(fromm_convection_and_quadratic_wall_closure_keep_second_ord
                             {16, 32, 64, 128, 256});
 }
 
+// The third-order upwind-biased face values (kappa = 1/3) with the linear closure (the DFG 2D-2
+// scene's options) keep the same orders.
+BOOST_AUTO_TEST_CASE(upwind3_convection_keeps_second_order) {
+  options_keep_second_order({ConvectionScheme::upwind3, /*quadratic_wall=*/false}, "upwind3 + linear wall",
+                            {16, 32, 64, 128, 256});
+}
+
 // The quadratic closure's single sweep from the explicit estimate (complete_prediction, taken up to
 // nu dt / h^2 = FluidSchemes::single_sweep_viscous_number): at nu = 0.004 on 64^2 every step of the
 // time study below has nu dt / h^2 <= 0.205, so every step takes it. The velocity stays second

@@ -104,3 +104,28 @@ BOOST_AUTO_TEST_CASE(fromm_face_values_amplify_by_their_upwind_biased_factor_and
     BOOST_TEST(limit <= 0.50);
   }
 }
+
+// The third-order upwind-biased face values (kappa = 1/3, the DFG 2D-2 scene's scheme): the
+// solver's growth factor is the analysed one, and AB2 + CN keeps them stable up to a CFL number
+// of about 0.58 without diffusion, more with it (the scene's run.cfl = 0.5 lies below): below the
+// limit at C = 0.5, above it at C = 0.65 without diffusion.
+BOOST_AUTO_TEST_CASE(upwind3_face_values_amplify_by_their_upwind_biased_factor_and_allow_cfl_one_half) {
+  const double kappa = upwind_kappa(ConvectionScheme::upwind3);
+  BOOST_TEST(std::abs(kappa - 1.0 / 3.0) < 1e-15);
+  struct Case { double cfl, viscous_number; int waves; bool grows; };
+  const Case cases[] = {{0.5, 0.0, 3, false}, {0.65, 0.0, 6, true}, {0.5, 0.05, 3, false}, {0.3, 0.0, 4, false}};
+  for (const Case& c : cases) {
+    const double theta = 2 * pi * c.waves / 16;
+    const double measured = measured_factor(c.cfl, c.viscous_number, c.waves, ConvectionScheme::upwind3);
+    const double theory = ab2_cn_amplification(c.cfl, c.viscous_number, theta, kappa);
+    BOOST_TEST_MESSAGE("upwind3, C = " << c.cfl << ", D = " << c.viscous_number << ", theta = " << theta
+                                       << ": measured |G| " << measured << ", theory " << theory);
+    BOOST_TEST(std::abs(measured - theory) < 1e-9);
+    BOOST_TEST((measured > 1.0) == c.grows);
+  }
+  for (double cell_reynolds : {0.5, 4.0, 16.0, 1e6}) {
+    const double limit = ab2_cn_cfl_limit(cell_reynolds, kappa);
+    BOOST_TEST_MESSAGE("upwind3: CFL limit at Re_h = " << cell_reynolds << ": " << limit);
+    BOOST_TEST(limit >= 0.55);
+  }
+}
