@@ -9,6 +9,7 @@
 #include <limits>
 #include <vector>
 
+#include "core/options.hpp"
 #include "solid/mass_spring_body.hpp"
 
 namespace ibms {
@@ -20,17 +21,8 @@ namespace ibms {
 //         with M the point mass); a stiff body then rebounds with far less damping than e_D says.
 enum class ContactEffectiveMass { body, point };
 
-// How k (and with it c) of a contact is chosen.
-//  linear:         k = k_Dn of the scene for every contact (docs/method.md §1.9, the papers' law);
-//  collision_time: k = m_eff (pi^2 + ln^2 e_D) / T_c^2 per contact, T_c = collision_steps fluid steps,
-//                  so that a single-pair contact lasts T_c whatever m_eff (docs/method.md §5.5; Kempe &
-//                  Froehlich 2012, Biegert, Vowinckel & Meiburg 2017). c follows from e_D as for linear.
-enum class ContactLawKind { linear, collision_time };
-// Step of the contacts' inner loop (contact_subcycle.hpp). listed_pairs: steps_per_contact steps per
-// contact duration of the fastest contact mode the listed CDS pairs can form, bounded from above
-// by Collatz-Wielandt (a single pair: A8's t_c / steps_per_contact exactly); lightest_point: the
-// group's bound of contact_substep (the lightest CDS point in active_pairs_safety pairs at once).
-enum class InnerStepBound { listed_pairs, lightest_point };
+// How k (and with it c) of a contact is chosen, ContactLawKind (linear | collision_time), and the
+// step of the inner loop, InnerStepBound (listed_pairs | lightest_point): core/options.hpp.
 
 struct ContactModel {
   ContactLawKind law = ContactLawKind::linear;

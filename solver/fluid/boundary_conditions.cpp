@@ -67,15 +67,7 @@ Side opposite_side(Side s) {
 
 }  // namespace
 
-const char* side_kind_name(SideKind kind) {
-  switch (kind) {
-    case SideKind::wall: return "wall";
-    case SideKind::inflow: return "inflow";
-    case SideKind::outflow: return "outflow";
-    case SideKind::periodic: return "periodic";
-  }
-  return "wall";
-}
+const char* side_kind_name(SideKind kind) { return option_name(kind).data(); }
 
 double TimeFactor::at(double time) const {
   switch (kind) {

@@ -20,6 +20,7 @@
 
 #include "core/fields.hpp"
 #include "core/grid.hpp"
+#include "core/options.hpp"
 
 namespace ibms {
 
@@ -31,12 +32,12 @@ struct WallMotion {
   bool is_moving() const { return speed != 0.0; }
 };
 
-enum class SideKind { wall, inflow, outflow, periodic };
-const char* side_kind_name(SideKind kind);
+const char* side_kind_name(SideKind kind);  // its scene name (core/options.hpp)
 
 // Time factor of an inflow: 1; min(t / ramp_time, 1); or offset + amplitude sin(2 pi t / period).
 struct TimeFactor {
-  enum class Kind { constant, ramp, sinusoidal } kind = Kind::constant;
+  using Kind = TimeFactorKind;
+  Kind kind = Kind::constant;
   double ramp_time = 1.0;   // [time]
   double offset = 0.0;      // [-]
   double amplitude = 1.0;   // [-]
@@ -48,7 +49,8 @@ struct TimeFactor {
 // Shape along the side (s in [0, L] from its low end): uniform 1, parabolic 4 s (L - s) / L^2
 // (then `velocity` is the peak; the mean is 2/3 of it).
 struct InflowProfile {
-  enum class Shape { uniform, parabolic } shape = Shape::uniform;
+  using Shape = InflowShape;
+  Shape shape = Shape::uniform;
   double velocity = 0.0;  // [length/time], > 0 into the box
   TimeFactor factor;
   double at(double s, double side_length, double time) const;

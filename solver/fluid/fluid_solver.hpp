@@ -18,6 +18,7 @@
 
 #include "core/fields.hpp"
 #include "core/grid.hpp"
+#include "core/options.hpp"
 #include "fluid/boundary_conditions.hpp"
 #include "fluid/spectral_solver.hpp"
 
@@ -75,7 +76,6 @@ struct ProjectionStats {
 //    above it (each sweep shrinks the defect by < 4/9 at any viscous number; an explicit AB2 treatment of the
 //    difference is unstable above nu dt / h^2 ~ 0.5 on the manufactured solution).
 // Measured on the Re 1000 cavity against Botella & Peyret (docs/fluid-accuracy.md).
-enum class ConvectionScheme { central, quick, fromm, upwind3 };
 
 // kappa of an upwind-biased scheme (convection_upwind_biased); central: 1 (the central mean).
 double upwind_kappa(ConvectionScheme scheme);

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/grid.hpp"
+#include "core/options.hpp"
 
 #include <string>
 
@@ -16,13 +17,7 @@ namespace ibms {
 
 enum class SpectralBoundary { periodic, neumann, dirichlet };
 
-// How a SpectralSolver plans its transforms. `measure` (FFTW_MEASURE) times candidate algorithms
-// and keeps the fastest: two processes may pick different ones, which differ at round-off, unless
-// they share wisdom (the checkpoint's, or the cache of fluid/fft_wisdom_cache.hpp). `estimate`
-// (FFTW_ESTIMATE) picks them from the sizes alone, the same at every run of one binary on one
-// machine, provided the process holds no measured wisdom for those sizes (FFTW uses wisdom of a
-// stronger rigour for a weaker request): `ibms run` loads no cache for such a scene.
-enum class FftPlanning { measure, estimate };
+// FftPlanning (measure | estimate): core/options.hpp.
 
 struct SpectralSolveStats {
   double removed_mean = 0.0;  // mean of r projected out when a I + b L is singular [units of r]

@@ -69,15 +69,7 @@ double bkp6_phi(double r) {
 
 double bkp6_second_moment() { return 59.0/60.0 - std::sqrt(29.0)/20.0; }
 
-std::string kernel_name(KernelKind kind) {
-  switch (kind) {
-    case KernelKind::roma3: return "roma3";
-    case KernelKind::peskin4: return "peskin4";
-    case KernelKind::cosine4: return "cosine4";
-    case KernelKind::bkp6: return "bkp6";
-  }
-  return "unknown";
-}
+std::string kernel_name(KernelKind kind) { return std::string(option_name(kind)); }
 
 int kernel_support(KernelKind kind) {
   switch (kind) {

@@ -6,13 +6,14 @@
 #include <array>
 #include <string>
 
+#include "core/options.hpp"
+
 namespace ibms {
 
-enum class KernelKind { roma3, peskin4, cosine4, bkp6 };
 inline constexpr std::array<KernelKind, 4> all_kernel_kinds = {
     KernelKind::roma3, KernelKind::peskin4, KernelKind::cosine4, KernelKind::bkp6};
 
-std::string kernel_name(KernelKind kind);
+std::string kernel_name(KernelKind kind);  // its scene name (core/options.hpp)
 
 // Number of grid nodes a kernel touches in one direction [-]: 3, 4, 4, 6.
 int kernel_support(KernelKind kind);

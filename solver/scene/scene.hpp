@@ -10,12 +10,15 @@
 #include <string>
 #include <vector>
 
+#include "core/options.hpp"
+#include "solid/swelling_schedule.hpp"
+
 namespace ibms {
 
 struct RunSpec {
   enum class SolidSubsteps { per_group, global };
   enum class OnInstability { stop, warn };
-  enum class FftPlans { measure, estimate };
+  using FftPlans = FftPlanning;  // core/options.hpp
   double end_time = 1.0;             // stop time [time]
   double time_step = 0.0;            // fixed dt [time]; 0 selects the adaptive step
   double cfl = 0.5;                  // adaptive dt = cfl / max(|u|/dx + |v|/dy) [-]
@@ -54,7 +57,7 @@ struct DomainSpec {
 };
 
 struct FluidSpec {
-  enum class Convection { central, quick, fromm, upwind3 };
+  using Convection = ConvectionScheme;  // core/options.hpp
   enum class WallClosure { linear, quadratic };
   double density = 1.0;              // rho_f [mass/length^3]
   double kinematic_viscosity = 0.01; // nu [length^2/time]
@@ -69,9 +72,9 @@ struct FluidSpec {
 // stopping at stop_time), an inflow (normal velocity profile times a time factor), an outflow
 // (zero normal gradient, p = 0) or periodic (both sides of a direction; domain.periodic_x/y).
 struct WallSpec {
-  enum class Kind { wall, inflow, outflow, periodic };
-  enum class Profile { uniform, parabolic };
-  enum class TimeFactor { constant, ramp, sinusoidal };
+  using Kind = SideKind;  // core/options.hpp, as the three below
+  using Profile = InflowShape;
+  using TimeFactor = TimeFactorKind;
   Kind kind = Kind::wall;
   double speed = 0.0;                // wall: tangential speed [length/time]; +x on bottom/top, +y on left/right
   double stop_time = std::numeric_limits<double>::infinity();  // wall stops (speed 0) from here [time]
@@ -89,7 +92,7 @@ struct WallsSpec {
 };
 
 struct IbmSpec {
-  enum class Kernel { roma3, peskin4, cosine4, bkp6 };
+  using Kernel = KernelKind;  // core/options.hpp
   enum class ForcingStage { explicit_estimate, implicit_prediction };
   enum class InnerFluidInertia { kempe, none };
   enum class Coupling { uhlmann, no_slip };
@@ -133,12 +136,8 @@ struct IbmSpec {
   double virtual_mass_coefficient = 1.0;
 };
 
-struct SwellingSpec {
-  bool enabled = false;
-  double onset_time = 0.0;           // swelling starts [time]
-  double rate = 0.0;                 // dD/dt [length/time]
-  double max_diameter = 0.0;         // swelling stops at this diameter [length]
-};
+// A body's [bodies.swelling] table: the swelling law's parameters (solid/swelling_schedule.hpp).
+using SwellingSpec = SwellingLaw;
 
 // A body of one of three kinds (docs/design.md §11), chosen by `kind`:
 //  mass_spring  the papers' deformable wheel (springs, swelling, sub-steps);
@@ -147,9 +146,9 @@ struct SwellingSpec {
 //               theta(t) = Omega t + Theta sin(2 pi t / T + phase); the fluid is forced to it.
 // scene/scene_reader.cpp rejects keys that do not belong to the kind (scene_schema.hpp).
 struct BodySpec {
-  enum class Kind { mass_spring, rigid, prescribed };
-  enum class MassLumping { equal, uniform_disk };
-  enum class SpringIntegrator { automatic, explicit_euler, implicit_euler };  // auto | explicit | implicit
+  using Kind = BodyKind;  // core/options.hpp, as the two below
+  using MassLumping = ibms::MassLumping;
+  using SpringIntegrator = ibms::SpringIntegrator;  // auto | explicit | implicit
   Kind kind = Kind::mass_spring;     // mass_spring | rigid | prescribed
   std::array<double, 2> centre{0.0, 0.0};          // [length]
   std::array<double, 2> velocity{0.0, 0.0};        // initial (prescribed: constant) velocity [length/time]
@@ -179,8 +178,8 @@ struct BodySpec {
 
 struct ContactSpec {
   enum class TimeStepping { inner_loop, shared };
-  enum class Model { linear, collision_time };
-  enum class InnerStep { listed_pairs, lightest_point };
+  using Model = ContactLawKind;  // core/options.hpp, as the one below
+  using InnerStep = InnerStepBound;
   double stiffness = 0.0;            // k_Dn [force/length^2 per unit depth]; 0 = contacts off
   double restitution_coefficient = 1.0;  // e_D in (0, 1] [-]
   double cds_radius = 0.0;           // absolute CDS radius [length]; 0: use cds_radius_fraction

@@ -69,66 +69,40 @@ inline constexpr std::string_view output_keys[] = {"file", "series_every", "snap
                                                    "centreline_profiles", "progress", "checkpoint_every",
                                                    "probes"};
 
-// One scene name of an enum value.
+// One scene name of an enum value, and Choices<Enum>::table: every value of the enum with its scene
+// name, in the order messages list them. The options the modules act on have their tables beside
+// their enums (core/options.hpp); those below are read by the simulation alone.
 template <class Enum>
-struct Choice {
-  Enum value;
-  std::string_view name;
-};
-
-// Choices<Enum>::table: every value of the enum with its scene name, in the order messages list them.
+using Choice = OptionName<Enum>;
 template <class Enum>
-struct Choices;
+using Choices = OptionNames<Enum>;
 
-#define IBMS_SCENE_CHOICES(Enum, ...)                                        \
-  template <>                                                                \
-  struct Choices<Enum> {                                                     \
-    static constexpr Choice<Enum> table[] = {__VA_ARGS__};                   \
-  }
+}  // namespace ibms::scene_schema
 
-IBMS_SCENE_CHOICES(RunSpec::SolidSubsteps, {RunSpec::SolidSubsteps::per_group, "per_group"},
+namespace ibms {
+
+IBMS_OPTION_NAMES(RunSpec::SolidSubsteps, {RunSpec::SolidSubsteps::per_group, "per_group"},
                    {RunSpec::SolidSubsteps::global, "global"});
 // run.on_body_instability and run.on_fluid_instability.
-IBMS_SCENE_CHOICES(RunSpec::OnInstability, {RunSpec::OnInstability::stop, "stop"},
+IBMS_OPTION_NAMES(RunSpec::OnInstability, {RunSpec::OnInstability::stop, "stop"},
                    {RunSpec::OnInstability::warn, "warn"});
-IBMS_SCENE_CHOICES(RunSpec::FftPlans, {RunSpec::FftPlans::measure, "measure"},
-                   {RunSpec::FftPlans::estimate, "estimate"});
-IBMS_SCENE_CHOICES(FluidSpec::Convection, {FluidSpec::Convection::central, "central"},
-                   {FluidSpec::Convection::quick, "quick"}, {FluidSpec::Convection::fromm, "fromm"},
-                   {FluidSpec::Convection::upwind3, "upwind3"});
-IBMS_SCENE_CHOICES(FluidSpec::WallClosure, {FluidSpec::WallClosure::linear, "linear"},
+IBMS_OPTION_NAMES(FluidSpec::WallClosure, {FluidSpec::WallClosure::linear, "linear"},
                    {FluidSpec::WallClosure::quadratic, "quadratic"});
-IBMS_SCENE_CHOICES(WallSpec::Kind, {WallSpec::Kind::wall, "wall"}, {WallSpec::Kind::inflow, "inflow"},
-                   {WallSpec::Kind::outflow, "outflow"}, {WallSpec::Kind::periodic, "periodic"});
-IBMS_SCENE_CHOICES(WallSpec::Profile, {WallSpec::Profile::uniform, "uniform"},
-                   {WallSpec::Profile::parabolic, "parabolic"});
-IBMS_SCENE_CHOICES(WallSpec::TimeFactor, {WallSpec::TimeFactor::constant, "constant"},
-                   {WallSpec::TimeFactor::ramp, "ramp"}, {WallSpec::TimeFactor::sinusoidal, "sinusoidal"});
-IBMS_SCENE_CHOICES(IbmSpec::Kernel, {IbmSpec::Kernel::roma3, "roma3"}, {IbmSpec::Kernel::peskin4, "peskin4"},
-                   {IbmSpec::Kernel::cosine4, "cosine4"}, {IbmSpec::Kernel::bkp6, "bkp6"});
-IBMS_SCENE_CHOICES(IbmSpec::ForcingStage, {IbmSpec::ForcingStage::explicit_estimate, "explicit_estimate"},
+IBMS_OPTION_NAMES(IbmSpec::ForcingStage, {IbmSpec::ForcingStage::explicit_estimate, "explicit_estimate"},
                    {IbmSpec::ForcingStage::implicit_prediction, "implicit_prediction"});
-IBMS_SCENE_CHOICES(IbmSpec::InnerFluidInertia, {IbmSpec::InnerFluidInertia::kempe, "kempe"},
+IBMS_OPTION_NAMES(IbmSpec::InnerFluidInertia, {IbmSpec::InnerFluidInertia::kempe, "kempe"},
                    {IbmSpec::InnerFluidInertia::none, "none"});
-IBMS_SCENE_CHOICES(IbmSpec::Coupling, {IbmSpec::Coupling::uhlmann, "uhlmann"},
+IBMS_OPTION_NAMES(IbmSpec::Coupling, {IbmSpec::Coupling::uhlmann, "uhlmann"},
                    {IbmSpec::Coupling::no_slip, "no_slip"});
-IBMS_SCENE_CHOICES(IbmSpec::ConstrainedVelocity, {IbmSpec::ConstrainedVelocity::cells, "cells"},
+IBMS_OPTION_NAMES(IbmSpec::ConstrainedVelocity, {IbmSpec::ConstrainedVelocity::cells, "cells"},
                    {IbmSpec::ConstrainedVelocity::faces, "faces"});
-IBMS_SCENE_CHOICES(BodySpec::Kind, {BodySpec::Kind::mass_spring, "mass_spring"}, {BodySpec::Kind::rigid, "rigid"},
-                   {BodySpec::Kind::prescribed, "prescribed"});
-IBMS_SCENE_CHOICES(BodySpec::MassLumping, {BodySpec::MassLumping::equal, "equal"},
-                   {BodySpec::MassLumping::uniform_disk, "uniform_disk"});
-IBMS_SCENE_CHOICES(BodySpec::SpringIntegrator, {BodySpec::SpringIntegrator::automatic, "auto"},
-                   {BodySpec::SpringIntegrator::explicit_euler, "explicit"},
-                   {BodySpec::SpringIntegrator::implicit_euler, "implicit"});
-IBMS_SCENE_CHOICES(ContactSpec::TimeStepping, {ContactSpec::TimeStepping::inner_loop, "inner_loop"},
+IBMS_OPTION_NAMES(ContactSpec::TimeStepping, {ContactSpec::TimeStepping::inner_loop, "inner_loop"},
                    {ContactSpec::TimeStepping::shared, "shared"});
-IBMS_SCENE_CHOICES(ContactSpec::InnerStep, {ContactSpec::InnerStep::listed_pairs, "listed_pairs"},
-                   {ContactSpec::InnerStep::lightest_point, "lightest_point"});
-IBMS_SCENE_CHOICES(ContactSpec::Model, {ContactSpec::Model::linear, "linear"},
-                   {ContactSpec::Model::collision_time, "collision_time"});
 
-#undef IBMS_SCENE_CHOICES
+}  // namespace ibms
+
+namespace ibms::scene_schema {
+
 
 // The scene names of an enum's values, in table order (for "must be one of ..." messages).
 template <class Enum>
@@ -142,9 +116,7 @@ inline constexpr auto choice_names = [] {
 // The scene name of a value (every enumerator is in its table).
 template <class Enum>
 constexpr std::string_view name_of(Enum value) {
-  for (const Choice<Enum>& choice : Choices<Enum>::table)
-    if (choice.value == value) return choice.name;
-  return "?";
+  return option_name(value);
 }
 
 // The value a scene name stands for; empty for a name not in the table.

@@ -25,21 +25,11 @@ FluidBoundaries boundaries_from_scene(const Scene& scene) {
     BoundarySide b;
     b.speed = w.speed;
     b.stop_time = w.stop_time;
-    switch (w.kind) {
-      case WallSpec::Kind::wall: b.kind = SideKind::wall; break;
-      case WallSpec::Kind::inflow: b.kind = SideKind::inflow; break;
-      case WallSpec::Kind::outflow: b.kind = SideKind::outflow; break;
-      case WallSpec::Kind::periodic: b.kind = SideKind::periodic; break;
-    }
-    b.inflow.shape = w.profile == WallSpec::Profile::parabolic ? InflowProfile::Shape::parabolic
-                                                               : InflowProfile::Shape::uniform;
+    b.kind = w.kind;
+    b.inflow.shape = w.profile;
     b.inflow.velocity = w.velocity;
     TimeFactor& f = b.inflow.factor;
-    switch (w.time_factor) {
-      case WallSpec::TimeFactor::constant: f.kind = TimeFactor::Kind::constant; break;
-      case WallSpec::TimeFactor::ramp: f.kind = TimeFactor::Kind::ramp; break;
-      case WallSpec::TimeFactor::sinusoidal: f.kind = TimeFactor::Kind::sinusoidal; break;
-    }
+    f.kind = w.time_factor;
     f.ramp_time = w.ramp_time;
     f.offset = w.factor_offset;
     f.amplitude = w.factor_amplitude;
@@ -58,29 +48,17 @@ FluidBoundaries boundaries_from_scene(const Scene& scene) {
 
 namespace {
 
-KernelKind kernel_kind(IbmSpec::Kernel kernel) {
-  switch (kernel) {
-    case IbmSpec::Kernel::roma3: return KernelKind::roma3;
-    case IbmSpec::Kernel::peskin4: return KernelKind::peskin4;
-    case IbmSpec::Kernel::cosine4: return KernelKind::cosine4;
-    case IbmSpec::Kernel::bkp6: return KernelKind::bkp6;
-  }
-  throw std::invalid_argument("unknown ibm.kernel");
-}
-
 // The contact parameters of the scene's [contact] section.
 ContactModel contact_model_of(const ContactSpec& spec) {
   ContactModel model;
-  model.law = spec.model == ContactSpec::Model::collision_time ? ContactLawKind::collision_time
-                                                                : ContactLawKind::linear;
+  model.law = spec.model;
   model.stiffness = spec.stiffness;
   model.collision_steps = spec.collision_steps;
   model.restitution_coefficient = spec.restitution_coefficient;
   model.cds_radius = spec.cds_radius;
   model.cds_radius_fraction = spec.cds_radius_fraction;
   model.walls = spec.walls;
-  model.inner_step = spec.inner_step == ContactSpec::InnerStep::lightest_point ? InnerStepBound::lightest_point
-                                                                              : InnerStepBound::listed_pairs;
+  model.inner_step = spec.inner_step;
   model.check();
   return model;
 }
@@ -88,11 +66,7 @@ ContactModel contact_model_of(const ContactSpec& spec) {
 // The parameters of a body's point set from its [[bodies]] table.
 BodyParameters body_parameters_of(const BodySpec& spec) {
   BodyParameters p;
-  switch (spec.kind) {
-    case BodySpec::Kind::mass_spring: p.kind = BodyKind::mass_spring; break;
-    case BodySpec::Kind::rigid: p.kind = BodyKind::rigid; break;
-    case BodySpec::Kind::prescribed: p.kind = BodyKind::prescribed; break;
-  }
+  p.kind = spec.kind;
   p.centre = spec.centre;
   p.velocity = spec.velocity;
   p.angular_velocity = spec.angular_velocity;
@@ -103,24 +77,9 @@ BodyParameters body_parameters_of(const BodySpec& spec) {
   p.spring_damping = spec.spring_damping;
   p.restitution_coefficient = spec.restitution_coefficient;
   p.cross_springs = spec.cross_springs;
-  p.mass_lumping = spec.mass_lumping == BodySpec::MassLumping::uniform_disk ? MassLumping::uniform_disk
-                                                                            : MassLumping::equal;
-  switch (spec.spring_integrator) {
-    case BodySpec::SpringIntegrator::automatic: p.spring_integrator = SpringIntegrator::automatic; break;
-    case BodySpec::SpringIntegrator::explicit_euler: p.spring_integrator = SpringIntegrator::explicit_euler; break;
-    case BodySpec::SpringIntegrator::implicit_euler: p.spring_integrator = SpringIntegrator::implicit_euler; break;
-  }
+  p.mass_lumping = spec.mass_lumping;
+  p.spring_integrator = spec.spring_integrator;
   return p;
-}
-
-ConvectionScheme convection_scheme(FluidSpec::Convection convection) {
-  switch (convection) {
-    case FluidSpec::Convection::quick: return ConvectionScheme::quick;
-    case FluidSpec::Convection::fromm: return ConvectionScheme::fromm;
-    case FluidSpec::Convection::upwind3: return ConvectionScheme::upwind3;
-    case FluidSpec::Convection::central: break;
-  }
-  return ConvectionScheme::central;
 }
 
 // The motion of a rigid or prescribed body from its [[bodies]] table.
@@ -129,9 +88,6 @@ PrescribedMotion motion_of(const BodySpec& spec) {
           spec.angle_amplitude, spec.oscillation_period, spec.oscillation_phase};
 }
 
-SwellingLaw swelling_law_of(const SwellingSpec& spec) {
-  return {spec.enabled, spec.onset_time, spec.rate, spec.max_diameter};
-}
 
 }  // namespace
 
@@ -139,13 +95,11 @@ Simulation::Simulation(const Scene& scene)
     : scene_(scene),
       grid_(grid_from_scene(scene)),
       fluid_solver_(grid_, scene.fluid.kinematic_viscosity, boundaries_from_scene(scene),
-                    FluidSchemes{.convection = convection_scheme(scene.fluid.convection),
+                    FluidSchemes{.convection = scene.fluid.convection,
                                  .quadratic_wall = scene.fluid.wall_closure == FluidSpec::WallClosure::quadratic,
-                                 .fft_planning = scene.run.fft_plans == RunSpec::FftPlans::estimate
-                                                     ? FftPlanning::estimate
-                                                     : FftPlanning::measure}),
+                                 .fft_planning = scene.run.fft_plans}),
       fluid_(fluid_solver_.make_state()),
-      kernel_(kernel_kind(scene.ibm.kernel)),
+      kernel_(scene.ibm.kernel),
       inner_fluid_inertia_(inner_fluid_inertia_of(scene.ibm.inner_fluid_inertia)),
       substep_planner_(scene_, bodies_, markers_, contact_model_, contact_box_, contact_inner_loop_) {
   fluid_solver_.initialise_faces(fluid_);  // fluid at rest: faces 0, projection is a no-op
@@ -163,7 +117,7 @@ Simulation::Simulation(const Scene& scene)
     const bool mass_spring = spec.kind == BodySpec::Kind::mass_spring;
     rigid_.push_back(mass_spring ? RigidBody{} : rigid_body_of(bodies_.back(), motion_of(spec)));
     if (!mass_spring) place_points(rigid_.back(), bodies_.back());
-    swelling_.emplace_back(swelling_law_of(spec.swelling), spec.diameter);
+    swelling_.emplace_back(spec.swelling, spec.diameter);
     const double largest = spec.swelling.enabled ? std::max(spec.diameter, spec.swelling.max_diameter) : spec.diameter;
     markers_.emplace_back(bodies_.back(), scene.ibm.sub_markers
                                               ? max_sub_marker_count(largest, spec.n_surface_points, grid_.dx())

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "core/options.hpp"
+
 namespace ibms {
 
 // One spring-dashpot element between points i and j (docs/method.md §1.2).
@@ -18,17 +20,7 @@ struct Spring {
   double natural_length0 = 0.0;  // L0_ij at the initial diameter D0 [length]
 };
 
-// What moves the points (docs/design.md §11): springs (the papers' model), one rigid motion from
-// Newton-Euler, or a motion given by the scene (solid/rigid_motion.hpp). Rigid and prescribed
-// bodies carry no springs; a prescribed body is infinitely heavy for contacts.
-enum class BodyKind { mass_spring, rigid, prescribed };
-
-// How a mass_spring body's springs are integrated (scene key spring_integrator; sim/bodies/body_update.hpp).
-enum class SpringIntegrator { automatic, explicit_euler, implicit_euler };
-
-// How the body's mass is shared among its points (docs/method.md §1.3): equal, M = rho_s V / (N_l + 1),
-// or uniform_disk, half at the centre and the rest shared by the rim.
-enum class MassLumping { equal, uniform_disk };
+// BodyKind, SpringIntegrator, MassLumping: core/options.hpp.
 
 // What build_wheel and build_body take of a body (sim/ fills it from the scene's BodySpec).
 struct BodyParameters {
