@@ -5,8 +5,9 @@
 # `ibms compare dfg_cylinder_2d2` recovers the Strouhal number and max c_D of a
 # synthetic force history (c_L = sin(2 pi f t), St = f D / U = 0.3 exactly; max c_D = 3.23 + 0.01)
 # with the same figures the case check uses, passes it against the published values and against
-# ibms's own (whose max c_D, 3.23 at D/h = 30, lies inside the published [3.22, 3.24] and is gated), fails it when
-# the frequency is 2 % off; malformed files exit 2 naming the file and line. A file with a
+# ibms's own St; ibms's own max c_D (3.2526 at D/h = 30) lies outside the published [3.22, 3.24] and
+# is shown, not gated, while a reference whose max c_D lies inside (the shipped one scaled to 3.23,
+# in a copy of the case folder) is gated; fails it when the frequency is 2 % off; malformed files exit 2 naming the file and line. A file with a
 # control-volume drag column gets its relative difference from the drag as an info line (last row
 # for 2D-1, time means over the window for 2D-2).
 # usage: test_compare_dfg.sh IBMS VALIDATION_DIR
@@ -50,8 +51,29 @@ PY
 history st.csv 3.0
 expect_exit "2D-2 St = 0.3 and max c_D = 3.24 pass against the published values" 0 \
   "St / 0.3 \(Schaefer & Turek 1996\) - 1\|.*pass" run dfg_cylinder_2d2 st.csv
-grep -qE "\|max c_D / 3\.2[23][0-9]* \(ibms reference\) - 1\|.*pass" out.txt ||
-  { echo "FAIL 2D-2 ibms's own max c_D inside the published interval should be gated (and pass)"; failures=$((failures + 1)); }
+# A reference whose max c_D lies inside the published interval is gated: the shipped one with its
+# drag scaled to a largest value of 3.23, in a copy of the case folder.
+mkdir -p inside/dfg_cylinder_2d2
+cp -r "$validation/dfg_cylinder_2d2/reference" inside/dfg_cylinder_2d2/
+/usr/bin/python3 - inside/dfg_cylinder_2d2/reference/ibms_dfg_2d2_forces.csv <<'PY'
+import sys
+path = sys.argv[1]
+lines = open(path).read().splitlines()
+data = [k for k, l in enumerate(lines) if l and not l.startswith("#")][1:]
+largest = max(float(lines[k].split(",")[1]) for k in data)
+for k in data:
+    cells = lines[k].split(",")
+    cells[1] = "%.10g" % (float(cells[1]) * 3.23 / largest)
+    lines[k] = ",".join(cells)
+open(path, "w").write("\n".join(lines) + "\n")
+PY
+"$ibms" compare dfg_cylinder_2d2 st.csv --validation-dir inside > inside.txt 2>&1
+grep -qE "\|max c_D / 3\.23[0-9]* \(ibms reference\) - 1\|.*pass" inside.txt ||
+  { echo "FAIL 2D-2 a reference max c_D inside the published interval should be gated (and pass)"; failures=$((failures + 1)); }
+# ibms's own D/h = 30 reference has max c_D 3.2526 (+0.70 %, the "upwind3" scene), outside the published
+# [3.22, 3.24]: it is reported, not gated (as 2D-1's c_D above).
+grep -qE "not gated: ibms's own max c_D 3\.2[0-9]* lies outside the published \[3\.22, 3\.24\]" out.txt ||
+  { echo "FAIL 2D-2 ibms's own max c_D outside the published interval should not be gated"; failures=$((failures + 1)); }
 grep -qE "max c_D / 3.23 \(Schaefer & Turek 1996\) - 1\|.*pass" out.txt ||
   { echo "FAIL 2D-2 max c_D 3.24 should pass the 2 % gate"; failures=$((failures + 1)); }
 grep -qE "control-volume c_D vs c_D, means over the last 4 time units .*\(-1.00e-02\)   info" out.txt ||
