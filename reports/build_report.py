@@ -202,25 +202,12 @@ def _headline(c):
     return "%s: %s (target %s)" % (esc(h["metric"]), cases_mod.measured_text(h), h["target_text"])
 
 
-def slow_checks_not_run(build):
-    """The `slow` checks of the validation cases (ctest's list in the build, runs left out) that have
-    no status in this build's workflow state: the verdicts this level does not give."""
-    try:
-        listing = subprocess.run(["ctest", "--show-only=json-v1", "-L", "slow"], cwd=build, capture_output=True,
-                                 text=True, timeout=60)
-        import json
-        tests = json.loads(listing.stdout).get("tests", [])
-    except (OSError, ValueError, subprocess.SubprocessError):
-        return []
-    names = []
-    for t in tests:
-        labels = [v for p in t.get("properties", []) if p.get("name") == "LABELS" for v in p.get("value", [])]
-        name = t["name"]
-        if "slow" not in labels or re.search(r"_run(_|$)", name):
-            continue
-        if not os.path.exists(os.path.join(build, "workflow_state", "tests", name + ".status")):
-            names.append(name)
-    return names
+def slow_checks_not_run(build, defined):
+    """The `slow` checks of the validation cases (`defined`: ctest's list in the build, runs left
+    out) that have no status in this build's workflow state: the verdicts this level does not give."""
+    return [name for name, labels, _ in defined
+            if "slow" in labels and not re.search(r"_run(_|$)", name)
+            and not os.path.exists(os.path.join(build, "workflow_state", "tests", name + ".status"))]
 
 
 def summary_page(out, order, metas, judged, params, not_run=()):
@@ -679,7 +666,8 @@ def document(build, source, fig_dir):
     env = data.environment(build, source, h5s)
     out = [PREAMBLE]
     title_block(out, env, build)
-    summary_page(out, order, metas, judged, params, slow_checks_not_run(build))
+    defined = trace.ctest_tests(build)  # every test the build defines, read once
+    summary_page(out, order, metas, judged, params, slow_checks_not_run(build, defined))
     out.append(r"\newpage\tableofcontents\newpage")
     checks_by_case_section(out, order, metas, judged)
     quantities_summary_section(out, order, metas, judged, fig_dir)
@@ -693,7 +681,7 @@ def document(build, source, fig_dir):
     bench.overhead_section(out, build)
     bench.forcing_passes_section(out, build, source)
     sweeps.sweeps_section(out, build, fig_dir)
-    trace.traceability_section(out, build, source, tests)
+    trace.traceability_section(out, source, defined, tests)
     environment_section(out, env, tests)
     bench.run_times_section(out, tests)
     known_limitations(out, order, judged)

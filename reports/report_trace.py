@@ -28,7 +28,8 @@ def method_sections(source):
 
 
 def ctest_tests(build):
-    """[(name, labels, command)] of every test the build defines."""
+    """[(name, labels, command)] of every test the build defines (empty without ctest or a
+    configured build)."""
     try:
         listing = subprocess.run(["ctest", "--show-only=json-v1"], cwd=build, capture_output=True, text=True,
                                  timeout=60)
@@ -96,8 +97,8 @@ def cited_sections(paths):
     return cited
 
 
-def traceability_section(out, build, source, ctest_results):
-    tests = ctest_tests(build)
+def traceability_section(out, source, tests, ctest_results):
+    """tests: ctest_tests(build); ctest_results: the verdicts of ctest's logs (report_data)."""
     if not tests:
         return
     status = {t["name"]: t["status"] for t in ctest_results}

@@ -40,6 +40,7 @@ import math
 import os
 
 import estimates
+from runner import read_json
 
 MAX_CLASS = 16
 EXCLUSIVE_OFFSET = 1000  # > MAX_CLASS x cores: one exclusive job outranks any set of one-core jobs
@@ -111,14 +112,6 @@ def key(kind, name, level=None):
     return "%s/%s" % (kind, name)
 
 
-def _read_json(path):
-    try:
-        with open(path) as f:
-            return json.load(f)
-    except (OSError, ValueError):
-        return None
-
-
 def _status_paths(wf, planned, bench_level):
     """key -> status file of every job of the plan that has one."""
     out = {}
@@ -140,9 +133,9 @@ def record(build, wf, planned, bench_level):
     the status file of every job of the plan go to the times file. Never raises: a missing time
     only makes the next order less good."""
     try:
-        times = _read_json(times_path(build)) or {}
+        times = read_json(times_path(build)) or {}
         for k, path in _status_paths(wf, planned, bench_level).items():
-            st = _read_json(path)
+            st = read_json(path)
             if st and st.get("seconds") is not None:
                 times[k] = {"seconds": st["seconds"], "status": st.get("status"), "finished": st.get("finished")}
         tmp = "%s.%d.tmp" % (times_path(build), os.getpid())
@@ -158,20 +151,19 @@ def measured(build, wf):
     (tests, sweep points, verification), else the times file (benches from there only: a bench's
     status file does not say its level); "ctest/<test>" -> ctest's average time of a test."""
     out = {}
-    read = _read_json
-    for k, v in (read(times_path(build)) or {}).items():
+    for k, v in (read_json(times_path(build)) or {}).items():
         if isinstance(v, dict):
             out[k] = (v.get("seconds"), v.get("status"))
     for path in glob.glob(os.path.join(wf, "tests", "*.status")):
-        st = read(path)
+        st = read_json(path)
         if st and st.get("kind") in ("run", "check"):
             out[key(st["kind"], os.path.basename(path)[:-len(".status")])] = (st.get("seconds"), st.get("status"))
     for path in glob.glob(os.path.join(wf, "sweeps", "*", "*.json")):
-        st = read(path)
+        st = read_json(path)
         if st:
             name = "%s/%s" % (os.path.basename(os.path.dirname(path)), os.path.basename(path)[:-len(".json")])
             out[key("sweep", name)] = (st.get("seconds"), st.get("status"))
-    st = read(os.path.join(wf, "verification.status"))
+    st = read_json(os.path.join(wf, "verification.status"))
     if st:
         out["verification"] = (st.get("seconds"), st.get("status"))
     try:  # ctest's averages of the same tests: "name repeats seconds" lines, up to "---"

@@ -30,7 +30,8 @@ def _write_json(path, data):
     os.replace(tmp, path)
 
 
-def read_status(path):
+def read_json(path):
+    """A status file's (or the times file's) contents; None when it is missing or unreadable."""
     try:
         with open(path) as f:
             return json.load(f)
@@ -65,7 +66,7 @@ def run_test(job, build, threads=1):
     name = job["name"]
     logs = os.path.join(ctest_jobs.state_dir(build), "logs")
     for r in job["requires"]:
-        st = read_status(os.path.join(ctest_jobs.state_dir(build), "tests", r + ".status"))
+        st = read_json(os.path.join(ctest_jobs.state_dir(build), "tests", r + ".status"))
         if not st or st.get("status") != "pass":
             _finish(job, build, "not run", None, 0.0, "required run %s did not pass\n" % r)
             return

@@ -123,7 +123,7 @@ def main():
 
     for name in jobs:
         runner.run_test(jobs[name], build)
-    st = {n: runner.read_status(jobs[n]["status"])["status"] for n in jobs}
+    st = {n: runner.read_json(jobs[n]["status"])["status"] for n in jobs}
     check(st == {"settling_disk_100_run": "pass", "settling_disk_check": "pass", "dkt_two_disks_run_160": "FAIL",
                  "dkt_two_disks_check_160": "not run"}, "statuses: %s" % st)
     with open(chk["results"]) as f:
