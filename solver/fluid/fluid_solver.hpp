@@ -170,14 +170,15 @@ class FluidSolver {
   // Kinetic energy per unit density and depth, 0.5 sum |u|^2 dx dy [length^4/time^2].
   double kinetic_energy(const FluidState& state) const;
 
+  // Faces the projection corrects, inclusive ranges of x-face index i and y-face index j.
+  struct FaceRange { int x_first, x_last, y_first, y_last; };
+  FaceRange corrected_faces() const;
+
  private:
   // (I - nu dt/2 L) q = r for both velocity components, in place (wall data already in r).
   void solve_helmholtz_pair(double dt, CellField& x, CellField& y);
   // Normal velocity of the Dirichlet sides (walls: 0, inflows: the profile) at `time` on their faces.
   void set_given_faces(double time, FaceField& face_x, FaceField& face_y) const;
-  // Faces the projection corrects, inclusive ranges of x-face index i and y-face index j.
-  struct FaceRange { int x_first, x_last, y_first, y_last; };
-  FaceRange corrected_faces() const;
 
   Grid grid_;
   double nu_;

@@ -79,6 +79,9 @@ struct BodyCoupling {
   // without the fluid) + this. Empty for other bodies [length/time].
   std::vector<Vec2> body_velocity_change;
   std::vector<double> response_work;       // two entries per body point: scratch of the response
+  // ibm.coupling = "no_slip": a prescribed body, whose motion does not answer its force; the
+  // marker system's preconditioner holds its exact fluid operator (marker_preconditioner.hpp).
+  bool given_motion = false;
 
   // max_markers: capacity reserved once for the marker arrays, so that sub-markers added as the
   // body swells (up to 1.5x the nominal swollen edge) do not reallocate them within the step loop.

@@ -22,6 +22,7 @@ EndOfStepConstraint::EndOfStepConstraint(const Scene& scene, const Grid& grid, K
       has_mass_spring_(scene.has_kind(BodySpec::Kind::mass_spring)),
       fluid_density_(scene.fluid.density),
       gravity_(scene.fluid.gravity) {
+  for (std::size_t b = 0; b < bodies.size(); ++b) markers[b].given_motion = bodies[b].kind == BodyKind::prescribed;
   for (std::size_t b = 0; b < bodies.size(); ++b) {
     if (bodies[b].kind != BodyKind::rigid) continue;
     RigidBody& r = rigid[b];

@@ -17,11 +17,15 @@ void MarkerPreconditioner::reserve(const std::vector<BodyCoupling>& coupling) {
       blocks_[b].factor[d] = Eigen::LLT<Eigen::MatrixXd>(n);
     }
     blocks_[b].rhs.resize(n);
+    blocks_[b].local.resize(2 * n, 2 * n);
+    blocks_[b].local_factor = Eigen::PartialPivLU<Eigen::MatrixXd>(2 * n);
     blocks_[b].normal.reserve(coupling[b].marker.capacity());
     blocks_[b].factorised_at.reserve(coupling[b].marker.capacity());
   }
-  weights_.resize(largest);
+  weights_.resize(2 * largest);
   for (auto& w : weights_) w.reserve(36);
+  cells_.resize(2 * largest);
+  for (auto& r : cells_) r.reserve(72);
 }
 
 namespace {
@@ -51,6 +55,7 @@ double mean_normal(const std::vector<Vec2>& normal, const double* v) {
 }  // namespace
 
 bool MarkerPreconditioner::factorise(const Grid& grid, KernelKind kernel, bool on_faces,
+                                     const FluidSolver::FaceRange& free_faces,
                                      const std::vector<BodyCoupling>& coupling) {
   cell_area_ = grid.dx() * grid.dy();
   // Markers farther apart than the kernel's support in x or y share no node, unless a periodic
@@ -70,8 +75,14 @@ bool MarkerPreconditioner::factorise(const Grid& grid, KernelKind kernel, bool o
       continue;
     }
     if (block.factorised_at == c.marker) continue;
-    moved = true;
     block.factorised_at.assign(c.marker.begin(), c.marker.end());
+    block.leak = 0.0;
+    block.exact = on_faces && c.given_motion && n > 0;
+    if (block.exact) {
+      build_local(grid, kernel, free_faces, c, block);
+      continue;
+    }
+    moved = true;
     for (int d = 0; d < 2; ++d) {
       for (Eigen::Index k = 0; k < n; ++k) marker_node_weights(grid, kernel, c.marker[k], on_faces, d, weights_[k]);
       Eigen::MatrixXd& C = block.overlap[d];
@@ -112,6 +123,122 @@ bool MarkerPreconditioner::factorise(const Grid& grid, KernelKind kernel, bool o
   return moved;
 }
 
+// A_b = J_f P_0 S_f of one body on the unbounded grid (marker_preconditioner.hpp).
+void MarkerPreconditioner::build_local(const Grid& grid, KernelKind kernel, const FluidSolver::FaceRange& free_faces,
+                                       const BodyCoupling& c, Block& block) {
+  const int n = static_cast<int>(c.marker.size());
+  const int nx = grid.nx, ny = grid.ny;
+  const double dx = grid.dx(), dy = grid.dy();
+  // Offsets between two cells of the body, the nearest periodic image.
+  const auto offset = [&](int a, int b, int period, bool periodic) {
+    int d = a - b;
+    if (periodic) d -= period * static_cast<int>(std::lround(static_cast<double>(d) / period));
+    return d;
+  };
+  // The face nodes of every marker and component, and R (the cells of J_f G_f) from them: a face
+  // between cells a (below) and b (above) gives b + w / h and a - w / h. Faces the projection does
+  // not correct (walls, inflows) carry no increment and are left out of both C and R.
+  for (int k = 0; k < n; ++k)
+    for (int d = 0; d < 2; ++d) {
+      std::vector<NodeWeight>& nodes = weights_[2 * k + d];
+      marker_node_weights(grid, kernel, c.marker[k], /*on_faces=*/true, d, nodes);
+      std::vector<CellWeight>& r = cells_[2 * k + d];
+      r.clear();
+      std::size_t corrected = 0;  // the nodes kept for C: the corrected faces only
+      for (const NodeWeight& w : nodes) {
+        if (d == 0) {
+          const int i = w.node % (nx + 1), j = w.node / (nx + 1);
+          if (i < free_faces.x_first || i > free_faces.x_last) continue;
+          const int below = grid.periodic_x && i == 0 ? nx - 1 : i - 1;
+          r.push_back({i, j, w.weight / dx});
+          r.push_back({below, j, -w.weight / dx});
+        } else {
+          const int i = w.node % nx, j = w.node / nx;
+          if (j < free_faces.y_first || j > free_faces.y_last) continue;
+          const int below = grid.periodic_y && j == 0 ? ny - 1 : j - 1;
+          r.push_back({i, j, w.weight / dy});
+          r.push_back({i, below, -w.weight / dy});
+        }
+        nodes[corrected++] = w;
+      }
+      nodes.resize(corrected);
+      std::sort(r.begin(), r.end(), [](const CellWeight& a, const CellWeight& b) {
+        return a.j != b.j ? a.j < b.j : a.i < b.i;
+      });
+      std::size_t kept = 0;
+      for (std::size_t q = 0; q < r.size(); ++q) {
+        if (kept > 0 && r[kept - 1].i == r[q].i && r[kept - 1].j == r[q].j)
+          r[kept - 1].weight += r[q].weight;
+        else
+          r[kept++] = r[q];
+      }
+      r.resize(kept);
+    }
+  // The body's cells, unwrapped around the first one in a periodic direction.
+  const CellWeight* first = nullptr;
+  for (int k = 0; k < 2 * n && first == nullptr; ++k)
+    if (!cells_[k].empty()) first = &cells_[k].front();
+  if (first == nullptr) {  // no marker touches a corrected face: nothing to hold
+    block.local.setIdentity(2 * n, 2 * n);
+    block.local_factor.compute(block.local);
+    return;
+  }
+  int low_i = 0, high_i = 0, low_j = 0, high_j = 0;
+  for (int k = 0; k < 2 * n; ++k)
+    for (const CellWeight& a : cells_[k]) {
+      const int i = first->i + offset(a.i, first->i, nx, grid.periodic_x);
+      const int j = first->j + offset(a.j, first->j, ny, grid.periodic_y);
+      low_i = std::min(low_i == 0 && high_i == 0 ? i : low_i, i);
+      high_i = std::max(high_i, i);
+      low_j = std::min(low_j == 0 && high_j == 0 ? j : low_j, j);
+      high_j = std::max(high_j, j);
+    }
+  const int extent = std::max(high_i - low_i, high_j - low_j);
+  // The image of the nearer side in each direction with walls, when the body is within its own
+  // extent of it: a wall or an inflow (phi even about the face) adds G(a - b*), an outflow
+  // (phi = 0 on the face, odd) subtracts it; b* = -1 - b (low side) or 2 n - 1 - b (high side).
+  // Farther sides and further images are smooth over the rim: the iteration takes them.
+  struct Image {
+    int sign = 0;    // 0: none
+    int mirror = 0;  // b* = mirror - b
+  };
+  const auto image = [&](int low, int high, int cells, bool periodic, bool low_outflow, bool high_outflow) {
+    if (periodic) return Image{};
+    const int to_low = low, to_high = cells - 1 - high;
+    if (to_low <= to_high && to_low <= extent) return Image{low_outflow ? -1 : 1, -1};
+    if (to_high < to_low && to_high <= extent) return Image{high_outflow ? -1 : 1, 2 * cells - 1};
+    return Image{};
+  };
+  const Image image_x = image(low_i, high_i, nx, grid.periodic_x, free_faces.x_first == 0, free_faces.x_last == nx);
+  const Image image_y = image(low_j, high_j, ny, grid.periodic_y, free_faces.y_first == 0, free_faces.y_last == ny);
+  int reach = extent;
+  if (image_x.sign != 0) reach = std::max({reach, std::abs(2 * low_i - image_x.mirror), std::abs(2 * high_i - image_x.mirror)});
+  if (image_y.sign != 0) reach = std::max({reach, std::abs(2 * low_j - image_y.mirror), std::abs(2 * high_j - image_y.mirror)});
+  green_.ensure(dx, dy, reach + 1);
+  const auto green = [&](const CellWeight& a, const CellWeight& b) {
+    const int di = offset(a.i, b.i, nx, grid.periodic_x), dj = offset(a.j, b.j, ny, grid.periodic_y);
+    double g = green_(di, dj);
+    if (image_x.sign != 0) g += image_x.sign * green_(a.i + b.i - image_x.mirror, dj);
+    if (image_y.sign != 0) g += image_y.sign * green_(di, a.j + b.j - image_y.mirror);
+    if (image_x.sign != 0 && image_y.sign != 0)
+      g += image_x.sign * image_y.sign * green_(a.i + b.i - image_x.mirror, a.j + b.j - image_y.mirror);
+    return g;
+  };
+  Eigen::MatrixXd& A = block.local;
+  A.resize(2 * n, 2 * n);
+  const double inv_cell = 1.0 / (dx * dy);
+  for (int p = 0; p < 2 * n; ++p)
+    for (int q = p; q < 2 * n; ++q) {
+      // C: the kernels' overlap on the corrected faces of one component.
+      double sum = p % 2 == q % 2 ? overlap(weights_[p], weights_[q]) : 0.0;
+      for (const CellWeight& a : cells_[p])
+        for (const CellWeight& b : cells_[q]) sum += a.weight * b.weight * green(a, b);
+      A(p, q) = sum * c.marker_volume[q / 2] * inv_cell;
+      A(q, p) = sum * c.marker_volume[p / 2] * inv_cell;
+    }
+  block.local_factor.compute(A);
+}
+
 void MarkerPreconditioner::normal_pattern(const std::vector<BodyCoupling>& coupling, double* z) const {
   std::size_t first = 0;
   for (std::size_t b = 0; b < coupling.size(); ++b) {
@@ -140,6 +267,11 @@ void MarkerPreconditioner::apply(const std::vector<BodyCoupling>& coupling, cons
     Block& block = blocks_[b];
     if (block.identity) {
       std::copy(v + first, v + first + 2 * n, x + first);
+      first += 2 * static_cast<std::size_t>(n);
+      continue;
+    }
+    if (block.exact) {
+      Eigen::Map<Eigen::VectorXd>(x + first, 2 * n) = block.local_factor.solve(Eigen::Map<const Eigen::VectorXd>(v + first, 2 * n));
       first += 2 * static_cast<std::size_t>(n);
       continue;
     }

@@ -1,21 +1,28 @@
 // The preconditioner of the marker system (no_slip_system.hpp, docs/method.md §3.7, "The marker
-// system's preconditioner"), applied on the right of GMRES, in two parts per body:
-//  - the system without its projection, J S: what the kernel does to a force pattern on the rim,
-//    local and symmetric up to the marker volumes. It holds the small eigenvalues of the force
-//    patterns that vary from marker to marker and that the kernel smooths. Per body and velocity
-//    component, C_kl = sum over the constrained nodes (the faces of that component, or the cell
-//    centres) of phi_k phi_l, so that (J S v)_k = sum_l C_kl dV_l / (dx dy) v_l; factorised by
-//    Cholesky, dense per body: a ring's markers overlap their neighbours only. Other bodies'
-//    markers within the kernel's reach are left out (a preconditioner; the iteration stops on the
-//    true residual).
-//  - the leak: a uniform normal force on a closed rim spreads into a field that is nearly a
-//    gradient, so the projection takes nearly all of it into the pressure and leaves a mean normal
-//    velocity at the markers mu_b times the force, mu_b ~ 3e-4 at D/h = 20. It is the only pattern
-//    that can change the mean normal slip (the discrete flux through the rim that the interpolated
-//    divergence-free velocity carries), and J S does not see it: without this part GMRES resolves
-//    it last, over tens of products. The preconditioner adds z_b <v . n>_b / mu_b, z_b the body's
-//    normal pattern and mu_b measured by one product per step for all bodies together (the leak of
-//    one body at another's markers is left out).
+// system's preconditioner"), applied on the right of GMRES, body by body (other bodies' markers
+// within reach are left out: a preconditioner; the iteration stops on the true residual).
+//  - A prescribed body under the face constraint (ibm.constrained_velocity = "faces"): the body's
+//    own marker operator
+//    J_f P_0 S_f, built without a Poisson solve. P_0 = I - G_f L^{-1} D on the corrected faces and
+//    L^{-1} is taken on the unbounded grid, its lattice Green's function
+//    (fluid/lattice_green_function.hpp): with R_k the cells' weights of J_f G_f at marker k,
+//        A_kl = (C_kl + sum_ab R_k(a) R_l(b) G(a - b)) dV_l / (dx dy),
+//    C_kl the kernels' overlap on the corrected faces (below). What it leaves out: the walls' and periodic
+//    images' part of L^{-1}, smooth over the rim, and other bodies. Factorised by LU per body.
+//  - Other bodies, and every body under the cell constraint ("cells"): the system without its
+//    projection, J S, and the leak. A rigid body answers its force one step late (its virtual mass,
+//    docs/method.md §3.7): with its exact fluid operator the marker system takes every mode at
+//    once, and a rigid disk settling onto a wall then rocks with a growing force from a gap of
+//    0.7 h (validation/settling_disk at 100 x 300 cells), which the slower iteration damps.
+//    * J S: per body and velocity component, C_kl = sum over the constrained nodes (the faces of
+//      that component, or the cell centres) of phi_k phi_l, so that (J S v)_k = sum_l C_kl dV_l / (dx dy) v_l; factorised by
+//      Cholesky, dense per body. It holds the small eigenvalues of the force patterns that vary
+//      from marker to marker and that the kernel smooths.
+//    * the leak: a uniform normal force on a closed rim spreads into a field that is nearly a
+//      gradient, so the projection takes nearly all of it into the pressure and leaves a mean
+//      normal velocity at the markers mu_b times the force, mu_b ~ 3e-4 at D/h = 20, which J S does
+//      not see. The preconditioner adds z_b <v . n>_b / mu_b, z_b the body's normal pattern and
+//      mu_b measured by one product per step for all bodies together.
 // Both are kept while a body's markers stay where they were (a fixed body: once per run). A body
 // whose rim responds in the marker system (mass-spring, docs/method.md §3.7) keeps the identity: its
 // rim's inertia and springs dominate that part of the system, and J S there doubled the products
@@ -26,8 +33,11 @@
 
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
+#include <Eigen/LU>
 
 #include "core/grid.hpp"
+#include "fluid/fluid_solver.hpp"
+#include "fluid/lattice_green_function.hpp"
 #include "ibm/delta_kernel.hpp"
 #include "ibm/ib_operators.hpp"
 #include "sim/coupling/body_coupling.hpp"
@@ -38,20 +48,30 @@ class MarkerPreconditioner {
  public:
   // Storage for bodies with up to marker capacity markers each.
   void reserve(const std::vector<BodyCoupling>& coupling);
-  // C of every body whose markers moved since they were last factorised, and its outward normals;
-  // returns whether any body moved, so that the leaks must be measured again.
-  bool factorise(const Grid& grid, KernelKind kernel, bool on_faces, const std::vector<BodyCoupling>& coupling);
+  // The blocks of every body whose markers moved since they were last factorised (faces: the local
+  // operator; cells: C and the outward normals), free_faces the faces the projection corrects;
+  // returns whether leaks must be measured again (a body with a J S block moved).
+  bool factorise(const Grid& grid, KernelKind kernel, bool on_faces, const FluidSolver::FaceRange& free_faces,
+                 const std::vector<BodyCoupling>& coupling);
   // z: every body's markers pushed along their outward normals n_l (unknowns 2l + d of each body in
   // turn), the pattern whose image under the marker system gives the leaks.
   void normal_pattern(const std::vector<BodyCoupling>& coupling, double* z) const;
   // From y = A z, the marker system applied to normal_pattern: mu_b = <y . n> over body b's markers.
   void set_leaks(const std::vector<BodyCoupling>& coupling, const double* y);
-  // x = (J S)^-1 v + z_b <v . n>_b / mu_b, body by body, for the marker vector v (scaled by each
-  // body's reference speed, which a body's block leaves unchanged).
+  // x = A_b^-1 v or (J S)^-1 v + z_b <v . n>_b / mu_b, body by body, for the marker
+  // vector v (scaled by each body's reference speed, which a body's block leaves unchanged).
   void apply(const std::vector<BodyCoupling>& coupling, const double* v, double* x);
 
  private:
+  // One cell's weight in R_k (J_f G_f at a marker), the cell unwrapped around the body.
+  struct CellWeight {
+    int i = 0, j = 0;
+    double weight = 0.0;
+  };
   struct Block {
+    Eigen::MatrixXd local;               // A_b, 2n x 2n, unknowns 2k + d
+    Eigen::PartialPivLU<Eigen::MatrixXd> local_factor;
+    bool exact = false;                  // local_factor holds A_b (a prescribed body, faces)
     Eigen::MatrixXd overlap[2];          // C of each component
     Eigen::LLT<Eigen::MatrixXd> factor[2];
     Eigen::VectorXd rhs;
@@ -61,7 +81,11 @@ class MarkerPreconditioner {
     bool identity = false;               // a responding (mass-spring) rim: no block, no leak
   };
   std::vector<Block> blocks_;
+  void build_local(const Grid& grid, KernelKind kernel, const FluidSolver::FaceRange& free_faces,
+                   const BodyCoupling& c, Block& block);
   std::vector<std::vector<NodeWeight>> weights_;  // the nodes of each marker of the largest body
+  std::vector<std::vector<CellWeight>> cells_;    // R of each marker and component (2k + d) of the largest body
+  LatticeGreensFunction green_;
   double cell_area_ = 1.0;
 };
 
