@@ -97,6 +97,7 @@ struct IbmSpec {
   enum class InnerFluidInertia { kempe, none };
   enum class Coupling { uhlmann, no_slip };
   enum class ConstrainedVelocity { cells, faces };
+  enum class RigidResponse { implicit, virtual_mass };
   Kernel kernel = Kernel::roma3;     // roma3 | peskin4 | cosine4 | bkp6
   int forcing_passes = 1;            // multi-direct forcing passes [-]
   // Which velocity the markers force: "explicit_estimate" (Uhlmann 2005: the explicit estimate
@@ -134,6 +135,12 @@ struct IbmSpec {
   // the fluid's added mass, which the constraint force carries one step late, does not set off the
   // explicit coupling's step-to-step oscillation; 0 leaves Newton-Euler as it is [-].
   double virtual_mass_coefficient = 1.0;
+  // no_slip: how a rigid body answers its force (docs/method.md §3.7, "Rigid bodies"):
+  //  "implicit"      in the marker system, with its mass less the inner fluid's: the constraint
+  //                  holds the rim at the velocity the body reaches at the end of the step;
+  //  "virtual_mass"  one step late, with virtual_mass_coefficient (Schwarz, Kempe & Froehlich 2015).
+  // A body no heavier than the fluid (with inner_fluid_inertia = "kempe") takes the virtual mass.
+  RigidResponse rigid_response = RigidResponse::implicit;
 };
 
 // A body's [bodies.swelling] table: the swelling law's parameters (solid/swelling_schedule.hpp).

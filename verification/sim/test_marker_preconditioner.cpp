@@ -71,8 +71,8 @@ double round_trip_error(const Vec2& centre, bool periodic, bool on_faces, double
   preconditioner.reserve(coupling);
   const ibms::FluidSolver::FaceRange free_faces = sim.fluid_solver().corrected_faces();
   // Leaks to measure: the cells' blocks once, then kept while nothing moves; none on the faces.
-  BOOST_TEST(preconditioner.factorise(grid, sim.kernel(), on_faces, free_faces, coupling) == !on_faces);
-  BOOST_TEST(!preconditioner.factorise(grid, sim.kernel(), on_faces, free_faces, coupling));
+  BOOST_TEST(preconditioner.factorise(grid, sim.kernel(), on_faces, free_faces, coupling, {}) == !on_faces);
+  BOOST_TEST(!preconditioner.factorise(grid, sim.kernel(), on_faces, free_faces, coupling, {}));
   std::vector<double> no_leak(2 * n, 0.0);
   preconditioner.set_leaks(coupling, no_leak.data());
   preconditioner.apply(coupling, y.data(), z.data());
@@ -124,7 +124,7 @@ BOOST_AUTO_TEST_CASE(a_responding_rim_keeps_the_identity) {
   for (std::size_t k = 0; k < n; ++k) v[k] = 0.1 * static_cast<double>(k) - 1.0;
   ibms::MarkerPreconditioner preconditioner;
   preconditioner.reserve(coupling);
-  preconditioner.factorise(sim.grid(), sim.kernel(), true, sim.fluid_solver().corrected_faces(), coupling);
+  preconditioner.factorise(sim.grid(), sim.kernel(), true, sim.fluid_solver().corrected_faces(), coupling, {});
   preconditioner.set_leaks(coupling, v.data());
   preconditioner.apply(coupling, v.data(), x.data());
   BOOST_TEST(x == v, boost::test_tools::per_element());

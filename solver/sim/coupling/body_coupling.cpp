@@ -152,6 +152,35 @@ void add_point_velocity_change(const MassSpringBody& body, const std::vector<Vec
     for (int d = 0; d < 2; ++d) c.target_velocity[l][d] += marker_value(change, centre, c, l, body.n_surface, d);
 }
 
+void rigid_response(const MassSpringBody& body, double fluid_density, const BodyCoupling& c,
+                    const std::vector<Vec2>& impulse, std::vector<Vec2>& change) {
+  const int n_rim = body.n_surface;
+  const Vec2& x_c = body.position[body.centre_index()];
+  // The rim point of marker l relative to the centre: where its reaction acts on the body.
+  const auto arm = [&](std::size_t l) {
+    const int e0 = c.marker_edge[l], e1 = (e0 + 1) % n_rim;
+    const double w = c.marker_fraction[l];
+    return Vec2{(1.0 - w) * body.position[e0][0] + w * body.position[e1][0] - x_c[0],
+                (1.0 - w) * body.position[e0][1] + w * body.position[e1][1] - x_c[1]};
+  };
+  Vec2 momentum{0.0, 0.0};
+  double angular = 0.0;
+  for (std::size_t l = 0; l < c.marker.size(); ++l) {
+    const Vec2 r = arm(l);
+    const Vec2 p{-fluid_density * c.marker_volume[l] * impulse[l][0], -fluid_density * c.marker_volume[l] * impulse[l][1]};
+    momentum[0] += p[0];
+    momentum[1] += p[1];
+    angular += r[0] * p[1] - r[1] * p[0];
+  }
+  const Vec2 du{momentum[0] / c.response_mass, momentum[1] / c.response_mass};
+  const double dw = angular / c.response_inertia;
+  for (std::size_t l = 0; l < c.marker.size(); ++l) {
+    const Vec2 r = arm(l);
+    const double f = c.marker_fraction_work[l];
+    change[l] = {du[0] - f * dw * r[1], du[1] + f * dw * r[0]};
+  }
+}
+
 void apply_direct_forcing(const Grid& grid, KernelKind kernel, const WallVelocities& walls, double dt,
                           int n_passes, std::vector<BodyCoupling>& coupling, CellField& velocity_star_x,
                           CellField& velocity_star_y) {

@@ -6,6 +6,7 @@
 // Work arrays live in BodyCoupling, one per body, sized when the Simulation is built.
 #pragma once
 #include <array>
+#include <functional>
 #include <vector>
 
 #include "core/fields.hpp"
@@ -20,6 +21,11 @@
 namespace ibms {
 
 using Vec2 = std::array<double, 2>;
+
+// The response of body b's rim to marker impulses: velocity_change_l = the change of U_l over the step
+// when the fluid reaction of the impulses impulse_l = dt F_l acts on the body [length/time].
+using BodyResponse = std::function<void(std::size_t body, const std::vector<Vec2>& impulse,
+                                        std::vector<Vec2>& velocity_change)>;
 
 struct BodyCoupling {
   // IB markers, per marker l: the rim points and, with ibm.sub_markers, the sub-markers that split
@@ -82,6 +88,11 @@ struct BodyCoupling {
   // ibm.coupling = "no_slip": a prescribed body, whose motion does not answer its force; the
   // marker system's preconditioner holds its exact fluid operator (marker_preconditioner.hpp).
   bool given_motion = false;
+  // ibm.coupling = "no_slip" on a rigid body that responds in the marker system: the mass and moment
+  // of inertia that answer the immersed-boundary reaction over the step, the body's less the inner
+  // fluid's when its inertia is counted (docs/method.md §3.7, "Rigid bodies"); 0: no response.
+  double response_mass = 0.0;     // [mass/length]
+  double response_inertia = 0.0;  // [mass length]
 
   // max_markers: capacity reserved once for the marker arrays, so that sub-markers added as the
   // body swells (up to 1.5x the nominal swollen edge) do not reallocate them within the step loop.
@@ -109,6 +120,14 @@ void prepare_markers(const std::vector<MassSpringBody>& bodies,
 // Adds to each marker's target U_target_l the change `change` of its body's point velocities (one
 // entry per body point), interpolated along the marker's rim edge and scaled by its radial factor
 // as the target itself is (prepare_markers): the target becomes that of the changed velocities.
+// The change over the step of a rigid body's marker velocities when the fluid reaction of the
+// marker impulses dt F_l acts on it with c.response_mass and c.response_inertia: the reaction
+// -rho_f dV_l dt F_l goes to the rim points as compute_fluid_reaction sends it, its force and torque
+// about the centre point change U and omega, and marker l takes the change as its target does
+// (edge weights and radial factor) [length/time].
+void rigid_response(const MassSpringBody& body, double fluid_density, const BodyCoupling& c,
+                    const std::vector<Vec2>& impulse, std::vector<Vec2>& change);
+
 void add_point_velocity_change(const MassSpringBody& body, const std::vector<Vec2>& change, BodyCoupling& c);
 
 // n_passes direct-forcing passes on (velocity_star_x, velocity_star_y): interpolate u~ at X^n,

@@ -23,11 +23,26 @@ EndOfStepConstraint::EndOfStepConstraint(const Scene& scene, const Grid& grid, K
       fluid_density_(scene.fluid.density),
       gravity_(scene.fluid.gravity) {
   for (std::size_t b = 0; b < bodies.size(); ++b) markers[b].given_motion = bodies[b].kind == BodyKind::prescribed;
+  // Rigid bodies respond in the marker system with their mass less the inner fluid's (which the
+  // inner-fluid term gives back as rho_f V dU/dt while the inner fluid moves with the body); a body
+  // no heavier than the fluid there, or ibm.rigid_response = "virtual_mass", moves with the virtual
+  // mass C_V rho_f V instead (Schwarz, Kempe & Froehlich 2015).
+  const bool inner = scene.ibm.inner_fluid_inertia != IbmSpec::InnerFluidInertia::none;
   for (std::size_t b = 0; b < bodies.size(); ++b) {
     if (bodies[b].kind != BodyKind::rigid) continue;
     RigidBody& r = rigid[b];
+    const double inner_mass = inner ? scene.fluid.density * bodies[b].solid_area() : 0.0;
+    const double diameter = scene.bodies[b].diameter;
+    if (scene.ibm.rigid_response == IbmSpec::RigidResponse::implicit && r.mass - inner_mass > 0.0) {
+      markers[b].response_mass = r.mass - inner_mass;
+      markers[b].response_inertia = r.moment_of_inertia - inner_mass * diameter * diameter / 8.0;
+      markers[b].body_velocity_change.assign(markers[b].marker.capacity(), Vec2{0.0, 0.0});
+      markers[b].body_velocity_change.resize(markers[b].marker.size());
+      r.virtual_mass = r.virtual_inertia = 0.0;
+      continue;
+    }
     r.virtual_mass = scene.ibm.virtual_mass_coefficient * scene.fluid.density * bodies[b].solid_area();
-    r.virtual_inertia = r.virtual_mass * scene.bodies[b].diameter * scene.bodies[b].diameter / 8.0;
+    r.virtual_inertia = r.virtual_mass * diameter * diameter / 8.0;
   }
   arrays_.slip_increment_x = CellField(grid);
   arrays_.slip_increment_y = CellField(grid);
@@ -95,12 +110,18 @@ bool EndOfStepConstraint::prepare_body_responses(const CouplingStep& step) {
     }
     if (c.body_velocity_change.empty()) continue;
     const MassSpringBody& body = step.bodies[b];
+    any = true;
+    if (c.response_mass > 0.0) {  // a rigid body: its buoyant weight over the step
+      const Vec2 weight = body.buoyant_weight(step.rigid[b].mass, fluid_density_, gravity_);
+      for (Vec2& u : c.target_velocity)
+        for (int d = 0; d < 2; ++d) u[d] += step.dt * weight[d] / c.response_mass;
+      continue;
+    }
     for (int p = 0; p < body.n_points(); ++p)
       c.external_force[p] = body.buoyant_weight(body.mass[p], fluid_density_, gravity_);
     arrays_.response_systems[b].velocity_change(body, step.dt, c.external_force);  // dU without the fluid
     for (std::size_t l = 0; l < c.marker.size(); ++l)
       for (int d = 0; d < 2; ++d) c.target_velocity[l][d] += c.external_force[l][d];
-    any = true;
   }
   return any;
 }
@@ -114,9 +135,14 @@ CouplingWork EndOfStepConstraint::hold(const CouplingStep& step) {
   const bool responds = prepare_body_responses(step);
   // -(M + dt D + dt^2 S)^{-1} rho_f dV (dt F) on the rim points of body b (markers = rim points).
   std::vector<BodyCoupling>& markers = step.markers;
-  const BodyResponse response = [this, &markers](std::size_t b, const std::vector<Vec2>& impulse,
-                                                 std::vector<Vec2>& change) {
-    BodyCoupling& c = markers[b];
+  // Two captures: std::function keeps them in place, without allocating.
+  const BodyResponse response = [this, &step](std::size_t b, const std::vector<Vec2>& impulse,
+                                              std::vector<Vec2>& change) {
+    BodyCoupling& c = step.markers[b];
+    if (c.response_mass > 0.0) {
+      rigid_response(step.bodies[b], fluid_density_, c, impulse, change);
+      return;
+    }
     std::vector<double>& x = c.response_work;
     std::fill(x.begin(), x.end(), 0.0);
     for (std::size_t l = 0; l < c.marker.size(); ++l)

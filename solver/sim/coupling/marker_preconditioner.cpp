@@ -56,7 +56,7 @@ double mean_normal(const std::vector<Vec2>& normal, const double* v) {
 
 bool MarkerPreconditioner::factorise(const Grid& grid, KernelKind kernel, bool on_faces,
                                      const FluidSolver::FaceRange& free_faces,
-                                     const std::vector<BodyCoupling>& coupling) {
+                                     std::vector<BodyCoupling>& coupling, const BodyResponse& response) {
   cell_area_ = grid.dx() * grid.dy();
   // Markers farther apart than the kernel's support in x or y share no node, unless a periodic
   // image brings them together (the node lists hold the wrapped nodes).
@@ -69,7 +69,8 @@ bool MarkerPreconditioner::factorise(const Grid& grid, KernelKind kernel, bool o
     Block& block = blocks_[b];
     // A body whose rim responds in the marker system (mass-spring) keeps the identity: its rim's
     // inertia and springs, not the kernel, set that part of the system.
-    block.identity = !c.body_velocity_change.empty();
+    const bool rigid = c.response_mass > 0.0;
+    block.identity = !c.body_velocity_change.empty() && !rigid;
     if (block.identity) {
       block.leak = 0.0;
       continue;
@@ -77,9 +78,9 @@ bool MarkerPreconditioner::factorise(const Grid& grid, KernelKind kernel, bool o
     if (block.factorised_at == c.marker) continue;
     block.factorised_at.assign(c.marker.begin(), c.marker.end());
     block.leak = 0.0;
-    block.exact = on_faces && c.given_motion && n > 0;
+    block.exact = on_faces && (c.given_motion || rigid) && n > 0;
     if (block.exact) {
-      build_local(grid, kernel, free_faces, c, block);
+      build_local(grid, kernel, free_faces, b, coupling, rigid ? response : BodyResponse{}, block);
       continue;
     }
     moved = true;
@@ -125,7 +126,9 @@ bool MarkerPreconditioner::factorise(const Grid& grid, KernelKind kernel, bool o
 
 // A_b = J_f P_0 S_f of one body on the unbounded grid (marker_preconditioner.hpp).
 void MarkerPreconditioner::build_local(const Grid& grid, KernelKind kernel, const FluidSolver::FaceRange& free_faces,
-                                       const BodyCoupling& c, Block& block) {
+                                       std::size_t body, std::vector<BodyCoupling>& coupling,
+                                       const BodyResponse& response, Block& block) {
+  BodyCoupling& c = coupling[body];
   const int n = static_cast<int>(c.marker.size());
   const int nx = grid.nx, ny = grid.ny;
   const double dx = grid.dx(), dy = grid.dy();
@@ -236,6 +239,15 @@ void MarkerPreconditioner::build_local(const Grid& grid, KernelKind kernel, cons
       A(p, q) = sum * c.marker_volume[q / 2] * inv_cell;
       A(q, p) = sum * c.marker_volume[p / 2] * inv_cell;
     }
+  // A body that responds: less its response to each unit impulse (the product's y -= R x).
+  if (response) {
+    for (int q = 0; q < 2 * n; ++q) {
+      for (Vec2& v : c.pass_increment) v = {0.0, 0.0};
+      c.pass_increment[q / 2][q % 2] = 1.0;
+      response(body, c.pass_increment, c.pass_force);
+      for (int p = 0; p < 2 * n; ++p) A(p, q) -= c.pass_force[p / 2][p % 2];
+    }
+  }
   block.local_factor.compute(A);
 }
 

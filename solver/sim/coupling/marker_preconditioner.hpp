@@ -51,8 +51,10 @@ class MarkerPreconditioner {
   // The blocks of every body whose markers moved since they were last factorised (faces: the local
   // operator; cells: C and the outward normals), free_faces the faces the projection corrects;
   // returns whether leaks must be measured again (a body with a J S block moved).
+  // response: the bodies' response in the marker system (rigid bodies' columns join A_b; the
+  // impulses and changes are built in pass_increment and pass_force).
   bool factorise(const Grid& grid, KernelKind kernel, bool on_faces, const FluidSolver::FaceRange& free_faces,
-                 const std::vector<BodyCoupling>& coupling);
+                 std::vector<BodyCoupling>& coupling, const BodyResponse& response);
   // z: every body's markers pushed along their outward normals n_l (unknowns 2l + d of each body in
   // turn), the pattern whose image under the marker system gives the leaks.
   void normal_pattern(const std::vector<BodyCoupling>& coupling, double* z) const;
@@ -82,7 +84,7 @@ class MarkerPreconditioner {
   };
   std::vector<Block> blocks_;
   void build_local(const Grid& grid, KernelKind kernel, const FluidSolver::FaceRange& free_faces,
-                   const BodyCoupling& c, Block& block);
+                   std::size_t body, std::vector<BodyCoupling>& coupling, const BodyResponse& response, Block& block);
   std::vector<std::vector<NodeWeight>> weights_;  // the nodes of each marker of the largest body
   std::vector<std::vector<CellWeight>> cells_;    // R of each marker and component (2k + d) of the largest body
   LatticeGreensFunction green_;

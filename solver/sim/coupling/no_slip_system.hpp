@@ -66,10 +66,6 @@ struct NoSlipArrays {
   std::vector<ImplicitSpringSystem> response_systems;
 };
 
-// The response of body b's rim to marker impulses: velocity_change_l = the change of U_l over the step
-// when the fluid reaction of the impulses impulse_l = dt F_l acts on the body [length/time].
-using BodyResponse = std::function<void(std::size_t body, const std::vector<Vec2>& impulse,
-                                        std::vector<Vec2>& velocity_change)>;
 
 struct NoSlipResult {
   int products = 0;      // J P_0 S products (one Poisson solve each)
