@@ -1,6 +1,7 @@
 // The lattice Green's function of the five-point Laplacian (lattice_green_function.hpp).
 #include "fluid/lattice_green_function.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/constants.hpp"
@@ -9,6 +10,9 @@ namespace ibms {
 
 void LatticeGreensFunction::ensure(double dx, double dy, int radius) {
   if (radius <= radius_ && dx == dx_ && dy == dy_) return;
+  // Grown to at least twice the old reach, so that bodies asking one more cell at a time do not
+  // rebuild it at every step.
+  if (dx == dx_ && dy == dy_) radius = std::max(radius, 2 * radius_);
   dx_ = dx;
   dy_ = dy;
   radius_ = radius;

@@ -17,7 +17,8 @@ namespace ibms {
 
 class LatticeGreensFunction {
  public:
-  // The table for offsets |m|, |n| <= radius on cells dx x dy; kept when it already covers them.
+  // The table for offsets |m|, |n| <= radius on cells dx x dy; kept when it already covers them,
+  // else grown to at least twice its reach.
   void ensure(double dx, double dy, int radius);
   // G(m,n) - G(0,0) for |m|, |n| <= radius() [time^0 length^2: L G = delta].
   double operator()(int m, int n) const {

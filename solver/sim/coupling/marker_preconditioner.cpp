@@ -26,6 +26,11 @@ void MarkerPreconditioner::reserve(const std::vector<BodyCoupling>& coupling) {
   for (auto& w : weights_) w.reserve(36);
   cells_.resize(2 * largest);
   for (auto& r : cells_) r.reserve(72);
+  band_index_.resize(2 * largest);
+  for (auto& r : band_index_) r.reserve(72);
+  band_.reserve(16 * largest);
+  band_potential_.reserve(16 * largest);
+  band_green_.reserve(256 * largest * largest);
 }
 
 namespace {
@@ -67,10 +72,13 @@ bool MarkerPreconditioner::factorise(const Grid& grid, KernelKind kernel, bool o
     const BodyCoupling& c = coupling[b];
     const Eigen::Index n = static_cast<Eigen::Index>(c.marker.size());
     Block& block = blocks_[b];
-    // A body whose rim responds in the marker system (mass-spring) keeps the identity: its rim's
-    // inertia and springs, not the kernel, set that part of the system.
+    // A rigid body that responds in the marker system takes A_b less its response. A mass-spring
+    // rim keeps the identity: its rim's inertia and springs, not the kernel, set that part of the
+    // system, and its own block (A_b less its response, rebuilt as the rim moves) halves the
+    // products but costs more to build than they save (docs/method.md §3.7).
+    const bool responds = !c.body_velocity_change.empty();
     const bool rigid = c.response_mass > 0.0;
-    block.identity = !c.body_velocity_change.empty() && !rigid;
+    block.identity = responds && !rigid;
     if (block.identity) {
       block.leak = 0.0;
       continue;
@@ -227,18 +235,44 @@ void MarkerPreconditioner::build_local(const Grid& grid, KernelKind kernel, cons
       g += image_x.sign * image_y.sign * green_(a.i + b.i - image_x.mirror, a.j + b.j - image_y.mirror);
     return g;
   };
+  // The cells all the R_k touch (the band along the rim), G among them once, then for each
+  // column q the potential T_q = G R_q on the band, and A_pq = C_pq + R_p . T_q.
+  band_.clear();
+  for (int k = 0; k < 2 * n; ++k)
+    for (const CellWeight& a : cells_[k]) band_.push_back({a.j, a.i});
+  std::sort(band_.begin(), band_.end());
+  band_.erase(std::unique(band_.begin(), band_.end()), band_.end());
+  const std::size_t cells = band_.size();
+  for (int k = 0; k < 2 * n; ++k) {
+    band_index_[k].clear();
+    for (const CellWeight& a : cells_[k])
+      band_index_[k].push_back(static_cast<int>(
+          std::lower_bound(band_.begin(), band_.end(), std::array<int, 2>{a.j, a.i}) - band_.begin()));
+  }
+  band_green_.resize(cells * cells);
+  for (std::size_t r = 0; r < cells; ++r)
+    for (std::size_t t = 0; t <= r; ++t) {
+      const CellWeight a{band_[r][1], band_[r][0], 0.0}, b{band_[t][1], band_[t][0], 0.0};
+      band_green_[r * cells + t] = band_green_[t * cells + r] = green(a, b);
+    }
+  band_potential_.resize(cells);
   Eigen::MatrixXd& A = block.local;
   A.resize(2 * n, 2 * n);
   const double inv_cell = 1.0 / (dx * dy);
-  for (int p = 0; p < 2 * n; ++p)
-    for (int q = p; q < 2 * n; ++q) {
+  for (int q = 0; q < 2 * n; ++q) {
+    std::fill(band_potential_.begin(), band_potential_.end(), 0.0);
+    for (std::size_t e = 0; e < cells_[q].size(); ++e) {
+      const double w = cells_[q][e].weight;
+      const double* column = band_green_.data() + static_cast<std::size_t>(band_index_[q][e]) * cells;
+      for (std::size_t r = 0; r < cells; ++r) band_potential_[r] += w * column[r];
+    }
+    for (int p = 0; p < 2 * n; ++p) {
       // C: the kernels' overlap on the corrected faces of one component.
       double sum = p % 2 == q % 2 ? overlap(weights_[p], weights_[q]) : 0.0;
-      for (const CellWeight& a : cells_[p])
-        for (const CellWeight& b : cells_[q]) sum += a.weight * b.weight * green(a, b);
+      for (std::size_t e = 0; e < cells_[p].size(); ++e) sum += cells_[p][e].weight * band_potential_[band_index_[p][e]];
       A(p, q) = sum * c.marker_volume[q / 2] * inv_cell;
-      A(q, p) = sum * c.marker_volume[p / 2] * inv_cell;
     }
+  }
   // A body that responds: less its response to each unit impulse (the product's y -= R x).
   if (response) {
     for (int q = 0; q < 2 * n; ++q) {

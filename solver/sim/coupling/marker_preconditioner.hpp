@@ -28,6 +28,7 @@
 // rim's inertia and springs dominate that part of the system, and J S there doubled the products
 // (16 swelling wheels in the two-sided cavity: 5.2 a step without it, 10.4 with it).
 #pragma once
+#include <array>
 #include <cstddef>
 #include <vector>
 
@@ -88,6 +89,11 @@ class MarkerPreconditioner {
   std::vector<std::vector<NodeWeight>> weights_;  // the nodes of each marker of the largest body
   std::vector<std::vector<CellWeight>> cells_;    // R of each marker and component (2k + d) of the largest body
   LatticeGreensFunction green_;
+  // The band of cells the R of one body touch, (j, i) sorted; each R entry's place in it; G among
+  // the band's cells and the potential G R_q of one column.
+  std::vector<std::array<int, 2>> band_;
+  std::vector<std::vector<int>> band_index_;
+  std::vector<double> band_green_, band_potential_;
   double cell_area_ = 1.0;
 };
 
