@@ -96,4 +96,74 @@ void add_triangle_cell_overlaps(const Grid& grid, const std::array<double, 2>& a
   }
 }
 
+void add_polygon_cell_overlaps(const Grid& grid, const std::array<double, 2>* vertices, std::size_t n,
+                               std::vector<CellOverlap>& overlaps, PolygonOverlapWork& work) {
+  if (n < 3) return;
+  double twice_area = 0.0;
+  double x_min = HUGE_VAL, x_max = -HUGE_VAL, y_min = HUGE_VAL, y_max = -HUGE_VAL;
+  for (std::size_t k = 0; k < n; ++k) {
+    const auto& a = vertices[k];
+    const auto& b = vertices[(k + 1) % n];
+    twice_area += a[0] * b[1] - b[0] * a[1];
+    x_min = std::min(x_min, a[0]);
+    x_max = std::max(x_max, a[0]);
+    y_min = std::min(y_min, a[1]);
+    y_max = std::max(y_max, a[1]);
+  }
+  if (twice_area == 0.0) return;
+  const double orientation = twice_area > 0.0 ? 1.0 : -1.0;  // the shares below are counter-clockwise
+  const double dx = grid.dx(), dy = grid.dy(), cell_area = dx * dy;
+  const int i0 = static_cast<int>(std::floor((x_min - grid.origin_x) / dx));
+  const int i1 = static_cast<int>(std::floor((x_max - grid.origin_x) / dx));
+  const int j0 = static_cast<int>(std::floor((y_min - grid.origin_y) / dy));
+  const int j1 = static_cast<int>(std::floor((y_max - grid.origin_y) / dy));
+  const int columns = i1 - i0 + 1, rows = j1 - j0 + 1;
+  const std::size_t cells = static_cast<std::size_t>(columns) * static_cast<std::size_t>(rows);
+  if (work.partial.size() < cells) {
+    work.partial.resize(cells);
+    work.full.resize(cells);
+  }
+  std::fill(work.partial.begin(), work.partial.begin() + static_cast<std::ptrdiff_t>(cells), 0.0);
+  std::fill(work.full.begin(), work.full.begin() + static_cast<std::ptrdiff_t>(cells), 0.0);
+  const auto at = [columns](int i, int j) { return static_cast<std::size_t>(j) * static_cast<std::size_t>(columns) + static_cast<std::size_t>(i); };
+  for (std::size_t k = 0; k < n; ++k) {
+    const auto& p = orientation > 0.0 ? vertices[k] : vertices[(k + 1) % n];
+    const auto& q = orientation > 0.0 ? vertices[(k + 1) % n] : vertices[k];
+    if (p[0] == q[0]) continue;  // vertical: no x extent
+    const double left = std::min(p[0], q[0]), right = std::max(p[0], q[0]);
+    const int c0 = std::max(0, static_cast<int>(std::floor((left - grid.origin_x) / dx)) - i0);
+    const int c1 = std::min(columns - 1, static_cast<int>(std::floor((right - grid.origin_x) / dx)) - i0);
+    const double slope = (q[1] - p[1]) / (q[0] - p[0]);
+    const double sign = q[0] > p[0] ? -1.0 : 1.0;
+    for (int c = c0; c <= c1; ++c) {
+      const double x0 = grid.origin_x + (i0 + c) * dx;
+      const double a = std::max(left, x0), b = std::min(right, x0 + dx);
+      if (a >= b) continue;
+      const double ya = p[1] + (a - p[0]) * slope, yb = p[1] + (b - p[0]) * slope;
+      const double lo = std::min(ya, yb), hi = std::max(ya, yb);
+      // Rows the edge's y-range crosses take their share; the rows below it, the full band, carried
+      // down from the first of them.
+      const int r_lo = std::clamp(static_cast<int>(std::floor((lo - grid.origin_y) / dy)) - j0, 0, rows - 1);
+      const int r_hi = std::clamp(static_cast<int>(std::floor((hi - grid.origin_y) / dy)) - j0, 0, rows - 1);
+      for (int r = r_lo; r <= r_hi; ++r) {
+        const double y0 = grid.origin_y + (j0 + r) * dy;
+        work.partial[at(c, r)] += sign * (b - a) * mean_in_band(lo, hi, y0, dy);
+      }
+      if (r_lo > 0) work.full[at(c, r_lo - 1)] += sign * (b - a) * dy;
+    }
+  }
+  for (int c = 0; c < columns; ++c) {
+    double carried = 0.0;
+    for (int r = rows - 1; r >= 0; --r) {
+      carried += work.full[at(c, r)];
+      const double area = work.partial[at(c, r)] + carried;
+      if (!(area > 1e-12 * cell_area)) continue;
+      const int i = i0 + c, j = j0 + r;
+      if (!grid.periodic_x && (i < 0 || i >= grid.nx)) continue;
+      if (!grid.periodic_y && (j < 0 || j >= grid.ny)) continue;
+      overlaps.push_back({wrap(i, grid.nx), wrap(j, grid.ny), std::min(area, cell_area)});
+    }
+  }
+}
+
 }  // namespace ibms

@@ -25,4 +25,19 @@ void add_triangle_cell_overlaps(const Grid& grid, const std::array<double, 2>& a
                                 const std::array<double, 2>& b, const std::array<double, 2>& c,
                                 std::vector<CellOverlap>& overlaps);
 
+// Work arrays of add_polygon_cell_overlaps, grown to the largest bounding box seen.
+struct PolygonOverlapWork {
+  std::vector<double> partial, full;
+};
+
+// Appends the cells overlapped by the simple polygon `vertices` (either orientation) with their
+// overlap areas to `overlaps` (not cleared), by the same edge shares as the triangles: an edge gives
+// the cells of its columns that its y-range crosses their share, and every cell below it within
+// those columns the full band, added once per column and carried down the column (a cell's cost is
+// its bounding-box cell and the edges crossing it, not the edges times the cells). Equal to the sum
+// of its fan triangles' overlaps to round-off (test_triangle_overlap); cells with an overlap below
+// 1e-12 of a cell (the cancelled sums of cells outside) are skipped.
+void add_polygon_cell_overlaps(const Grid& grid, const std::array<double, 2>* vertices, std::size_t n,
+                               std::vector<CellOverlap>& overlaps, PolygonOverlapWork& work);
+
 }  // namespace ibms

@@ -52,6 +52,10 @@ struct BodyCoupling {
   // I_T = sum alpha_T u h^2 from the previous step (region X^{n-1}, velocity u^n).
   std::vector<std::vector<CellOverlap>> triangle_cells;
   std::vector<Vec2> triangle_momentum;     // [length^3/time per unit depth]
+  // A rigid or prescribed body takes the rim polygon's cells in one pass (triangle_cells[0]) and its
+  // momentum in triangle_momentum[0] (the others 0): its force and torque are sums over the
+  // triangles, which the polygon gives at once.
+  PolygonOverlapWork polygon_work;
   // Angular momentum of the inner fluid, sum_T sum_ij alpha_T (x_ij - X_ref) x u_ij h^2, about the
   // centre point X_ref at the time it was sampled [length^4/time per unit depth], and the torque
   // rho_f dL/dt about the centre X_c^n that it gives (variant K; 0 for variant A) [force].

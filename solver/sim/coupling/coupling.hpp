@@ -56,8 +56,14 @@ class Coupling {
   virtual void predict(const CouplingStep& step) = 0;
   // Step 3: the force the projection balances on cells and faces (FaceForcing, §2.3); nullptr: none.
   virtual const FaceForcing* projection_forcing() const { return nullptr; }
-  // Step 4: the slip at t^{n+1} (§3.7), after corrections where the coupling holds no-slip.
+  // Step 4: the corrections where the coupling holds no-slip at t^{n+1} (§3.7), with the slip they
+  // leave in the markers' slip_max ... face_slip_rms.
   virtual CouplingWork hold(const CouplingStep& step) = 0;
+  // The slip at t^{n+1} into the markers' slip_max ... face_slip_rms where hold leaves it unmeasured
+  // (the papers' coupling corrects nothing): called when a series row records it, with the step's
+  // markers and targets and the fluid at t^{n+1}.
+  virtual void measure_slip_at_end(const FluidSolver& /*solver*/, const FluidState& /*fluid*/,
+                                   std::vector<BodyCoupling>& /*markers*/) const {}
 
   // The stages `ibms info` lists (Simulation::stage_names): the forcing, and the corrections
   // after the projection (empty: none).

@@ -27,13 +27,12 @@ void DirectForcing::predict(const CouplingStep& step) {
   }
 }
 
-CouplingWork DirectForcing::hold(const CouplingStep& step) {
-  auto t = step.timers.time(Stage::ib_forcing);
-  const Grid& grid = step.solver.grid();
-  const WallVelocities walls = wall_velocities_at(step.solver.boundaries(), step.time_n + step.dt);
-  measure_face_slip(grid, kernel_, walls, step.fluid.velocity_face_x, step.fluid.velocity_face_y, step.markers);
-  measure_slip(grid, kernel_, walls, step.fluid.velocity_x, step.fluid.velocity_y, step.markers);
-  return {};
+void DirectForcing::measure_slip_at_end(const FluidSolver& solver, const FluidState& fluid,
+                                        std::vector<BodyCoupling>& markers) const {
+  const Grid& grid = solver.grid();
+  const WallVelocities walls = wall_velocities_at(solver.boundaries(), fluid.time);  // t^{n+1}
+  measure_face_slip(grid, kernel_, walls, fluid.velocity_face_x, fluid.velocity_face_y, markers);
+  measure_slip(grid, kernel_, walls, fluid.velocity_x, fluid.velocity_y, markers);
 }
 
 std::string DirectForcing::forcing_stage() const {

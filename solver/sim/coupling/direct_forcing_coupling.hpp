@@ -20,7 +20,10 @@ class DirectForcing final : public Coupling {
  public:
   DirectForcing(const IbmSpec& ibm, KernelKind kernel);
   void predict(const CouplingStep& step) override;
-  CouplingWork hold(const CouplingStep& step) override;
+  // Nothing to correct: the slip is measured only when a series row records it.
+  CouplingWork hold(const CouplingStep& /*step*/) override { return {}; }
+  void measure_slip_at_end(const FluidSolver& solver, const FluidState& fluid,
+                           std::vector<BodyCoupling>& markers) const override;
   std::string forcing_stage() const override;
 
  private:

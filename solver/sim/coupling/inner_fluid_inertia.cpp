@@ -37,8 +37,18 @@ double triangle_angular_momentum(const Grid& grid, const std::vector<CellOverlap
   return moment;
 }
 
-// Cells of each fan triangle (c, l, l+1) at the body's current positions.
+// A body whose points move together (rigid, prescribed) takes its rim polygon as one region.
+bool whole_polygon(const MassSpringBody& body) { return body.kind != BodyKind::mass_spring; }
+
+// Cells of each fan triangle (c, l, l+1) at the body's current positions; of the rim polygon, in
+// triangle_cells[0], for a body whose points move together.
 void locate_triangles(const Grid& grid, const MassSpringBody& body, BodyCoupling& c) {
+  if (whole_polygon(body)) {
+    c.triangle_cells[0].clear();
+    add_polygon_cell_overlaps(grid, body.position.data(), static_cast<std::size_t>(body.n_surface),
+                              c.triangle_cells[0], c.polygon_work);
+    return;
+  }
   const Vec2& centre = body.position[body.centre_index()];
   for (int l = 0; l < body.n_surface; ++l) {
     c.triangle_cells[l].clear();  // keeps its capacity: no allocation after the first steps
@@ -58,9 +68,12 @@ void sample_inner_fluid_momentum(const Grid& grid, const FluidState& fluid,
     // Room for the triangles' cells as the body moves and turns (their count changes by a few
     // cells), so that the step loop does not reallocate them.
     for (auto& cells : c.triangle_cells) cells.reserve(2 * cells.size() + 16);
+    for (auto* v : {&c.polygon_work.partial, &c.polygon_work.full}) v->reserve(2 * v->size() + 64);
     c.inner_reference_centre = bodies[b].position[bodies[b].centre_index()];
     c.inner_angular_momentum = 0.0;
-    for (int l = 0; l < bodies[b].n_surface; ++l) {
+    const int regions = whole_polygon(bodies[b]) ? 1 : bodies[b].n_surface;
+    for (Vec2& m : c.triangle_momentum) m = {0.0, 0.0};
+    for (int l = 0; l < regions; ++l) {
       c.triangle_momentum[l] = triangle_momentum(c.triangle_cells[l], fluid);
       c.inner_angular_momentum +=
           triangle_angular_momentum(grid, c.triangle_cells[l], fluid, c.inner_reference_centre);
@@ -86,7 +99,15 @@ void kempe_inner_fluid_inertia(const Grid& grid, double fluid_density, const Flu
     const double shift_x = x_c[0] - c.inner_reference_centre[0], shift_y = x_c[1] - c.inner_reference_centre[1];
     const double angular_n = c.inner_angular_momentum - (shift_x * momentum_n[1] - shift_y * momentum_n[0]);
     double angular_np1 = 0.0;
-    for (int l = 0; l < body.n_surface; ++l) {
+    if (whole_polygon(body)) {  // one region: its force on the centre point (a sum is all the body takes)
+      const Vec2 momentum_np1 = triangle_momentum(c.triangle_cells[0], fluid);
+      angular_np1 = triangle_angular_momentum(grid, c.triangle_cells[0], fluid, x_c);
+      for (int d = 0; d < 2; ++d)
+        c.inner_fluid_force[body.centre_index()][d] = fluid_density * (momentum_np1[d] - momentum_n[d]) / dt;
+      for (Vec2& m : c.triangle_momentum) m = {0.0, 0.0};
+      c.triangle_momentum[0] = momentum_np1;
+    }
+    for (int l = 0; l < (whole_polygon(body) ? 0 : body.n_surface); ++l) {
       const Vec2 momentum_np1 = triangle_momentum(c.triangle_cells[l], fluid);  // I_T(X^n, u^{n+1})
       angular_np1 += triangle_angular_momentum(grid, c.triangle_cells[l], fluid, x_c);
       // docs/method.md §1.7 step 3 (Reynolds-transport form) and step 4 (a third to each vertex).

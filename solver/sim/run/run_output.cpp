@@ -344,6 +344,7 @@ void RunOutput::end_step(Simulation& sim, const ControlVolumeMonitor& control_vo
   last_residual_ = steady_residual;
   if (sim.fluid().step % sim.scene().output.series_every != 0) return;
   auto t = sim.timers().time(Stage::output);
+  sim.coupling().measure_slip_at_end(sim.fluid_solver(), sim.fluid(), sim.markers());
   write_series(file_, sim, control_volumes, dt, cfl, steady_residual, body_table_, per_body_, present_);
   series_step_ = sim.fluid().step;
 }
@@ -355,8 +356,10 @@ void RunOutput::checkpoint(Simulation& sim, double next_snapshot) {
 
 void RunOutput::finish(Simulation& sim, const ControlVolumeMonitor& control_volumes, double next_snapshot) {
   auto t = sim.timers().time(Stage::output);
-  if (last_dt_ > 0.0 && series_step_ != sim.fluid().step)
+  if (last_dt_ > 0.0 && series_step_ != sim.fluid().step) {
+    sim.coupling().measure_slip_at_end(sim.fluid_solver(), sim.fluid(), sim.markers());
     write_series(file_, sim, control_volumes, last_dt_, last_cfl_, last_residual_, body_table_, per_body_, present_);
+  }
   // The checkpoint first: write_snapshot refills the velocity ghost layers.
   write_simulation_checkpoint(file_, sim, next_snapshot);
   write_snapshot(file_, sim);
