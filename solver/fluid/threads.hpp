@@ -4,6 +4,9 @@
 // result does not depend on the thread count (test_threads). Without OpenMP everything is serial.
 #pragma once
 
+#include <cstddef>
+#include <exception>
+
 #if defined(_OPENMP)
 #include <omp.h>
 #endif
@@ -89,3 +92,36 @@ class ThreadGovernor {
 #else
 #define IBMS_PARALLEL_ROWS
 #endif
+
+namespace ibms {
+
+// Runs f(b) for b = 0 .. n - 1 over the loop threads, each b on one thread (dynamic chunks: bodies
+// differ in size). When f(b) writes only body b's data the result does not depend on the thread
+// count. An exception from f is rethrown after the loop, that of the lowest b (the one a serial
+// loop would have met first); inside a parallel region, or with one thread, a plain loop.
+template <class F>
+void for_each_body(std::size_t n, F&& f) {
+#if defined(_OPENMP)
+  if (n > 1 && loop_threads() > 1 && !omp_in_parallel()) {
+    std::exception_ptr error;
+    long first_failed = -1;
+#pragma omp parallel for schedule(dynamic, 4)
+    for (long b = 0; b < static_cast<long>(n); ++b) {
+      try {
+        f(static_cast<std::size_t>(b));
+      } catch (...) {
+#pragma omp critical(ibms_for_each_body)
+        if (first_failed < 0 || b < first_failed) {
+          first_failed = b;
+          error = std::current_exception();
+        }
+      }
+    }
+    if (error) std::rethrow_exception(error);
+    return;
+  }
+#endif
+  for (std::size_t b = 0; b < n; ++b) f(b);
+}
+
+}  // namespace ibms

@@ -6,6 +6,7 @@
 
 #include "core/constants.hpp"
 #include "core/errors.hpp"
+#include "fluid/threads.hpp"
 #include "ibm/direct_forcing.hpp"
 #include "ibm/marker_weights.hpp"
 
@@ -189,10 +190,11 @@ void apply_direct_forcing(const Grid& grid, KernelKind kernel, const WallVelocit
   for (int pass = 0; pass < n_passes; ++pass) {
     // All markers of all bodies see the same u~ within one pass (Uhlmann 2005, step 2), then
     // every body spreads (step 4); later passes correct what the earlier ones left (Luo et al. 2007).
-    for (BodyCoupling& c : coupling) {
+    for_each_body(coupling.size(), [&](std::size_t b) {
+      BodyCoupling& c = coupling[b];
       interpolate(grid, kernel, walls, velocity_star_x, velocity_star_y, c.marker, c.interpolated_velocity);
       direct_forcing(c.target_velocity, c.interpolated_velocity, dt, c.pass_force);  // Uhlmann eq. (14)
-    }
+    });
     for (BodyCoupling& c : coupling) {
       // u~ += dt f with f = S F: spreading dt F directly adds dt f (spread is linear).
       for (std::size_t l = 0; l < c.marker.size(); ++l)
@@ -249,13 +251,17 @@ double slip_of_interpolated(std::vector<BodyCoupling>& coupling, bool faces) {
 
 double measure_slip(const Grid& grid, KernelKind kernel, const WallVelocities& walls, const CellField& velocity_x,
                     const CellField& velocity_y, std::vector<BodyCoupling>& coupling) {
-  for (BodyCoupling& c : coupling) interpolate(grid, kernel, walls, velocity_x, velocity_y, c.marker, c.interpolated_velocity);
+  for_each_body(coupling.size(), [&](std::size_t b) {
+    interpolate(grid, kernel, walls, velocity_x, velocity_y, coupling[b].marker, coupling[b].interpolated_velocity);
+  });
   return slip_of_interpolated(coupling, false);
 }
 
 double measure_face_slip(const Grid& grid, KernelKind kernel, const WallVelocities& walls, const FaceField& face_x,
                          const FaceField& face_y, std::vector<BodyCoupling>& coupling) {
-  for (BodyCoupling& c : coupling) interpolate_faces(grid, kernel, walls, face_x, face_y, c.marker, c.interpolated_velocity);
+  for_each_body(coupling.size(), [&](std::size_t b) {
+    interpolate_faces(grid, kernel, walls, face_x, face_y, coupling[b].marker, coupling[b].interpolated_velocity);
+  });
   return slip_of_interpolated(coupling, true);
 }
 

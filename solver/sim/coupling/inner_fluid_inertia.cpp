@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "fluid/threads.hpp"
+
 namespace ibms {
 namespace {
 
@@ -84,7 +86,8 @@ void sample_inner_fluid_momentum(const Grid& grid, const FluidState& fluid,
 void kempe_inner_fluid_inertia(const Grid& grid, double fluid_density, const FluidState& fluid,
                                const std::vector<MassSpringBody>& bodies, double dt,
                                std::vector<BodyCoupling>& coupling) {
-  for (std::size_t b = 0; b < bodies.size(); ++b) {
+  // Body by body on the loop threads: each writes only its own arrays.
+  for_each_body(bodies.size(), [&](std::size_t b) {
     const MassSpringBody& body = bodies[b];
     BodyCoupling& c = coupling[b];
     locate_triangles(grid, body, c);  // region at X^n
@@ -121,7 +124,7 @@ void kempe_inner_fluid_inertia(const Grid& grid, double fluid_density, const Flu
     c.inner_fluid_torque = fluid_density * (angular_np1 - angular_n) / dt;
     c.inner_angular_momentum = angular_np1;
     c.inner_reference_centre = x_c;
-  }
+  });
 }
 
 void no_inner_fluid_inertia(const Grid&, double, const FluidState&, const std::vector<MassSpringBody>&, double,
