@@ -1,7 +1,9 @@
 // Threads. With IBMS_OPENMP (the default build) the cell loops of the
-// fluid operators and solver run as OpenMP static loops over grid rows and the FFTW transforms use
-// FFTW's OpenMP threads; every loop writes each cell from one thread and does no reduction, so the
-// result does not depend on the thread count (test_threads). Without OpenMP everything is serial.
+// fluid operators and solver run as OpenMP static loops over grid rows, the FFTW transforms use
+// FFTW's OpenMP threads, and the bodies' per-body loops (interpolation, the inner-fluid term) run
+// body by body (for_each_body); every loop writes each cell or body from one thread and does no
+// reduction, so the result does not depend on the thread count (test_threads). Without OpenMP
+// everything is serial.
 #pragma once
 
 #include <cstddef>
