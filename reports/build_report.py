@@ -106,6 +106,17 @@ def _toml(text):
         return None
 
 
+def coupling_text(ibm, bodies):
+    """The coupling of a run with bodies (ibm.coupling), and under "no_slip" with rigid bodies how they
+    answer their force (ibm.rigid_response: in the marker system, or one step late with a virtual mass)."""
+    if not bodies:
+        return "--"
+    coupling = ibm.get("coupling", "uhlmann")
+    if coupling == "no_slip" and any(b.get("kind") == "rigid" for b in bodies):
+        coupling += " (rigid: %s)" % ibm.get("rigid_response", "implicit")
+    return coupling
+
+
 def run_parameters(build, case):
     """One dict per HDF5 output of the case (its folder and sub-folders): run name, grid, h, dt
     rule, fluid scheme (convection / wall closure), markers, kernel, forcing passes, coupling, run
@@ -152,7 +163,7 @@ def run_parameters(build, case):
             bodies=len(bodies), markers=", ".join(str(m) for m in markers) if markers else "--",
             kernel=ibm.get("kernel", "--") if bodies else "--",
             passes=str(ibm.get("forcing_passes", "--")) if bodies else "--",
-            coupling=ibm.get("coupling", "uhlmann") if bodies else "--",
+            coupling=coupling_text(ibm, bodies),
             seconds=seconds, startup=startup, scene=scene))
     return sorted(rows, key=lambda r: ((r["nx"] or 0) * (r["ny"] or 0), r["run"]))
 
