@@ -17,8 +17,10 @@ void MarkerPreconditioner::reserve(const std::vector<BodyCoupling>& coupling) {
       blocks_[b].factor[d] = Eigen::LLT<Eigen::MatrixXd>(n);
     }
     blocks_[b].rhs.resize(n);
-    blocks_[b].local.resize(2 * n, 2 * n);
-    blocks_[b].local_factor = Eigen::PartialPivLU<Eigen::MatrixXd>(2 * n);
+    if (coupling[b].given_motion || coupling[b].response_mass > 0.0) {  // may take its own operator
+      blocks_[b].local.resize(2 * n, 2 * n);
+      blocks_[b].local_factor = Eigen::PartialPivLU<Eigen::MatrixXd>(2 * n);
+    }
     blocks_[b].normal.reserve(coupling[b].marker.capacity());
     blocks_[b].factorised_at.reserve(coupling[b].marker.capacity());
   }
@@ -30,7 +32,7 @@ void MarkerPreconditioner::reserve(const std::vector<BodyCoupling>& coupling) {
   for (auto& r : band_index_) r.reserve(72);
   band_.reserve(16 * largest);
   band_potential_.reserve(16 * largest);
-  band_green_.reserve(256 * largest * largest);
+  band_green_.reserve(64 * largest * largest);  // the band holds about 5 cells per marker
 }
 
 namespace {

@@ -47,7 +47,8 @@ namespace ibms {
 
 class MarkerPreconditioner {
  public:
-  // Storage for bodies with up to marker capacity markers each.
+  // Storage for bodies with up to marker capacity markers each (the own-operator blocks for the
+  // prescribed and the responding rigid bodies only).
   void reserve(const std::vector<BodyCoupling>& coupling);
   // The blocks of every body whose markers moved since they were last factorised (faces: the local
   // operator; cells: C and the outward normals), free_faces the faces the projection corrects;
