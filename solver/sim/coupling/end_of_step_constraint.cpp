@@ -39,6 +39,7 @@ EndOfStepConstraint::EndOfStepConstraint(const Scene& scene, const Grid& grid, K
       markers[b].body_velocity_change.assign(markers[b].marker.capacity(), Vec2{0.0, 0.0});
       markers[b].body_velocity_change.resize(markers[b].marker.size());
       r.virtual_mass = r.virtual_inertia = 0.0;
+      has_responding_rigid_ = true;
       continue;
     }
     r.virtual_mass = scene.ibm.virtual_mass_coefficient * scene.fluid.density * bodies[b].solid_area();
@@ -175,7 +176,11 @@ std::string EndOfStepConstraint::forcing_stage() const {
 std::string EndOfStepConstraint::correction_stage() const {
   return "no-slip corrections (force corrections projected until the slip at t^{n+1} <= " +
          fmt::format("{:g}", slip_tolerance_) +
-         " U_ref; GMRES preconditioned by J S per body and each rim's leak" +
+         " U_ref; GMRES preconditioned body by body: " +
+         (on_faces_ ? "prescribed and responding rigid bodies by their own operator (lattice Green's function), "
+                      "others by J S and the rim's leak"
+                    : "J S and the rim's leak") +
+         (has_responding_rigid_ ? "; rigid bodies: target at t^{n+1}, their response in the marker system" : "") +
          (has_mass_spring_ ? "; mass-spring rims: target at t^{n+1}, their linearised response in the marker system)"
                            : ")");
 }

@@ -3,8 +3,9 @@
 // spreads the previous step's forces into the Crank-Nicolson solve (direct forcing on the first
 // step, or when the markers changed); the projection balances the step's force on cells and faces;
 // after it, force corrections solve the marker system (sim/coupling/no_slip_system.hpp) until the
-// slip of the constrained velocity is below the tolerance. Mass-spring rims take their target at
-// t^{n+1}, their linearised response in the marker system; rigid bodies move with a virtual mass.
+// slip of the constrained velocity is below the tolerance. Mass-spring rims and rigid bodies take
+// their target at t^{n+1}, their response in the marker system (a rigid body may instead move with
+// a virtual mass, ibm.rigid_response).
 #pragma once
 #include "sim/coupling/coupling.hpp"
 #include "sim/coupling/no_slip_system.hpp"
@@ -14,7 +15,7 @@ namespace ibms {
 class EndOfStepConstraint final : public Coupling {
  public:
   // Sizes its arrays for the markers' capacities, the response storage of the mass-spring bodies,
-  // and gives the rigid bodies their virtual mass C_V rho_f V (docs/method.md §3.7).
+  // and gives the rigid bodies their response mass or virtual mass C_V rho_f V (docs/method.md §3.7).
   EndOfStepConstraint(const Scene& scene, const Grid& grid, KernelKind kernel, const std::vector<MassSpringBody>& bodies,
                       std::vector<BodyCoupling>& markers, std::vector<RigidBody>& rigid);
 
@@ -41,6 +42,7 @@ class EndOfStepConstraint final : public Coupling {
   int max_products_;           // ibm.max_coupling_iterations
   bool on_faces_;              // ibm.constrained_velocity = "faces": J_f U_f^{n+1}, cells from faces
   bool has_mass_spring_;       // a mass-spring body responds in the marker system
+  bool has_responding_rigid_ = false;  // a rigid body responds in the marker system
   double fluid_density_;       // rho_f [mass/length^3]
   Vec2 gravity_;               // g [length/time^2]
   NoSlipArrays arrays_;
