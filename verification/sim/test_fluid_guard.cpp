@@ -11,6 +11,8 @@
 #include <memory>
 #include <string>
 
+#include <unistd.h>
+
 #include "core/constants.hpp"
 #include "core/errors.hpp"
 #include "io/checkpoint.hpp"
@@ -27,7 +29,10 @@ using namespace ibms;
 
 namespace {
 
-const std::filesystem::path work_dir = std::filesystem::temp_directory_path() / "ibms_test_fluid_guard";
+// One directory per process: two test runs on one machine (a clone's and a sanitizer build's) do not
+// share the files.
+const std::filesystem::path work_dir =
+    std::filesystem::temp_directory_path() / ("ibms_test_fluid_guard_" + std::to_string(::getpid()));
 
 // Doubly periodic unit box, U = 1, nu = h / Re_h, adaptive step at run.cfl (or a fixed step).
 Scene shear_layer_scene(double cell_reynolds, double cfl, double time_step, double end_time) {

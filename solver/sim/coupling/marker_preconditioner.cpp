@@ -14,12 +14,14 @@ void MarkerPreconditioner::reserve(const std::vector<BodyCoupling>& coupling) {
     largest = std::max(largest, coupling[b].marker.capacity());
     for (int d = 0; d < 2; ++d) {
       blocks_[b].overlap[d].resize(n, n);
-      blocks_[b].factor[d] = Eigen::LLT<Eigen::MatrixXd>(n);
+      // Factorised once here (the identity) so that the factors hold their storage and a defined
+      // state; later factorisations of the same size reuse it.
+      blocks_[b].factor[d].compute(Eigen::MatrixXd::Identity(n, n));
     }
     blocks_[b].rhs.resize(n);
     if (coupling[b].given_motion || coupling[b].response_mass > 0.0) {  // may take its own operator
       blocks_[b].local.resize(2 * n, 2 * n);
-      blocks_[b].local_factor = Eigen::PartialPivLU<Eigen::MatrixXd>(2 * n);
+      blocks_[b].local_factor.compute(Eigen::MatrixXd::Identity(2 * n, 2 * n));
     }
     blocks_[b].normal.reserve(coupling[b].marker.capacity());
     blocks_[b].factorised_at.reserve(coupling[b].marker.capacity());
