@@ -198,14 +198,14 @@ void MarkerPreconditioner::build_local(const Grid& grid, KernelKind kernel, cons
     block.local_factor.compute(block.local);
     return;
   }
-  int low_i = 0, high_i = 0, low_j = 0, high_j = 0;
+  int low_i = first->i, high_i = first->i, low_j = first->j, high_j = first->j;
   for (int k = 0; k < 2 * n; ++k)
     for (const CellWeight& a : cells_[k]) {
       const int i = first->i + offset(a.i, first->i, nx, grid.periodic_x);
       const int j = first->j + offset(a.j, first->j, ny, grid.periodic_y);
-      low_i = std::min(low_i == 0 && high_i == 0 ? i : low_i, i);
+      low_i = std::min(low_i, i);
       high_i = std::max(high_i, i);
-      low_j = std::min(low_j == 0 && high_j == 0 ? j : low_j, j);
+      low_j = std::min(low_j, j);
       high_j = std::max(high_j, j);
     }
   const int extent = std::max(high_i - low_i, high_j - low_j);
