@@ -18,13 +18,13 @@ ContactSpheres gather_contact_spheres(const ContactModel& model,
 }
 
 void gather_contact_spheres(const ContactModel& model, const std::vector<MassSpringBody>& bodies,
-                            ContactSpheres& spheres, const BodyMask& members) {
+                            ContactSpheres& spheres, const BodySet& members) {
   spheres.centre.clear();
   spheres.radius.clear();
   spheres.body.clear();
   spheres.point.clear();
-  for (int b = 0; b < static_cast<int>(bodies.size()); ++b) {
-    if (!selected(members, b)) continue;
+  for (std::size_t i = 0; i < members.count(bodies.size()); ++i) {
+    const int b = static_cast<int>(members.at(i));
     const double radius = model.cds_radius_of(bodies[b]);
     for (int k = 0; k < bodies[b].n_surface; ++k) {  // surface points only; the centre has no CDS
       spheres.centre.push_back(bodies[b].position[k]);
@@ -165,30 +165,31 @@ void find_touching_pairs_body_bounds(const ContactSpheres& spheres, const WallBo
   result.n_pair_checks = 0;
   const int n = spheres.n_spheres();
   if (n < 2) return;
-  // Spheres grouped by body (counting sort): body b holds order[start[b] .. start[b + 1]).
-  const int n_bodies = *std::max_element(spheres.body.begin(), spheres.body.end()) + 1;
-  thread_local std::vector<int> start, cursor, order;
+  // The spheres in runs of one body (gather_contact_spheres lists each body's spheres together):
+  // run b holds spheres start[b] .. start[b + 1]. Runs, not body indices, so that a group of k
+  // bodies costs O(k) whatever the scene's number of bodies. A body split over two runs would only
+  // cost a broad-phase test: check_pair rejects spheres of one body by their body index.
+  thread_local std::vector<int> start;
   thread_local std::vector<std::array<double, 4>> bounds;  // x_min, x_max, y_min, y_max of the spheres
-  start.assign(n_bodies + 1, 0);
-  order.resize(n);
-  for (int s = 0; s < n; ++s) ++start[spheres.body[s] + 1];
-  for (int b = 0; b < n_bodies; ++b) start[b + 1] += start[b];
-  cursor.assign(start.begin(), start.end() - 1);
-  for (int s = 0; s < n; ++s) order[cursor[spheres.body[s]]++] = s;
+  start.clear();
+  for (int s = 0; s < n; ++s)
+    if (s == 0 || spheres.body[s] != spheres.body[s - 1]) start.push_back(s);
+  const int n_bodies = static_cast<int>(start.size());
+  start.push_back(n);
   bounds.assign(n_bodies, {HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL});
-  for (int s = 0; s < n; ++s) {
-    auto& bb = bounds[spheres.body[s]];
-    const auto& x = spheres.centre[s];
-    const double r = spheres.radius[s];
-    bb = {std::min(bb[0], x[0] - r), std::max(bb[1], x[0] + r), std::min(bb[2], x[1] - r), std::max(bb[3], x[1] + r)};
-  }
+  for (int b = 0; b < n_bodies; ++b)
+    for (int s = start[b]; s < start[b + 1]; ++s) {
+      auto& bb = bounds[b];
+      const auto& x = spheres.centre[s];
+      const double r = spheres.radius[s];
+      bb = {std::min(bb[0], x[0] - r), std::max(bb[1], x[0] + r), std::min(bb[2], x[1] - r), std::max(bb[3], x[1] + r)};
+    }
   // Broad phase without an all-pairs loop: the boxes' centres hashed into cells of the largest box
   // side, so that two overlapping boxes (centres less than the mean of their sides apart in each
   // direction) are always visited.
   double side = 0.0;
   std::array<double, 2> low{HUGE_VAL, HUGE_VAL}, high{-HUGE_VAL, -HUGE_VAL};
   for (int b = 0; b < n_bodies; ++b) {
-    if (start[b + 1] == start[b]) continue;  // a body without spheres
     const auto& bb = bounds[b];
     side = std::max({side, bb[1] - bb[0], bb[3] - bb[2]});
     low = {std::min(low[0], bb[0]), std::min(low[1], bb[2])};
@@ -209,8 +210,7 @@ void find_touching_pairs_body_bounds(const ContactSpheres& spheres, const WallBo
                                        std::min(p[3], q[3])};
     const auto collect = [&](int body, std::vector<int>& out) {
       out.clear();
-      for (int k = start[body]; k < start[body + 1]; ++k) {
-        const int t = order[k];
+      for (int t = start[body]; t < start[body + 1]; ++t) {
         const auto& x = spheres.centre[t];
         const double r = spheres.radius[t];
         if (x[0] + r >= common[0] && x[0] - r <= common[1] && x[1] + r >= common[2] && x[1] - r <= common[3])
@@ -226,7 +226,7 @@ void find_touching_pairs_body_bounds(const ContactSpheres& spheres, const WallBo
     for_each_near_pair(
         n_bodies, [&](int b) { return std::array<double, 2>{0.5 * (bounds[b][0] + bounds[b][1]),
                                                             0.5 * (bounds[b][2] + bounds[b][3])}; },
-        [&](int b) { return start[b + 1] > start[b]; }, low, {high[0] - low[0], high[1] - low[1]}, {false, false},
+        [](int) { return true; }, low, {high[0] - low[0], high[1] - low[1]}, {false, false},
         side, hashed, visit);
   sort_pairs(result);
 }

@@ -28,7 +28,7 @@ ContactSpheres gather_contact_spheres(const ContactModel& model,
 // The same into `out` (cleared; its capacity is reused, so no allocation once it has grown), for
 // the selected bodies only (members; empty = all).
 void gather_contact_spheres(const ContactModel& model, const std::vector<MassSpringBody>& bodies,
-                            ContactSpheres& out, const BodyMask& members = {});
+                            ContactSpheres& out, const BodySet& members = {});
 
 // Two touching spheres of different bodies, first < second (indices into ContactSpheres).
 struct SpherePair {

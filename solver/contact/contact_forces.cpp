@@ -48,7 +48,7 @@ struct ActiveContact {
 };
 
 void collect_pair_contacts(const ContactModel& model, const std::vector<MassSpringBody>& bodies,
-                           const BodyMask& members, const WallBox& box, std::vector<ActiveContact>& contacts,
+                           const BodySet& members, const WallBox& box, std::vector<ActiveContact>& contacts,
                            ContactStats& stats) {
   // Scratch kept across calls (as the pair search's own bins): no allocation once grown.
   thread_local ContactSpheres spheres;
@@ -80,10 +80,10 @@ void collect_pair_contacts(const ContactModel& model, const std::vector<MassSpri
 
 // Walls 0..3: x = x0, x = x0 + Lx, y = y0, y = y0 + Ly; only in non-periodic directions.
 void collect_wall_contacts(const ContactModel& model, const std::vector<MassSpringBody>& bodies,
-                           const BodyMask& members, const WallBox& box, std::vector<ActiveContact>& contacts,
+                           const BodySet& members, const WallBox& box, std::vector<ActiveContact>& contacts,
                            ContactStats& stats) {
-  for (int b = 0; b < static_cast<int>(bodies.size()); ++b) {
-    if (!selected(members, b)) continue;
+  for (std::size_t i = 0; i < members.count(bodies.size()); ++i) {
+    const int b = static_cast<int>(members.at(i));
     if (bodies[b].kind == BodyKind::prescribed) continue;  // its motion is given, walls cannot push it
     const double radius = model.cds_radius_of(bodies[b]);
     for (int k = 0; k < bodies[b].n_surface; ++k) {
@@ -160,7 +160,7 @@ void count_parallel_pairs(const std::vector<ActiveContact>& contacts, std::vecto
 ContactStats add_contact_forces(const ContactModel& model, const std::vector<MassSpringBody>& bodies,
                                 const WallBox& box,
                                 std::vector<std::vector<std::array<double, 2>>>& force_per_body,
-                                const BodyMask& members) {
+                                const BodySet& members) {
   ContactStats stats;
   if (!model.enabled()) return stats;
   if (force_per_body.size() != bodies.size())
@@ -172,9 +172,7 @@ ContactStats add_contact_forces(const ContactModel& model, const std::vector<Mas
   thread_local std::vector<double> parallel_pairs;
   contacts.clear();
   // One body has no partner: skip the pair search entirely, walls only.
-  const std::size_t n_members =
-      members.empty() ? bodies.size() : static_cast<std::size_t>(std::count(members.begin(), members.end(), 1));
-  if (n_members > 1) collect_pair_contacts(model, bodies, members, box, contacts, stats);
+  if (members.count(bodies.size()) > 1) collect_pair_contacts(model, bodies, members, box, contacts, stats);
   if (model.walls) collect_wall_contacts(model, bodies, members, box, contacts, stats);
 
   count_parallel_pairs(contacts, groups, group_of, parallel_pairs);

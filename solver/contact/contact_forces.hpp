@@ -36,6 +36,6 @@ double contact_effective_mass(const ContactModel& model, const std::vector<MassS
 ContactStats add_contact_forces(const ContactModel& model, const std::vector<MassSpringBody>& bodies,
                                 const WallBox& box,
                                 std::vector<std::vector<std::array<double, 2>>>& force_per_body,
-                                const BodyMask& members = {});
+                                const BodySet& members = {});
 
 }  // namespace ibms

@@ -47,11 +47,11 @@ double cds_point_mass(const MassSpringBody& body, int point) {
   return body.kind == BodyKind::rigid ? body.total_mass() / 3.0 : body.mass[point];
 }
 
-double lightest_cds_point_mass(const std::vector<MassSpringBody>& bodies, const BodyMask& members) {
+double lightest_cds_point_mass(const std::vector<MassSpringBody>& bodies, const BodySet& members) {
   double lightest = std::numeric_limits<double>::infinity();
-  for (std::size_t b = 0; b < bodies.size(); ++b) {
-    const MassSpringBody& body = bodies[b];
-    if (!selected(members, b) || body.kind == BodyKind::prescribed) continue;  // infinitely heavy: its partner's mass counts
+  for (std::size_t i = 0; i < members.count(bodies.size()); ++i) {
+    const MassSpringBody& body = bodies[members.at(i)];
+    if (body.kind == BodyKind::prescribed) continue;  // infinitely heavy: its partner's mass counts
     for (int k = 0; k < body.n_surface; ++k) lightest = std::min(lightest, cds_point_mass(body, k));
   }
   return lightest;
@@ -62,15 +62,15 @@ namespace {
 }  // namespace
 
 ContactSubstepBounds contact_substep_bounds(const ContactModel& model, const std::vector<MassSpringBody>& bodies,
-                                            const BodyMask& members) {
+                                            const BodySet& members) {
   constexpr double dashpot_safety = 0.5;      // docs/method.md §5.3 safety factor on a stability limit
   ContactSubstepBounds bounds;
   if (!model.enabled() || bodies.empty()) return bounds;
   const double lightest_point = lightest_cds_point_mass(bodies, members);
   double heaviest_body = 0.0, heaviest_point = 0.0;
   std::size_t n_members = 0;
-  for (std::size_t b = 0; b < bodies.size(); ++b) {
-    if (!selected(members, b)) continue;
+  for (std::size_t i = 0; i < members.count(bodies.size()); ++i) {
+    const std::size_t b = members.at(i);
     ++n_members;
     if (bodies[b].kind == BodyKind::prescribed) continue;
     heaviest_body = std::max(heaviest_body, bodies[b].total_mass());
@@ -102,13 +102,13 @@ ContactSubstepBounds contact_substep_bounds(const ContactModel& model, const std
   return bounds;
 }
 
-double contact_substep(const ContactModel& model, const std::vector<MassSpringBody>& bodies, const BodyMask& members) {
+double contact_substep(const ContactModel& model, const std::vector<MassSpringBody>& bodies, const BodySet& members) {
   const ContactSubstepBounds bounds = contact_substep_bounds(model, bodies, members);
   return std::min(bounds.resolution, bounds.dashpot);
 }
 
 double contact_dashpot_substep(const ContactModel& model, const std::vector<MassSpringBody>& bodies,
-                               const BodyMask& members) {
+                               const BodySet& members) {
   return contact_substep_bounds(model, bodies, members).dashpot;
 }
 

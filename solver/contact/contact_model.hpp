@@ -63,9 +63,18 @@ struct ContactModel {
   double cds_radius_of(const MassSpringBody& body) const;
 };
 
-// A set of bodies: mask[b] != 0 selects body b; an empty mask selects every body.
-using BodyMask = std::vector<char>;
-inline bool selected(const BodyMask& mask, std::size_t body) { return mask.empty() || mask[body] != 0; }
+// The bodies a call works on: every body (the default), or a group given by its bodies' indices in
+// ascending order (a view of the caller's list, which outlives the call). Loops visit the members
+// only, so that a call on a group of k bodies costs O(k) whatever the number of bodies:
+//   for (std::size_t i = 0; i < members.count(bodies.size()); ++i) { const std::size_t b = members.at(i); ... }
+struct BodySet {
+  const int* list = nullptr;  // the group's bodies, ascending (unused for every body)
+  std::size_t size = 0;
+  bool every = true;
+  static BodySet group(const int* first, std::size_t n) { return {first, n, false}; }
+  std::size_t count(std::size_t n_bodies) const { return every ? n_bodies : size; }
+  std::size_t at(std::size_t i) const { return every ? i : static_cast<std::size_t>(list[i]); }
+};
 
 // The box the bodies live in: [origin_x, origin_x + length_x] x [origin_y, origin_y + length_y].
 // A periodic direction has no walls and contacts across it use the minimum image.
@@ -86,7 +95,7 @@ struct WallBox {
 // longer than that of its lightest point. Infinity when contacts are off [time].
 // members: the bodies of one contact group (contact_groups below); empty = all bodies.
 double contact_substep(const ContactModel& model, const std::vector<MassSpringBody>& bodies,
-                       const BodyMask& members = {});
+                       const BodySet& members = {});
 // The parts of contact_substep, for `ibms info` to print the figures the run uses.
 struct ContactSubstepBounds {
   double pair_stiffness = 0.0;  // k of the stiffest pair (k_Dn, or collision_time's for the heaviest m_eff) [force/length^2]
@@ -95,18 +104,18 @@ struct ContactSubstepBounds {
   double dashpot = std::numeric_limits<double>::infinity();     // dashpot stability, safety 0.5 [time]
 };
 ContactSubstepBounds contact_substep_bounds(const ContactModel& model, const std::vector<MassSpringBody>& bodies,
-                                            const BodyMask& members = {});
+                                            const BodySet& members = {});
 // The dashpot part of contact_substep alone: pure dashpot dt <= 2 m / c of the lightest CDS point
 // in active_pairs_safety pairs, safety 0.5. Infinity without damping [time].
 double contact_dashpot_substep(const ContactModel& model, const std::vector<MassSpringBody>& bodies,
-                               const BodyMask& members = {});
+                               const BodySet& members = {});
 
 // Mass a CDS point brings to a contact [mass/length]: its lumped mass, or for a rigid body m/3, the
 // smallest effective mass of a rim point of a uniform rigid disk (pushed along its rim tangent,
 // 1/m_eff = 1/m + R^2/I = 3/m). Not for prescribed bodies (infinitely heavy).
 double cds_point_mass(const MassSpringBody& body, int point);
 // The lightest CDS point mass over the bodies that can move (infinity if none) [mass/length].
-double lightest_cds_point_mass(const std::vector<MassSpringBody>& bodies, const BodyMask& members = {});
+double lightest_cds_point_mass(const std::vector<MassSpringBody>& bodies, const BodySet& members = {});
 
 // Whether a contact can begin or is under way within the next fluid step of length dt (contact
 // sub-steps run only while a contact is possible). Each body is bounded by the circle about

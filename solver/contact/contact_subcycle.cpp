@@ -115,7 +115,7 @@ void ContactSubcycler::release_list(std::vector<MassSpringBody>& bodies) {
 }
 
 void ContactSubcycler::build_list(const ContactModel& model, const WallBox& box, double skin,
-                                  const BodyMask& members, const std::vector<MassSpringBody>& bodies, double time) {
+                                  const BodySet& members, const std::vector<MassSpringBody>& bodies, double time) {
   time_built_ = time;
   gap_.clear();
   near_.clear();
@@ -156,8 +156,8 @@ void ContactSubcycler::build_list(const ContactModel& model, const WallBox& box,
   }
   // Walls: CDS closer to a wall than s / 2.
   if (model.walls) {
-    for (int b = 0; b < static_cast<int>(bodies.size()); ++b) {
-      if (!selected(members, b)) continue;
+    for (std::size_t i = 0; i < members.count(bodies.size()); ++i) {
+      const int b = static_cast<int>(members.at(i));
       const double radius = model.cds_radius_of(bodies[b]) + time * radius_rate_[b];
       for (int k = 0; k < bodies[b].n_surface; ++k) {
         for (int c = 0; c < 2; ++c) {
@@ -386,10 +386,10 @@ double ContactSubcycler::kick_and_drift(double dt, double time, double& work) {
   return std::max(std::max(m0, m1), std::max(m2, m3));
 }
 
-void ContactSubcycler::move_off_list(const BodyMask& members, std::vector<MassSpringBody>& bodies, double start,
+void ContactSubcycler::move_off_list(const BodySet& members, std::vector<MassSpringBody>& bodies, double start,
                                      double span) {
-  for (std::size_t b = 0; b < bodies.size(); ++b) {
-    if (!selected(members, b)) continue;
+  for (std::size_t i = 0; i < members.count(bodies.size()); ++i) {
+    const std::size_t b = members.at(i);
     MassSpringBody& body = bodies[b];
     for (int p = 0; p < body.n_points(); ++p) {
       if (slot_[offset_[b] + p] >= 0) continue;
@@ -402,11 +402,11 @@ void ContactSubcycler::move_off_list(const BodyMask& members, std::vector<MassSp
   }
 }
 
-std::array<double, 2> ContactSubcycler::fastest(const BodyMask& members, const std::vector<MassSpringBody>& bodies,
+std::array<double, 2> ContactSubcycler::fastest(const BodySet& members, const std::vector<MassSpringBody>& bodies,
                                                 bool off_list_only) const {
   std::array<double, 2> largest{0.0, 0.0};  // squared speed, squared slow acceleration
-  for (std::size_t b = 0; b < bodies.size(); ++b) {
-    if (!selected(members, b)) continue;
+  for (std::size_t i = 0; i < members.count(bodies.size()); ++i) {
+    const std::size_t b = members.at(i);
     const MassSpringBody& body = bodies[b];
     for (int p = 0; p < body.n_points(); ++p) {
       if (off_list_only && slot_[offset_[b] + p] >= 0) continue;
@@ -425,16 +425,24 @@ std::array<double, 2> ContactSubcycler::fastest(const BodyMask& members, const s
 ContactSubcycleResult ContactSubcycler::advance(const ContactModel& model, const WallBox& box, double dt_outer,
                                                 int n_inner,
                                                 const std::vector<std::vector<std::array<double, 2>>>& external_force,
-                                                const BodyMask& members, std::vector<MassSpringBody>& bodies,
+                                                const BodySet& members, std::vector<MassSpringBody>& bodies,
                                                 bool continues, const std::vector<double>& diameter_rate) {
   if (n_inner < 1) throw std::invalid_argument("ContactSubcycler: n_inner must be >= 1");
   if (external_force.size() != bodies.size()) throw std::invalid_argument("ContactSubcycler: one force vector per body");
   ContactSubcycleResult result;
   pair_checks_ = 0;
-  // Index of every point (sized once for the scene; entries are -1 outside a list).
-  offset_.resize(bodies.size() + 1);
-  offset_[0] = 0;
-  for (std::size_t b = 0; b < bodies.size(); ++b) offset_[b + 1] = offset_[b] + bodies[b].n_points();
+  // Index of every point (made once for the scene's bodies; entries are -1 outside a list). A call
+  // on a group checks only its members' counts, so that it costs O(members), not O(bodies).
+  bool offsets_hold = offset_.size() == bodies.size() + 1;
+  for (std::size_t i = 0; offsets_hold && i < members.count(bodies.size()); ++i) {
+    const std::size_t b = members.at(i);
+    offsets_hold = offset_[b + 1] - offset_[b] == bodies[b].n_points();
+  }
+  if (!offsets_hold) {
+    offset_.resize(bodies.size() + 1);
+    offset_[0] = 0;
+    for (std::size_t b = 0; b < bodies.size(); ++b) offset_[b + 1] = offset_[b] + bodies[b].n_points();
+  }
   if (static_cast<int>(slot_.size()) != offset_.back()) {
     slot_.assign(offset_.back(), -1);
     // Room for every point of the scene and many pairs each: no growth inside later steps.
@@ -462,12 +470,15 @@ ContactSubcycleResult ContactSubcycler::advance(const ContactModel& model, const
   spring_.resize(bodies.size());
   rate_.resize(bodies.size());
   previous_slow_.resize(bodies.size());
-  radius_rate_.assign(bodies.size(), 0.0);
-  if (!diameter_rate.empty() && model.cds_radius == 0.0)
-    for (std::size_t b = 0; b < bodies.size(); ++b) radius_rate_[b] = model.cds_radius_fraction * diameter_rate[b];
+  radius_rate_.resize(bodies.size());  // the members' entries are set here and read below
+  for (std::size_t i = 0; i < members.count(bodies.size()); ++i) {
+    const std::size_t b = members.at(i);
+    radius_rate_[b] =
+        !diameter_rate.empty() && model.cds_radius == 0.0 ? model.cds_radius_fraction * diameter_rate[b] : 0.0;
+  }
   double smallest_radius = HUGE_VAL;
-  for (std::size_t b = 0; b < bodies.size(); ++b) {
-    if (!selected(members, b)) continue;
+  for (std::size_t i = 0; i < members.count(bodies.size()); ++i) {
+    const std::size_t b = members.at(i);
     const MassSpringBody& body = bodies[b];
     if (body.kind != BodyKind::mass_spring)
       throw std::invalid_argument("ContactSubcycler: only mass_spring bodies take the contact inner loop");
@@ -489,8 +500,8 @@ ContactSubcycleResult ContactSubcycler::advance(const ContactModel& model, const
   previous_dt_ = dt_outer;
   const double skin_floor = skin_floor_fraction * smallest_radius;
   double growth = 0.0;  // fastest CDS radius growth [length/time]: two radii close a gap at twice it
-  for (std::size_t b = 0; b < bodies.size(); ++b)
-    if (selected(members, b)) growth = std::max(growth, std::abs(radius_rate_[b]));
+  for (std::size_t i = 0; i < members.count(bodies.size()); ++i)
+    growth = std::max(growth, std::abs(radius_rate_[members.at(i)]));
   const bool listed_pairs = model.inner_step == InnerStepBound::listed_pairs;
   const double dashpot_limit = listed_pairs ? contact_dashpot_substep(model, bodies, members) : HUGE_VAL;
   // Skin for the time left: the travel bound V T + A T^2 / 2 of a point without contact.
@@ -560,8 +571,8 @@ ContactSubcycleResult ContactSubcycler::advance(const ContactModel& model, const
   release_list(bodies);
   // Step 4: U += dt (F_s(x^{k+1}, U*) - F_s(x^k, U^k) - dt r) / (2 m): the velocity change over
   // the step becomes dt (F^k + F^{k+1}) / (2 m), what the extrapolated rate r gave taken back.
-  for (std::size_t b = 0; b < bodies.size(); ++b) {
-    if (!selected(members, b)) continue;
+  for (std::size_t i = 0; i < members.count(bodies.size()); ++i) {
+    const std::size_t b = members.at(i);
     MassSpringBody& body = bodies[b];
     for (Vec& f : spring_[b]) f = {-f[0], -f[1]};
     add_spring_forces(body, body.length_scale(), spring_[b]);

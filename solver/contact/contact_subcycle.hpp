@@ -88,7 +88,7 @@ class ContactSubcycler {
   // inner steps (a swelling step in the radius would set an undamped resting contact ringing).
   ContactSubcycleResult advance(const ContactModel& model, const WallBox& box, double dt_outer, int n_inner,
                                 const std::vector<std::vector<std::array<double, 2>>>& external_force,
-                                const BodyMask& members, std::vector<MassSpringBody>& bodies, bool continues = false,
+                                const BodySet& members, std::vector<MassSpringBody>& bodies, bool continues = false,
                                 const std::vector<double>& diameter_rate = {});
 
  private:
@@ -141,7 +141,7 @@ class ContactSubcycler {
     Vec normal{};
   };
 
-  void build_list(const ContactModel& model, const WallBox& box, double skin, const BodyMask& members,
+  void build_list(const ContactModel& model, const WallBox& box, double skin, const BodySet& members,
                   const std::vector<MassSpringBody>& bodies, double time);
   void release_list(std::vector<MassSpringBody>& bodies);  // candidates' state back into the bodies
   int candidate(int body, int point, const std::vector<MassSpringBody>& bodies);
@@ -152,12 +152,12 @@ class ContactSubcycler {
   // the largest squared displacement of a candidate since the list was built.
   double kick_and_drift(double dt, double time, double& work);
   // Off-list points from inner time `start` over `span` in closed form (step 3 above).
-  void move_off_list(const BodyMask& members, std::vector<MassSpringBody>& bodies, double start, double span);
+  void move_off_list(const BodySet& members, std::vector<MassSpringBody>& bodies, double start, double span);
   // Inner step that gives steps_per_contact steps per contact duration of the fastest mode the
   // listed pairs and walls can form (InnerStepBound::listed_pairs) [time]; infinity with none.
   double listed_pairs_step(const ContactModel& model);
   // Largest speed and slow acceleration of the members' points (off_list_only: of the points off the list).
-  std::array<double, 2> fastest(const BodyMask& members, const std::vector<MassSpringBody>& bodies,
+  std::array<double, 2> fastest(const BodySet& members, const std::vector<MassSpringBody>& bodies,
                                 bool off_list_only) const;
 
   Candidates points_;

@@ -21,23 +21,32 @@ double mean_in_band(double lo, double hi, double y0, double height) {
   return (0.5 * height * height + height * (hi - y1)) / span;  // lo < y0, hi > y1
 }
 
-// -integral along the edge p -> q, over its part with x in [x0, x0 + width], of g(y) dx: the edge's
-// share of the overlap of a counter-clockwise polygon with the box [x0, x0 + width] x [y0, y0 + height]
-// (the sum over the polygon's edges: the lower edges run right, the upper ones left).
-double edge_share(const std::array<double, 2>& p, const std::array<double, 2>& q, double x0, double width,
-                  double y0, double height) {
-  if (p[0] == q[0]) return 0.0;  // vertical: no x extent
-  const bool rightward = q[0] > p[0];
-  const double left = std::max(rightward ? p[0] : q[0], x0);
-  const double right = std::min(rightward ? q[0] : p[0], x0 + width);
-  if (left >= right) return 0.0;
-  const double slope = (q[1] - p[1]) / (q[0] - p[0]);
-  const double y_left = p[1] + (left - p[0]) * slope, y_right = p[1] + (right - p[0]) * slope;
-  const double mean = mean_in_band(std::min(y_left, y_right), std::max(y_left, y_right), y0, height);
-  return (rightward ? -1.0 : 1.0) * (right - left) * mean;
-}
+// An edge p -> q of a polygon, its x-range, slope and direction computed once for the cells it
+// crosses. share(): minus the integral along the edge, over its part with x in [x0, x0 + width], of
+// g(y) dx: the edge's share of the overlap of a counter-clockwise polygon with the box
+// [x0, x0 + width] x [y0, y0 + height] (the sum over the polygon's edges: the lower edges run right,
+// the upper ones left).
+struct PreparedEdge {
+  std::array<double, 2> p;
+  double left = 0.0, right = 0.0, slope = 0.0, sign = 0.0;  // sign 0: vertical, no x extent
+  PreparedEdge(const std::array<double, 2>& from, const std::array<double, 2>& to) : p(from) {
+    if (from[0] == to[0]) return;
+    const bool rightward = to[0] > from[0];
+    left = rightward ? from[0] : to[0];
+    right = rightward ? to[0] : from[0];
+    slope = (to[1] - from[1]) / (to[0] - from[0]);
+    sign = rightward ? -1.0 : 1.0;
+  }
+  double share(double x0, double width, double y0, double height) const {
+    if (sign == 0.0) return 0.0;
+    const double a = std::max(left, x0), b = std::min(right, x0 + width);
+    if (a >= b) return 0.0;
+    const double y_left = p[1] + (a - p[0]) * slope, y_right = p[1] + (b - p[0]) * slope;
+    return sign * (b - a) * mean_in_band(std::min(y_left, y_right), std::max(y_left, y_right), y0, height);
+  }
+};
 
-int wrap(int index, int n) { return ((index % n) + n) % n; }
+int wrap(int index, int n) { return index >= 0 && index < n ? index : ((index % n) + n) % n; }
 
 }  // namespace
 
@@ -49,6 +58,8 @@ void add_triangle_cell_overlaps(const Grid& grid, const std::array<double, 2>& a
   if (orientation == 0.0) return;  // degenerate triangle: no area
   const std::array<std::array<double, 2>, 3> tri =
       orientation > 0 ? std::array<std::array<double, 2>, 3>{a, b, c} : std::array<std::array<double, 2>, 3>{a, c, b};
+  const std::array<PreparedEdge, 3> edges{PreparedEdge(tri[0], tri[1]), PreparedEdge(tri[1], tri[2]),
+                                           PreparedEdge(tri[2], tri[0])};
   const double dx = grid.dx(), dy = grid.dy(), cell_area = dx * dy;
   const double x_min = std::min({a[0], b[0], c[0]}), x_max = std::max({a[0], b[0], c[0]});
   const double y_min = std::min({a[1], b[1], c[1]}), y_max = std::max({a[1], b[1], c[1]});
@@ -90,7 +101,7 @@ void add_triangle_cell_overlaps(const Grid& grid, const std::array<double, 2>& a
       // cell's columns (exact for a convex polygon; round-off kept inside [0, dx dy]).
       const double x0 = grid.origin_x + i*dx;
       double area = 0.0;
-      for (int e = 0; e < 3; ++e) area += edge_share(tri[e], tri[(e + 1) % 3], x0, dx, y_lo, dy);
+      for (const PreparedEdge& edge : edges) area += edge.share(x0, dx, y_lo, dy);
       if (area > 0.0) overlaps.push_back({wrap(i, grid.nx), wrap(j, grid.ny), std::min(area, cell_area)});
     }
   }

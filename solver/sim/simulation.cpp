@@ -159,14 +159,14 @@ void Simulation::wire_contacts() {
   }
   // Runs on several threads at once (one per body group): the forces of each group are its own;
   // the shared totals are maxima and integer sums (order-independent), updated under a lock.
-  contact_forces_ = [this](const std::vector<MassSpringBody>& bodies, const BodyMask& members, double /*time*/,
+  contact_forces_ = [this](const std::vector<MassSpringBody>& bodies, const BodySet& members, double /*time*/,
                            std::vector<std::vector<Vec2>>& forces) {
     const auto start = std::chrono::steady_clock::now();
     const ContactStats found = add_contact_forces(contact_model_, bodies, contact_box_, forces, members);
     record_contacts(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), found, 0);
   };
   if (scene_.contact.time_stepping != ContactSpec::TimeStepping::inner_loop) return;
-  contact_inner_loop_ = [this](std::vector<MassSpringBody>& bodies, const BodyMask& members, double dt_outer,
+  contact_inner_loop_ = [this](std::vector<MassSpringBody>& bodies, const BodySet& members, double dt_outer,
                                int n_inner, const std::vector<std::vector<Vec2>>& frozen_force, bool continues,
                                const std::vector<double>& diameter_rate) {
     thread_local ContactSubcycler subcycler;  // this thread's neighbour list and scratch

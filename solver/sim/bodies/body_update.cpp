@@ -12,12 +12,26 @@
 
 namespace ibms {
 
-void no_contact_forces(const std::vector<MassSpringBody>&, const BodyMask&, double, std::vector<std::vector<Vec2>>&) {}
+void no_contact_forces(const std::vector<MassSpringBody>&, const BodySet&, double, std::vector<std::vector<Vec2>>&) {}
 
 void apply_swelling_schedules(const std::vector<SwellingSchedule>& swelling, double time,
                               std::vector<MassSpringBody>& bodies) {
   for (std::size_t b = 0; b < bodies.size(); ++b)
     if (swelling[b].enabled) apply_swelling(bodies[b], swelling[b].diameter(time));
+}
+
+void SubstepGroups::list_members() {
+  const std::size_t n_groups = max_substep.size();
+  member_start.assign(n_groups + 1, 0);
+  const auto listed = [n_groups](int g) { return g >= 0 && static_cast<std::size_t>(g) < n_groups; };
+  for (const int g : group_of)
+    if (listed(g)) ++member_start[g + 1];
+  for (std::size_t g = 0; g < n_groups; ++g) member_start[g + 1] += member_start[g];
+  member_list.resize(member_start.back());
+  thread_local std::vector<int> cursor;
+  cursor.assign(member_start.begin(), member_start.end() - 1);
+  for (std::size_t b = 0; b < group_of.size(); ++b)
+    if (listed(group_of[b])) member_list[cursor[group_of[b]]++] = static_cast<int>(b);
 }
 
 bool uses_implicit_springs(const MassSpringBody& body, double dt, double spring_substep) {
@@ -74,15 +88,15 @@ void external_force(const SolidStepInputs& in, const std::vector<Vec2>* contact,
 // the inner loop (n_inner inner steps per sub-step). frozen is scratch (the caller's contact_work
 // arrays, one per body): the force on each point other than springs and contacts.
 void advance_group_inner_loop(const SolidStepInputs& in, const std::vector<SwellingSchedule>& swelling,
-                              const ContactInnerLoop& inner_loop, const BodyMask& members, int n_sub, int n_inner,
+                              const ContactInnerLoop& inner_loop, const BodySet& members, int n_sub, int n_inner,
                               std::vector<BodyCoupling>& coupling, std::vector<std::vector<Vec2>>& frozen,
                               std::vector<double>& diameter_rate, std::vector<MassSpringBody>& bodies,
                               double& contact_energy) {
   const double dt_sub = in.dt / n_sub;
   for (int k = 0; k < n_sub; ++k) {
     const double time_k = in.time + k*dt_sub;
-    for (std::size_t b = 0; b < bodies.size(); ++b) {
-      if (!selected(members, b)) continue;
+    for (std::size_t i = 0; i < members.count(bodies.size()); ++i) {
+      const std::size_t b = members.at(i);
       if (swelling[b].enabled) apply_swelling(bodies[b], swelling[b].diameter(time_k));  // L0, M follow s(t), §1.8
       diameter_rate[b] =
           swelling[b].enabled ? (swelling[b].diameter(time_k + dt_sub) - swelling[b].diameter(time_k)) / dt_sub : 0.0;
@@ -95,15 +109,15 @@ void advance_group_inner_loop(const SolidStepInputs& in, const std::vector<Swell
 
 // One group (groups.members) from t^n to t^n + dt in n_sub shared sub-steps.
 void advance_group(const SolidStepInputs& in, const std::vector<SwellingSchedule>& swelling,
-                   const ContactForces& contact_forces, const BodyMask& members, const std::vector<char>& implicit_of_body,
+                   const ContactForces& contact_forces, const BodySet& members, const std::vector<char>& implicit_of_body,
                    std::vector<ImplicitSpringSystem>& implicit, int n_sub,
                    std::vector<BodyCoupling>& coupling, std::vector<std::vector<Vec2>>& contact_work,
                    std::vector<RigidBody>& rigid, std::vector<MassSpringBody>& bodies, double& contact_energy) {
   const double dt_sub = in.dt / n_sub;
   for (int k = 0; k < n_sub; ++k) {
     const double time_k = in.time + k*dt_sub;
-    for (std::size_t b = 0; b < bodies.size(); ++b) {
-      if (!selected(members, b)) continue;
+    for (std::size_t i = 0; i < members.count(bodies.size()); ++i) {
+      const std::size_t b = members.at(i);
       if (swelling[b].enabled) apply_swelling(bodies[b], swelling[b].diameter(time_k));  // L0, M follow s(t), §1.8
       std::fill(contact_work[b].begin(), contact_work[b].end(), Vec2{0.0, 0.0});
     }
@@ -111,8 +125,8 @@ void advance_group(const SolidStepInputs& in, const std::vector<SwellingSchedule
     // contact the test did not foresee still acts (at that group's sub-step), and the walls and
     // the pairs inside a group of one cost little.
     contact_forces(bodies, members, time_k, contact_work);
-    for (std::size_t b = 0; b < bodies.size(); ++b) {
-      if (!selected(members, b)) continue;
+    for (std::size_t i = 0; i < members.count(bodies.size()); ++i) {
+      const std::size_t b = members.at(i);
       MassSpringBody& body = bodies[b];
       BodyCoupling& c = coupling[b];
       if (body.kind == BodyKind::rigid) {
@@ -130,8 +144,8 @@ void advance_group(const SolidStepInputs& in, const std::vector<SwellingSchedule
     }
     // Work of the contact forces on every member over the sub-step, F . U^{k+1} dt_sub (the
     // displacement the position update made), prescribed bodies included.
-    for (std::size_t b = 0; b < bodies.size(); ++b) {
-      if (!selected(members, b)) continue;
+    for (std::size_t i = 0; i < members.count(bodies.size()); ++i) {
+      const std::size_t b = members.at(i);
       for (int p = 0; p < bodies[b].n_surface; ++p)
         contact_energy += dt_sub * (contact_work[b][p][0] * bodies[b].velocity[p][0] +
                                     contact_work[b][p][1] * bodies[b].velocity[p][1]);
@@ -143,23 +157,21 @@ void advance_group(const SolidStepInputs& in, const std::vector<SwellingSchedule
 
 namespace {
 
-// Sets groups.members to group g (global mode, g = -1: the empty mask, all bodies), decides the
+// Sets groups.members to group g (global mode, g = -1: every body), decides the
 // spring integrator of its mass-spring bodies (groups.implicit_of_body) and returns the sub-steps
 // the group needs in this step (0: no members). inner_substeps: the inner contact steps per
 // sub-step when the group takes the inner loop (its sub-step is then its springs' alone), else 0.
 int group_substeps(const SolidStepInputs& in, SubstepGroups& groups, int g, const std::vector<MassSpringBody>& bodies,
                    SpectralWorkspace& scratch, int& inner_substeps) {
   inner_substeps = 0;
-  if (g < 0) groups.members.clear();
-  else groups.members.resize(bodies.size());
+  groups.members = g < 0 ? BodySet{} : groups.group_members(g);
   groups.implicit_of_body.resize(bodies.size());
   const double contact_dt = g < 0 ? in.max_substep : groups.max_substep[g];
   double spring_dt = HUGE_VAL;
   int n_members = 0;
   bool inner_loop_fits = static_cast<bool>(groups.inner_loop) && std::isfinite(contact_dt);
-  for (std::size_t b = 0; b < bodies.size(); ++b) {
-    if (g >= 0) groups.members[b] = groups.group_of[b] == g ? 1 : 0;
-    if (!selected(groups.members, b)) continue;
+  for (std::size_t i = 0; i < groups.members.count(bodies.size()); ++i) {
+    const std::size_t b = groups.members.at(i);
     ++n_members;
     // The spectral bound only where it decides something (explicit or automatic springs).
     const bool forced_implicit = bodies[b].integrator == SpringIntegrator::implicit_euler;
@@ -197,9 +209,8 @@ int end_group(const SubstepGroups& groups, const std::vector<MassSpringBody>& bo
 
 void record(const SubstepGroups& groups, int n_sub, std::vector<int>& substeps_of_body, SolidStepCount& count) {
   count.max_substeps = std::max(count.max_substeps, n_sub);
-  for (std::size_t b = 0; b < substeps_of_body.size(); ++b) {
-    if (!selected(groups.members, b)) continue;
-    substeps_of_body[b] = n_sub;
+  for (std::size_t i = 0; i < groups.members.count(substeps_of_body.size()); ++i) {
+    substeps_of_body[groups.members.at(i)] = n_sub;
     count.body_substeps += n_sub;
   }
 }
@@ -216,6 +227,7 @@ SolidStepCount count_substeps(const SolidStepInputs& in, SubstepGroups& groups,
   groups.group_substeps.clear();
   groups.group_inner_substeps.reserve(bodies.size());
   groups.group_inner_substeps.clear();
+  if (first_group(groups, bodies) == 0) groups.list_members();
   for (int g = first_group(groups, bodies); g < end_group(groups, bodies); ++g) {
     int inner = 0;
     groups.group_substeps.push_back(group_substeps(in, groups, g, bodies, scratch, inner));
@@ -253,12 +265,7 @@ SolidStepCount advance_bodies(const SolidStepInputs& in, const std::vector<Swell
 #endif
   for (int k = 0; k < n_groups; ++k) {
     if (groups.group_substeps[k] == 0) continue;
-    thread_local BodyMask mask;  // this thread's group (empty: all bodies, the global mode)
-    if (first < 0) mask.clear();
-    else {
-      mask.assign(bodies.size(), 0);
-      for (std::size_t b = 0; b < bodies.size(); ++b) mask[b] = groups.group_of[b] == first + k ? 1 : 0;
-    }
+    const BodySet mask = first < 0 ? BodySet{} : groups.group_members(first + k);  // global mode: every body
     try {
       if (groups.group_inner_substeps[k] > 0)
         advance_group_inner_loop(in, swelling, groups.inner_loop, mask, groups.group_substeps[k],

@@ -30,9 +30,9 @@ namespace ibms {
 // members: the contact group being sub-stepped; only contacts among its bodies and with the walls.
 // Called concurrently for different groups (advance_bodies runs groups on several threads): it
 // must only write the forces of its members and guard any shared state.
-using ContactForces = std::function<void(const std::vector<MassSpringBody>& bodies, const BodyMask& members,
+using ContactForces = std::function<void(const std::vector<MassSpringBody>& bodies, const BodySet& members,
                                          double time, std::vector<std::vector<Vec2>>& forces)>;
-void no_contact_forces(const std::vector<MassSpringBody>& bodies, const BodyMask& members, double time,
+void no_contact_forces(const std::vector<MassSpringBody>& bodies, const BodySet& members, double time,
                        std::vector<std::vector<Vec2>>& forces);
 
 // Inner-loop seam (contact/contact_subcycle.hpp): advances the members' points over dt_outer with the
@@ -42,7 +42,7 @@ void no_contact_forces(const std::vector<MassSpringBody>& bodies, const BodyMask
 // ContactForces. Empty: every group takes the shared sub-step.
 // continues: the call follows the previous outer step of the same group within the fluid step;
 // diameter_rate: dD/dt of each body over the outer step (swelling; the members' entries).
-using ContactInnerLoop = std::function<double(std::vector<MassSpringBody>& bodies, const BodyMask& members,
+using ContactInnerLoop = std::function<double(std::vector<MassSpringBody>& bodies, const BodySet& members,
                                               double dt_outer, int n_inner,
                                               const std::vector<std::vector<Vec2>>& frozen_force, bool continues,
                                               const std::vector<double>& diameter_rate)>;
@@ -63,7 +63,16 @@ struct SubstepGroups {
   std::vector<double> max_substep;
   ContactInnerLoop inner_loop;        // empty: the shared sub-step for every group
   std::vector<int> group_inner_substeps;  // out: inner steps per outer sub-step of each group (0: shared)
-  BodyMask members;  // scratch: the group being advanced
+  BodySet members;  // scratch: the group being planned
+  std::vector<int> member_start;  // scratch: group g's bodies are member_list[member_start[g] ..
+  std::vector<int> member_list;   //   member_start[g + 1]), ascending (list_members)
+  // Lists each group's bodies from group_of, in O(bodies + groups): a group's loops then visit its
+  // own bodies only.
+  void list_members();
+  BodySet group_members(int g) const {
+    return BodySet::group(member_list.data() + member_start[g],
+                          static_cast<std::size_t>(member_start[g + 1] - member_start[g]));
+  }
   std::vector<int> substeps_of_body;  // out: the sub-steps body b took in the latest step
   std::vector<char> implicit_of_body; // out: body b's springs took implicit steps in the latest step
   std::vector<int> group_substeps;    // scratch: sub-steps of each group in the latest step

@@ -41,12 +41,10 @@ void SubstepPlanner::plan(double dt, SubstepGroups& groups) const {
   find_groups(dt);
   groups.group_of.assign(contact_groups_.group_of.begin(), contact_groups_.group_of.end());
   groups.max_substep.assign(contact_groups_.n_groups, HUGE_VAL);
-  for (int g = 0; g < contact_groups_.n_groups; ++g) {
-    if (!contact_groups_.may_touch[g]) continue;
-    groups.members.resize(bodies_.size());
-    for (std::size_t b = 0; b < bodies_.size(); ++b) groups.members[b] = groups.group_of[b] == g ? 1 : 0;
-    groups.max_substep[g] = contact_substep(contact_model_.for_fluid_step(dt), bodies_, groups.members);
-  }
+  groups.list_members();
+  for (int g = 0; g < contact_groups_.n_groups; ++g)
+    if (contact_groups_.may_touch[g])
+      groups.max_substep[g] = contact_substep(contact_model_.for_fluid_step(dt), bodies_, groups.group_members(g));
 }
 
 void SubstepPlanner::find_groups(double dt) const {
