@@ -11,14 +11,6 @@
 namespace ibms {
 namespace {
 
-// The stencil of one marker in one direction, mapped onto interior cells.
-struct MappedStencil {
-  int n_nodes = 0;
-  std::array<int, 6> cell{};     // interior cell index each node reads/writes
-  std::array<double, 6> weight{};  // phi of the node [-]
-  std::array<int, 6> ghost_side{};  // 0: interior or periodic image; -1: beyond the low wall; +1: high
-};
-
 // The nodes a stencil maps onto in one direction: the cell centres 0..n-1 (centre m at
 // origin + (m + 1/2) spacing) or the faces 0..n normal to it (face m at origin + m spacing).
 enum class Nodes { centres, faces };
@@ -61,10 +53,6 @@ MappedStencil map_stencil(KernelKind kernel, double coordinate, double origin, d
   return mapped;
 }
 
-// The stencils of a marker for the face components: over the cell centres (cx, cy) and the faces
-// (fx, fy) of each direction; u lives on (fx, cy), v on (cx, fy).
-struct FaceStencils { MappedStencil cx, cy, fx, fy; };
-
 FaceStencils face_stencils(const Grid& grid, KernelKind kernel, const std::array<double, 2>& marker) {
   return {map_stencil(kernel, marker[0], grid.origin_x, grid.dx(), grid.nx, grid.periodic_x, "x"),
           map_stencil(kernel, marker[1], grid.origin_y, grid.dy(), grid.ny, grid.periodic_y, "y"),
@@ -75,6 +63,64 @@ FaceStencils face_stencils(const Grid& grid, KernelKind kernel, const std::array
 void check_field(const Grid& grid, const CellField& field, const char* name) {
   if (field.nx() != grid.nx || field.ny() != grid.ny)
     throw std::invalid_argument(std::string(name) + " does not match the grid");
+}
+
+void check_faces(const Grid& grid, const FaceField& face_x, const FaceField& face_y, const char* who) {
+  if (face_x.ni() != grid.nx + 1 || face_x.nj() != grid.ny || face_y.ni() != grid.nx || face_y.nj() != grid.ny + 1)
+    throw std::invalid_argument(std::string(who) + ": face fields do not match the grid");
+}
+
+// One marker's force onto the faces (spread_to_faces).
+void spread_marker_to_faces(const FaceStencils& stencils, double ax, double ay, FaceField& face_x, FaceField& face_y) {
+  const auto& [cx, cy, fx, fy] = stencils;
+  // Each reflection is a factor -1, as for the cell centres: the normal component is odd about
+  // a wall's faces, the tangential one odd about the wall between the mirrored cells.
+  for (int ky = 0; ky < cy.n_nodes; ++ky)
+    for (int kx = 0; kx < fx.n_nodes; ++kx) {
+      const double sign = (fx.ghost_side[kx] != 0) == (cy.ghost_side[ky] != 0) ? 1.0 : -1.0;
+      face_x(fx.cell[kx], cy.cell[ky]) += sign * fx.weight[kx] * cy.weight[ky] * ax;
+    }
+  for (int ky = 0; ky < fy.n_nodes; ++ky)
+    for (int kx = 0; kx < cx.n_nodes; ++kx) {
+      const double sign = (cx.ghost_side[kx] != 0) == (fy.ghost_side[ky] != 0) ? 1.0 : -1.0;
+      face_y(cx.cell[kx], fy.cell[ky]) += sign * cx.weight[kx] * fy.weight[ky] * ay;
+    }
+}
+
+// A periodic direction's last face equals its first.
+void close_periodic_faces(const Grid& grid, FaceField& face_x, FaceField& face_y) {
+  if (grid.periodic_x)
+    for (int j = 0; j < grid.ny; ++j) face_x(grid.nx, j) = face_x(0, j);
+  if (grid.periodic_y)
+    for (int i = 0; i < grid.nx; ++i) face_y(i, grid.ny) = face_y(i, 0);
+}
+
+// (J_f U)(X_l) of one marker (interpolate_faces).
+std::array<double, 2> interpolate_marker_faces(const FaceStencils& stencils, const WallVelocities& walls,
+                                               const FaceField& face_x, const FaceField& face_y) {
+  const auto& [cx, cy, fx, fy] = stencils;
+  // The transpose of spread_to_faces, plus the affine part of the tangential ghost rule
+  // u_g = 2 u_wall - u_mirror (the normal component is odd about a wall).
+  double u_sum = 0.0, v_sum = 0.0;
+  for (int ky = 0; ky < cy.n_nodes; ++ky) {
+    const bool ghost_y = cy.ghost_side[ky] != 0;
+    const double u_wall = cy.ghost_side[ky] < 0 ? walls.bottom : walls.top;
+    for (int kx = 0; kx < fx.n_nodes; ++kx) {
+      const double s_x = fx.ghost_side[kx] != 0 ? -1.0 : 1.0;
+      const double value = ghost_y ? 2.0 * u_wall - face_x(fx.cell[kx], cy.cell[ky]) : face_x(fx.cell[kx], cy.cell[ky]);
+      u_sum += fx.weight[kx] * cy.weight[ky] * s_x * value;
+    }
+  }
+  for (int ky = 0; ky < fy.n_nodes; ++ky) {
+    const double s_y = fy.ghost_side[ky] != 0 ? -1.0 : 1.0;
+    for (int kx = 0; kx < cx.n_nodes; ++kx) {
+      const bool ghost_x = cx.ghost_side[kx] != 0;
+      const double v_wall = cx.ghost_side[kx] < 0 ? walls.left : walls.right;
+      const double value = ghost_x ? 2.0 * v_wall - face_y(cx.cell[kx], fy.cell[ky]) : face_y(cx.cell[kx], fy.cell[ky]);
+      v_sum += cx.weight[kx] * fy.weight[ky] * s_y * value;
+    }
+  }
+  return {u_sum, v_sum};
 }
 
 }  // namespace
@@ -149,65 +195,51 @@ void spread(const Grid& grid, KernelKind kernel, const std::vector<std::array<do
 void spread_to_faces(const Grid& grid, KernelKind kernel, const std::vector<std::array<double, 2>>& markers,
                      const std::vector<std::array<double, 2>>& marker_force, const std::vector<double>& marker_volume,
                      FaceField& face_x, FaceField& face_y) {
-  if (face_x.ni() != grid.nx + 1 || face_x.nj() != grid.ny || face_y.ni() != grid.nx || face_y.nj() != grid.ny + 1)
-    throw std::invalid_argument("spread_to_faces: face fields do not match the grid");
+  check_faces(grid, face_x, face_y, "spread_to_faces");
   if (marker_force.size() != markers.size() || marker_volume.size() != markers.size())
     throw std::invalid_argument("spread_to_faces: markers, forces and volumes differ in length");
   const double inverse_cell_area = 1.0 / (grid.dx() * grid.dy());
-  for (std::size_t l = 0; l < markers.size(); ++l) {
-    const auto [cx, cy, fx, fy] = face_stencils(grid, kernel, markers[l]);
-    const double ax = marker_force[l][0] * marker_volume[l] * inverse_cell_area;
-    const double ay = marker_force[l][1] * marker_volume[l] * inverse_cell_area;
-    // Each reflection is a factor -1, as for the cell centres: the normal component is odd about
-    // a wall's faces, the tangential one odd about the wall between the mirrored cells.
-    for (int ky = 0; ky < cy.n_nodes; ++ky)
-      for (int kx = 0; kx < fx.n_nodes; ++kx) {
-        const double sign = (fx.ghost_side[kx] != 0) == (cy.ghost_side[ky] != 0) ? 1.0 : -1.0;
-        face_x(fx.cell[kx], cy.cell[ky]) += sign * fx.weight[kx] * cy.weight[ky] * ax;
-      }
-    for (int ky = 0; ky < fy.n_nodes; ++ky)
-      for (int kx = 0; kx < cx.n_nodes; ++kx) {
-        const double sign = (cx.ghost_side[kx] != 0) == (fy.ghost_side[ky] != 0) ? 1.0 : -1.0;
-        face_y(cx.cell[kx], fy.cell[ky]) += sign * cx.weight[kx] * fy.weight[ky] * ay;
-      }
-  }
-  if (grid.periodic_x)
-    for (int j = 0; j < grid.ny; ++j) face_x(grid.nx, j) = face_x(0, j);
-  if (grid.periodic_y)
-    for (int i = 0; i < grid.nx; ++i) face_y(i, grid.ny) = face_y(i, 0);
+  for (std::size_t l = 0; l < markers.size(); ++l)
+    spread_marker_to_faces(face_stencils(grid, kernel, markers[l]), marker_force[l][0] * marker_volume[l] * inverse_cell_area,
+                           marker_force[l][1] * marker_volume[l] * inverse_cell_area, face_x, face_y);
+  close_periodic_faces(grid, face_x, face_y);
+}
+
+void spread_to_faces(const Grid& grid, const std::vector<FaceStencils>& stencils,
+                     const std::vector<std::array<double, 2>>& marker_force, const std::vector<double>& marker_volume,
+                     FaceField& face_x, FaceField& face_y) {
+  check_faces(grid, face_x, face_y, "spread_to_faces");
+  if (marker_force.size() != stencils.size() || marker_volume.size() != stencils.size())
+    throw std::invalid_argument("spread_to_faces: stencils, forces and volumes differ in length");
+  const double inverse_cell_area = 1.0 / (grid.dx() * grid.dy());
+  for (std::size_t l = 0; l < stencils.size(); ++l)
+    spread_marker_to_faces(stencils[l], marker_force[l][0] * marker_volume[l] * inverse_cell_area,
+                           marker_force[l][1] * marker_volume[l] * inverse_cell_area, face_x, face_y);
+  close_periodic_faces(grid, face_x, face_y);
 }
 
 void interpolate_faces(const Grid& grid, KernelKind kernel, const WallVelocities& walls, const FaceField& face_x,
                        const FaceField& face_y, const std::vector<std::array<double, 2>>& markers,
                        std::vector<std::array<double, 2>>& velocity_out) {
-  if (face_x.ni() != grid.nx + 1 || face_x.nj() != grid.ny || face_y.ni() != grid.nx || face_y.nj() != grid.ny + 1)
-    throw std::invalid_argument("interpolate_faces: face fields do not match the grid");
+  check_faces(grid, face_x, face_y, "interpolate_faces");
   velocity_out.resize(markers.size());
-  for (std::size_t l = 0; l < markers.size(); ++l) {
-    const auto [cx, cy, fx, fy] = face_stencils(grid, kernel, markers[l]);
-    // The transpose of spread_to_faces, plus the affine part of the tangential ghost rule
-    // u_g = 2 u_wall - u_mirror (the normal component is odd about a wall).
-    double u_sum = 0.0, v_sum = 0.0;
-    for (int ky = 0; ky < cy.n_nodes; ++ky) {
-      const bool ghost_y = cy.ghost_side[ky] != 0;
-      const double u_wall = cy.ghost_side[ky] < 0 ? walls.bottom : walls.top;
-      for (int kx = 0; kx < fx.n_nodes; ++kx) {
-        const double s_x = fx.ghost_side[kx] != 0 ? -1.0 : 1.0;
-        const double value = ghost_y ? 2.0 * u_wall - face_x(fx.cell[kx], cy.cell[ky]) : face_x(fx.cell[kx], cy.cell[ky]);
-        u_sum += fx.weight[kx] * cy.weight[ky] * s_x * value;
-      }
-    }
-    for (int ky = 0; ky < fy.n_nodes; ++ky) {
-      const double s_y = fy.ghost_side[ky] != 0 ? -1.0 : 1.0;
-      for (int kx = 0; kx < cx.n_nodes; ++kx) {
-        const bool ghost_x = cx.ghost_side[kx] != 0;
-        const double v_wall = cx.ghost_side[kx] < 0 ? walls.left : walls.right;
-        const double value = ghost_x ? 2.0 * v_wall - face_y(cx.cell[kx], fy.cell[ky]) : face_y(cx.cell[kx], fy.cell[ky]);
-        v_sum += cx.weight[kx] * fy.weight[ky] * s_y * value;
-      }
-    }
-    velocity_out[l] = {u_sum, v_sum};
-  }
+  for (std::size_t l = 0; l < markers.size(); ++l)
+    velocity_out[l] = interpolate_marker_faces(face_stencils(grid, kernel, markers[l]), walls, face_x, face_y);
+}
+
+void interpolate_faces(const Grid& grid, const std::vector<FaceStencils>& stencils, const WallVelocities& walls,
+                       const FaceField& face_x, const FaceField& face_y,
+                       std::vector<std::array<double, 2>>& velocity_out) {
+  check_faces(grid, face_x, face_y, "interpolate_faces");
+  velocity_out.resize(stencils.size());
+  for (std::size_t l = 0; l < stencils.size(); ++l)
+    velocity_out[l] = interpolate_marker_faces(stencils[l], walls, face_x, face_y);
+}
+
+void map_face_stencils(const Grid& grid, KernelKind kernel, const std::vector<std::array<double, 2>>& markers,
+                       std::vector<FaceStencils>& out) {
+  out.resize(markers.size());
+  for (std::size_t l = 0; l < markers.size(); ++l) out[l] = face_stencils(grid, kernel, markers[l]);
 }
 
 void marker_node_weights(const Grid& grid, KernelKind kernel, const std::array<double, 2>& marker, bool on_faces,

@@ -53,6 +53,30 @@ void interpolate_faces(const Grid& grid, KernelKind kernel, const WallVelocities
                        const FaceField& face_y, const std::vector<std::array<double, 2>>& markers,
                        std::vector<std::array<double, 2>>& velocity_out);
 
+// One marker's kernel stencil in one direction, mapped onto the interior nodes it reads and writes.
+struct MappedStencil {
+  int n_nodes = 0;
+  std::array<int, 6> cell{};        // interior node index each stencil node reads/writes
+  std::array<double, 6> weight{};   // phi of the node [-]
+  std::array<int, 6> ghost_side{};  // 0: interior or periodic image; -1: beyond the low wall; +1: high
+};
+// A marker's stencils for the face components: over the cell centres (cx, cy) and the faces (fx, fy)
+// of each direction; u lives on (fx, cy), v on (cx, fy).
+struct FaceStencils {
+  MappedStencil cx, cy, fx, fy;
+};
+// The face stencils of markers that stay put over several spreads and interpolations (the products
+// of the no-slip marker system): mapped once, then used by the overloads below, which give the
+// same bits as the (kernel, markers) forms. Replaces `out`; same marker checks as interpolate.
+void map_face_stencils(const Grid& grid, KernelKind kernel, const std::vector<std::array<double, 2>>& markers,
+                       std::vector<FaceStencils>& out);
+void spread_to_faces(const Grid& grid, const std::vector<FaceStencils>& stencils,
+                     const std::vector<std::array<double, 2>>& marker_force, const std::vector<double>& marker_volume,
+                     FaceField& face_x, FaceField& face_y);
+void interpolate_faces(const Grid& grid, const std::vector<FaceStencils>& stencils, const WallVelocities& walls,
+                       const FaceField& face_x, const FaceField& face_y,
+                       std::vector<std::array<double, 2>>& velocity_out);
+
 // One node that a marker touches: its index in the component's field (i + j ni) and the signed
 // weight phi phi (-1 per wall reflection), so that spreading adds weight F dV / (dx dy) to the node
 // and the linear part of interpolation sums weight * value.

@@ -40,6 +40,7 @@ struct BodyCoupling {
   std::vector<double> marker_fraction_work; // radial factor of each marker (ibm.marker_retraction) [-]
   std::vector<double> marker_volume;       // dV_l = h s_l [length^2 per unit depth]
   std::vector<Vec2> target_velocity;       // U_target_l [length/time]
+  std::vector<FaceStencils> face_stencils; // the markers' face stencils over one marker solve (work)
   std::vector<Vec2> interpolated_velocity; // U~_l = J u~ [length/time]
   std::vector<Vec2> pass_force;            // F_l^(m) of one pass [length/time^2]
   std::vector<Vec2> pass_increment;        // dt F_l^(m), what one pass spreads [length/time]

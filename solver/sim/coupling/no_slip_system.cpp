@@ -65,6 +65,8 @@ NoSlipResult hold_no_slip(const Grid& grid, KernelKind kernel, const WallVelocit
     preconditioner->apply(coupling, v, work.preconditioned.data());
     return work.preconditioned.data();
   };
+  // The markers stay put over the solve: their face stencils are mapped once, not per product.
+  for (BodyCoupling& c : coupling) map_face_stencils(grid, kernel, c.marker, c.face_stencils);
   const int m_max = NoSlipWorkspace::restart;
   const WallVelocities at_rest{};  // the increments have homogeneous wall data
   // dt S dF onto the cells and the faces, dt dF in pass_increment.
@@ -75,7 +77,7 @@ NoSlipResult hold_no_slip(const Grid& grid, KernelKind kernel, const WallVelocit
     face_increment_y.fill(0.0);
     for (BodyCoupling& c : coupling) {
       if (!cells_from_faces) spread(grid, kernel, c.marker, c.pass_increment, c.marker_volume, increment_x, increment_y);
-      spread_to_faces(grid, kernel, c.marker, c.pass_increment, c.marker_volume, face_increment_x, face_increment_y);
+      spread_to_faces(grid, c.face_stencils, c.pass_increment, c.marker_volume, face_increment_x, face_increment_y);
     }
     if (cells_from_faces) average_faces_to_cells(grid, face_increment_x, face_increment_y, increment_x, increment_y);
   };
@@ -101,8 +103,8 @@ NoSlipResult hold_no_slip(const Grid& grid, KernelKind kernel, const WallVelocit
       BodyCoupling& c = coupling[b];
       const std::size_t first = k;
       if (on_faces)
-        interpolate_faces(grid, kernel, at_rest, solver.projected_face_increment_x(), solver.projected_face_increment_y(),
-                          c.marker, c.interpolated_velocity);
+        interpolate_faces(grid, c.face_stencils, at_rest, solver.projected_face_increment_x(),
+                          solver.projected_face_increment_y(), c.interpolated_velocity);
       else
         interpolate(grid, kernel, at_rest, increment_x, increment_y, c.marker, c.interpolated_velocity);
       for (const auto& u : c.interpolated_velocity)
