@@ -195,14 +195,9 @@ void spread(const Grid& grid, KernelKind kernel, const std::vector<std::array<do
 void spread_to_faces(const Grid& grid, KernelKind kernel, const std::vector<std::array<double, 2>>& markers,
                      const std::vector<std::array<double, 2>>& marker_force, const std::vector<double>& marker_volume,
                      FaceField& face_x, FaceField& face_y) {
-  check_faces(grid, face_x, face_y, "spread_to_faces");
-  if (marker_force.size() != markers.size() || marker_volume.size() != markers.size())
-    throw std::invalid_argument("spread_to_faces: markers, forces and volumes differ in length");
-  const double inverse_cell_area = 1.0 / (grid.dx() * grid.dy());
-  for (std::size_t l = 0; l < markers.size(); ++l)
-    spread_marker_to_faces(face_stencils(grid, kernel, markers[l]), marker_force[l][0] * marker_volume[l] * inverse_cell_area,
-                           marker_force[l][1] * marker_volume[l] * inverse_cell_area, face_x, face_y);
-  close_periodic_faces(grid, face_x, face_y);
+  thread_local std::vector<FaceStencils> stencils;  // kept between calls: no allocation once grown
+  map_face_stencils(grid, kernel, markers, stencils);
+  spread_to_faces(grid, stencils, marker_force, marker_volume, face_x, face_y);
 }
 
 void spread_to_faces(const Grid& grid, const std::vector<FaceStencils>& stencils,
@@ -210,7 +205,7 @@ void spread_to_faces(const Grid& grid, const std::vector<FaceStencils>& stencils
                      FaceField& face_x, FaceField& face_y) {
   check_faces(grid, face_x, face_y, "spread_to_faces");
   if (marker_force.size() != stencils.size() || marker_volume.size() != stencils.size())
-    throw std::invalid_argument("spread_to_faces: stencils, forces and volumes differ in length");
+    throw std::invalid_argument("spread_to_faces: markers, forces and volumes differ in length");
   const double inverse_cell_area = 1.0 / (grid.dx() * grid.dy());
   for (std::size_t l = 0; l < stencils.size(); ++l)
     spread_marker_to_faces(stencils[l], marker_force[l][0] * marker_volume[l] * inverse_cell_area,
@@ -221,10 +216,9 @@ void spread_to_faces(const Grid& grid, const std::vector<FaceStencils>& stencils
 void interpolate_faces(const Grid& grid, KernelKind kernel, const WallVelocities& walls, const FaceField& face_x,
                        const FaceField& face_y, const std::vector<std::array<double, 2>>& markers,
                        std::vector<std::array<double, 2>>& velocity_out) {
-  check_faces(grid, face_x, face_y, "interpolate_faces");
-  velocity_out.resize(markers.size());
-  for (std::size_t l = 0; l < markers.size(); ++l)
-    velocity_out[l] = interpolate_marker_faces(face_stencils(grid, kernel, markers[l]), walls, face_x, face_y);
+  thread_local std::vector<FaceStencils> stencils;
+  map_face_stencils(grid, kernel, markers, stencils);
+  interpolate_faces(grid, stencils, walls, face_x, face_y, velocity_out);
 }
 
 void interpolate_faces(const Grid& grid, const std::vector<FaceStencils>& stencils, const WallVelocities& walls,
