@@ -19,6 +19,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 from report_latex import esc, num, figure, longtable  # noqa: E402
+import report_cases  # noqa: E402
 
 
 def _rows(path):
@@ -68,9 +69,11 @@ def kernel_moment_section(out, build):
     last = OrderedDict()
     for r in rows:  # a rerun appends again: the last row per kernel and moment wins
         last[(r["kernel"], r["moment"])] = r
-    out.append("Discrete moment sums of the four regularised delta kernels over 1201 marker offsets "
+    out.append("Discrete moment sums of the four regularised delta kernels (\\texttt{roma3} %s, \\texttt{peskin4} and "
+               "\\texttt{cosine4} %s, \\texttt{bkp6} %s) over 1201 marker offsets "
                "in $[0,1]$ (\\texttt{verification/ibm/test\\_delta\\_kernel.cpp}, docs/method.md \\S4 and "
-               "A9): the largest deviation from the expected value and the range of the sum.\n")
+               "A9): the largest deviation from the expected value and the range of the sum.\n"
+               % (report_cases.cite("roma1999"), report_cases.cite("peskin2002"), report_cases.cite("bao2016")))
     table = [[r"\texttt{%s}" % esc(k), esc(m), esc(r["expected"]), num(r["max_error"], 3),
               "[%s, %s]" % (_plain(r["min_sum"]), _plain(r["max_sum"])), num(r["tolerance"], 2)]
              for (k, m), r in last.items()]
@@ -172,9 +175,9 @@ def work_precision_section(out, build, fig_dir, source=None):
         fig.savefig(path)
         plt.close(fig)
         out.append(figure(path, "Error against wall time; labels: grid N; dashed: least-squares fit. Squares "
-                                "(B$N$): Basilisk on the same cavity and error rule, one core of this machine, "
+                                "(B$N$): Basilisk %s on the same cavity and error rule, one core of this machine, "
                                 "recorded 2026-12-03 (\\texttt{bench/reference/basilisk\\_cavity.csv}; "
-                                "both codes stopped at a velocity change rate of $10^{-6}$)."))
+                                "both codes stopped at a velocity change rate of $10^{-6}$)." % report_cases.cite("popinet_basilisk")))
     body_work_precision(out, build, fig_dir, source, [c for c in cases if _body_case(c[0]) is not None])
 
 
@@ -202,11 +205,13 @@ def body_work_precision(out, build, fig_dir, source, cases):
     out.append("The cylinder of the DFG benchmarks at $D/h = 10$ and 20 (the bench's default level; 30 and 40 at its "
                "\\texttt{full} level) (labels; \\texttt{validation/dfg\\_cylinder\\_2d1} "
                "and \\texttt{\\_2d2}, each scene's grid refined as its CMakeLists does) under the papers' direct forcing "
-               "(\\texttt{uhlmann}: 3 passes, markers retracted by $0.25h$, $\\nu\\Delta t/h^2 \\le 0.2$, as the 2D-1 "
+               "%s (\\texttt{uhlmann}: 3 passes, markers retracted by $0.25h$, $\\nu\\Delta t/h^2 \\le 0.2$, as the 2D-1 "
                "case calibrated it) and under the no-slip coupling on the face velocities (\\texttt{no\\_slip}: slip tolerance "
                "$10^{-4}$, no retraction, as the 2D-2 scene ships it; the 2D-1 scene ships it with the markers retracted "
                "by $0.25h$, its README; docs/method.md \\S3.7). 2D-1 runs to the steady "
-               "criterion under \\texttt{uhlmann} and to $t = 10$ under \\texttt{no\\_slip}, 2D-2 to $t = 12$.\n")
+               "criterion under \\texttt{uhlmann} and to $t = 10$ under \\texttt{no\\_slip}, 2D-2 to $t = 12$; the no-slip "
+               "coupling is the end-of-step constraint of Taira \\& Colonius %s.\n" % (report_cases.cite("uhlmann2005"),
+                                                                                     report_cases.cite("taira2007")))
     families = [f for f in _BODY_FAMILIES if any(_body_case(c[0])[0] == f for c in cases)]
     fig, axes = plt.subplots(1, len(families), figsize=(3.6 * len(families), 3.0), squeeze=False)
     for ax, family in zip(axes[0], families):

@@ -52,15 +52,32 @@ BIBLIOGRAPHY = OrderedDict([
     ("rezaee2nnf", "T. Rezaee, public repository \\texttt{taha-re/2D\\_NNF\\_LBM}, figures "
                    "\\texttt{media/*\\_dkt.jpeg} (``Symbols: Wan \\& Turek''), digitised for ibms from "
                    "pixel centroids: \\texttt{validation/dkt\\_two\\_disks/reference/provenance.md}."),
-    ("jsst2022", "Computational method for interactions between deformable objects and fluid flows "
-                 "(mass-spring model with DEM contacts). Trans. JSST 14(2) (2022)."),
-    ("jsce2023", "Numerical experiments of swelling objects interacting with Newtonian fluids. "
-                 "J. JSCE 11(2) (2023)."),
+    ("jsst2022", "(Guinea et al., as the companion paper cites it; the copy ibms holds names no authors.) "
+                 "Computational method for interactions between deformable objects and fluid flows using "
+                 "immersed boundary method and mass spring model. Trans. JSST 14(2) (2022)."),
+    ("jsce2023", "N. Guinea, D. Toriu, S. Ushijima. Numerical experiments of swelling objects interacting "
+                 "with Newtonian fluids. J. JSCE 11(2) (2023)."),
     ("celik2008", "I. B. Celik, U. Ghia, P. J. Roache, C. J. Freitas, H. Coleman, P. E. Raad. Procedure for "
                   "estimation and reporting of uncertainty due to discretization in CFD applications. "
                   "J. Fluids Eng. 130 (2008) 078001."),
     ("uhlmann2005", "M. Uhlmann. An immersed boundary method with direct forcing for the simulation of "
                     "particulate flows. J. Comput. Phys. 209 (2005) 448--476."),
+    ("roache1994", "P. J. Roache. Perspective: a method for uniform reporting of grid refinement studies. "
+                   "J. Fluids Eng. 116 (1994) 405--413."),
+    ("taira2007", "K. Taira, T. Colonius. The immersed boundary method: a projection approach. "
+                  "J. Comput. Phys. 225 (2007) 2118--2137."),
+    ("roma1999", "A. M. Roma, C. S. Peskin, M. J. Berger. An adaptive version of the immersed boundary "
+                 "method. J. Comput. Phys. 153 (1999) 509--534."),
+    ("peskin2002", "C. S. Peskin. The immersed boundary method. Acta Numerica 11 (2002) 479--517."),
+    ("bao2016", "Y. Bao, J. Kaye, C. S. Peskin. A Gaussian-like immersed-boundary kernel with three "
+                "continuous derivatives and improved translational invariance. "
+                "J. Comput. Phys. 316 (2016) 139--144 (arXiv:1505.07529, updated with A. D. Kaiser)."),
+    ("popinet_basilisk", "S. Popinet and collaborators. Basilisk, a free-software program for the solution of "
+                         "partial differential equations on adaptive Cartesian meshes, "
+                         "\\texttt{http://basilisk.fr} (the build recorded in "
+                         "\\texttt{bench/reference/basilisk\\_cavity.csv})."),
+    ("kempe2012", "T. Kempe, J. Fr\\\"ohlich. An improved immersed boundary method with direct forcing for the "
+                  "simulation of particle laden flows. J. Comput. Phys. 231 (2012) 3663--3684."),
     ("breugem2012", "W.-P. Breugem. A second-order accurate immersed boundary method for fully resolved "
                     "simulations of particle-laden flows. J. Comput. Phys. 231 (2012) 4469--4498."),
 ])

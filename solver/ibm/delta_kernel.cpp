@@ -35,7 +35,7 @@ double cosine4_phi(double r) {
   return 0.0;
 }
 
-// Bao, Kaiser & Peskin (2016) 6-point kernel, IBAMR ib_6_delta_fcn (docs/method.md A9): for
+// Bao, Kaye & Peskin (2016) 6-point kernel, IBAMR ib_6_delta_fcn (docs/method.md A9): for
 // rl in [0, 1) returns w[0..5], the weights of the nodes at distances rl - 3, ..., rl + 2.
 std::array<double, 6> bkp6_weights(double rl) {
   const double K = bkp6_second_moment();

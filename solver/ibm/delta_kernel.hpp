@@ -1,7 +1,7 @@
 // One-dimensional regularised delta functions phi(r) of docs/method.md §4 and appendix A9
 // (r = distance / grid spacing [-]); the 2D kernel is delta_h = phi(x/dx) phi(y/dy) / (dx dy).
 // Roma, Peskin & Berger (1999) 3-point, Peskin (2002) 4-point, cosine 4-point, and the
-// Bao, Kaiser & Peskin (2016) 6-point C^3 kernel in the IBAMR form (ib_6_delta_fcn).
+// Bao, Kaye & Peskin (2016) 6-point C^3 kernel in the IBAMR form (ib_6_delta_fcn).
 #pragma once
 #include <array>
 #include <string>
@@ -31,7 +31,7 @@ struct KernelStencil {
 };
 KernelStencil kernel_stencil(KernelKind kind, double xi);
 
-// Bao, Kaiser & Peskin (2016) second-moment constant K = 59/60 - sqrt(29)/20 [-].
+// Bao, Kaye & Peskin (2016) second-moment constant K = 59/60 - sqrt(29)/20 [-].
 double bkp6_second_moment();
 
 }  // namespace ibms

@@ -238,7 +238,12 @@ void map_face_stencils(const Grid& grid, KernelKind kernel, const std::vector<st
 
 void marker_node_weights(const Grid& grid, KernelKind kernel, const std::array<double, 2>& marker, bool on_faces,
                          int component, std::vector<NodeWeight>& out) {
-  const auto [cx, cy, fx, fy] = face_stencils(grid, kernel, marker);
+  marker_node_weights(grid, face_stencils(grid, kernel, marker), on_faces, component, out);
+}
+
+void marker_node_weights(const Grid& grid, const FaceStencils& stencils, bool on_faces, int component,
+                         std::vector<NodeWeight>& out) {
+  const auto& [cx, cy, fx, fy] = stencils;
   // u on (fx, cy) and v on (cx, fy) for the faces; both on (cx, cy) for the centres.
   const MappedStencil& sx = on_faces && component == 0 ? fx : cx;
   const MappedStencil& sy = on_faces && component == 1 ? fy : cy;

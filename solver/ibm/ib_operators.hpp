@@ -90,5 +90,8 @@ struct NodeWeight {
 // sorted by node with the mirrored shares of one node summed. Replaces `out`.
 void marker_node_weights(const Grid& grid, KernelKind kernel, const std::array<double, 2>& marker, bool on_faces,
                          int component, std::vector<NodeWeight>& out);
+// The same from the marker's mapped stencils (map_face_stencils).
+void marker_node_weights(const Grid& grid, const FaceStencils& stencils, bool on_faces, int component,
+                         std::vector<NodeWeight>& out);
 
 }  // namespace ibms

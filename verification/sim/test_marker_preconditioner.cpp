@@ -70,6 +70,7 @@ double round_trip_error(const Vec2& centre, bool periodic, bool on_faces, double
   ibms::MarkerPreconditioner preconditioner;
   preconditioner.reserve(coupling);
   const ibms::FluidSolver::FaceRange free_faces = sim.fluid_solver().corrected_faces();
+  for (ibms::BodyCoupling& body : coupling) ibms::map_face_stencils(grid, sim.kernel(), body.marker, body.face_stencils);
   // Leaks to measure: the cells' blocks once, then kept while nothing moves; none on the faces.
   BOOST_TEST(preconditioner.factorise(grid, sim.kernel(), on_faces, free_faces, coupling, {}) == !on_faces);
   BOOST_TEST(!preconditioner.factorise(grid, sim.kernel(), on_faces, free_faces, coupling, {}));
@@ -124,6 +125,7 @@ BOOST_AUTO_TEST_CASE(a_responding_rim_keeps_the_identity) {
   for (std::size_t k = 0; k < n; ++k) v[k] = 0.1 * static_cast<double>(k) - 1.0;
   ibms::MarkerPreconditioner preconditioner;
   preconditioner.reserve(coupling);
+  for (ibms::BodyCoupling& body : coupling) ibms::map_face_stencils(sim.grid(), sim.kernel(), body.marker, body.face_stencils);
   preconditioner.factorise(sim.grid(), sim.kernel(), true, sim.fluid_solver().corrected_faces(), coupling, {});
   preconditioner.set_leaks(coupling, v.data());
   preconditioner.apply(coupling, v.data(), x.data());

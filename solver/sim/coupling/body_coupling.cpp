@@ -265,6 +265,14 @@ double measure_face_slip(const Grid& grid, KernelKind kernel, const WallVelociti
   return slip_of_interpolated(coupling, true);
 }
 
+double measure_face_slip(const Grid& grid, const WallVelocities& walls, const FaceField& face_x, const FaceField& face_y,
+                         std::vector<BodyCoupling>& coupling) {
+  for_each_body(coupling.size(), [&](std::size_t b) {
+    interpolate_faces(grid, coupling[b].face_stencils, walls, face_x, face_y, coupling[b].interpolated_velocity);
+  });
+  return slip_of_interpolated(coupling, true);
+}
+
 void spread_slip_correction(const Grid& grid, KernelKind kernel, double dt, std::vector<BodyCoupling>& coupling,
                             CellField& increment_x, CellField& increment_y) {
   for (BodyCoupling& c : coupling) {

@@ -156,6 +156,9 @@ double measure_slip(const Grid& grid, KernelKind kernel, const WallVelocities& w
 // face_slip_rms; returns the largest face_slip_max.
 double measure_face_slip(const Grid& grid, KernelKind kernel, const WallVelocities& walls, const FaceField& face_x,
                          const FaceField& face_y, std::vector<BodyCoupling>& coupling);
+// The same with each body's markers' face stencils as mapped in face_stencils (map_face_stencils).
+double measure_face_slip(const Grid& grid, const WallVelocities& walls, const FaceField& face_x, const FaceField& face_y,
+                         std::vector<BodyCoupling>& coupling);
 
 // One correction of the no-slip iteration after measure_slip: dF_l = r_l / dt is added to
 // forcing_sum, and dt S dF = S r is added to (increment_x, increment_y).

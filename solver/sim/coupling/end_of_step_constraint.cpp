@@ -158,13 +158,18 @@ CouplingWork EndOfStepConstraint::hold(const CouplingStep& step) {
                    fluid, markers, a.slip_increment_x, a.slip_increment_y, a.force_face_x, a.force_face_y, a.work,
                    responds ? response : BodyResponse{}, &a.preconditioner);
   keep_forces(markers);
-  // The slip of the velocity not constrained, for the series: cells and faces differ by the
-  // momentum interpolation's dt (mean(G_c) - G_f) p (§2.3).
+  return {result.products, result.max_change};
+}
+
+void EndOfStepConstraint::measure_slip_at_end(const FluidSolver& solver, const FluidState& fluid,
+                                              std::vector<BodyCoupling>& markers) const {
+  // Cells and faces differ by the momentum interpolation's dt (mean(G_c) - G_f) p (§2.3).
+  const Grid& grid = solver.grid();
+  const WallVelocities walls = wall_velocities_at(solver.boundaries(), fluid.time);  // t^{n+1}
   if (on_faces_)
     measure_slip(grid, kernel_, walls, fluid.velocity_x, fluid.velocity_y, markers);
   else
     measure_face_slip(grid, kernel_, walls, fluid.velocity_face_x, fluid.velocity_face_y, markers);
-  return {result.products, result.max_change};
 }
 
 std::string EndOfStepConstraint::forcing_stage() const {

@@ -22,6 +22,10 @@ class EndOfStepConstraint final : public Coupling {
   void predict(const CouplingStep& step) override;
   const FaceForcing* projection_forcing() const override { return &balanced_; }
   CouplingWork hold(const CouplingStep& step) override;
+  // The slip of the velocity hold does not constrain (cells under "faces", faces under "cells"):
+  // measured only for the series rows that record it.
+  void measure_slip_at_end(const FluidSolver& solver, const FluidState& fluid,
+                           std::vector<BodyCoupling>& markers) const override;
   std::string forcing_stage() const override;
   std::string correction_stage() const override;
   bool counts_products() const override { return true; }

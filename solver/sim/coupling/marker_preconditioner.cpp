@@ -97,7 +97,7 @@ bool MarkerPreconditioner::factorise(const Grid& grid, KernelKind kernel, bool o
     }
     moved = true;
     for (int d = 0; d < 2; ++d) {
-      for (Eigen::Index k = 0; k < n; ++k) marker_node_weights(grid, kernel, c.marker[k], on_faces, d, weights_[k]);
+      for (Eigen::Index k = 0; k < n; ++k) marker_node_weights(grid, c.face_stencils[k], on_faces, d, weights_[k]);
       Eigen::MatrixXd& C = block.overlap[d];
       C.resize(n, n);
       double largest = 0.0;
@@ -156,7 +156,7 @@ void MarkerPreconditioner::build_local(const Grid& grid, KernelKind kernel, cons
   for (int k = 0; k < n; ++k)
     for (int d = 0; d < 2; ++d) {
       std::vector<NodeWeight>& nodes = weights_[2 * k + d];
-      marker_node_weights(grid, kernel, c.marker[k], /*on_faces=*/true, d, nodes);
+      marker_node_weights(grid, c.face_stencils[k], /*on_faces=*/true, d, nodes);
       std::vector<CellWeight>& r = cells_[2 * k + d];
       r.clear();
       std::size_t corrected = 0;  // the nodes kept for C: the corrected faces only

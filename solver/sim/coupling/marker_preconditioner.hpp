@@ -54,7 +54,8 @@ class MarkerPreconditioner {
   // operator; cells: C and the outward normals), free_faces the faces the projection corrects;
   // returns whether leaks must be measured again (a body with a J S block moved).
   // response: the bodies' response in the marker system (rigid bodies' columns join A_b; the
-  // impulses and changes are built in pass_increment and pass_force).
+  // impulses and changes are built in pass_increment and pass_force). The markers' face_stencils
+  // must be mapped at the current markers (map_face_stencils; hold_no_slip maps them).
   bool factorise(const Grid& grid, KernelKind kernel, bool on_faces, const FluidSolver::FaceRange& free_faces,
                  std::vector<BodyCoupling>& coupling, const BodyResponse& response);
   // z: every body's markers pushed along their outward normals n_l (unknowns 2l + d of each body in

@@ -126,7 +126,7 @@ NoSlipResult hold_no_slip(const Grid& grid, KernelKind kernel, const WallVelocit
     update_body_change();
     // The slip of the constrained velocity, r = (U_target - J u) / U_ref of u^{n+1} or J_f U_f^{n+1}
     // (measure_slip / measure_face_slip leave U_target - J u in pass_increment).
-    const double slip = on_faces ? measure_face_slip(grid, kernel, walls, state.velocity_face_x, state.velocity_face_y, coupling)
+    const double slip = on_faces ? measure_face_slip(grid, walls, state.velocity_face_x, state.velocity_face_y, coupling)
                                  : measure_slip(grid, kernel, walls, state.velocity_x, state.velocity_y, coupling);
     if (slip <= tolerance || result.products >= max_products) break;
     // A cycle that did not halve the slip has met the floor of the marker system (a part of the
