@@ -157,7 +157,7 @@ def work_precision_section(out, build, fig_dir, source=None):
             t, e = [p[0] for p in pts], [p[1] for p in pts]
             ax.loglog(t, e, "o-", ms=4)
             for p in pts:
-                ax.annotate(p[2], (p[0], p[1]), fontsize=6, xytext=(3, 3), textcoords="offset points")
+                ax.annotate(p[2], (p[0], p[1]), fontsize=7, xytext=(3, 3), textcoords="offset points")
             lt, le = [math.log(v) for v in t], [math.log(v) for v in e]
             mx, my = sum(lt) / len(lt), sum(le) / len(le)
             ax.loglog(t, [math.exp(my + slope * (math.log(v) - mx)) for v in t], "k--", lw=0.8,
@@ -165,7 +165,7 @@ def work_precision_section(out, build, fig_dir, source=None):
             for re_number, n, seconds, error in _basilisk_points(source, name):
                 ax.loglog([seconds], [error], "s", color="C3", ms=5,
                           label="Basilisk %s$^2$" % n if n == "128" else None)
-                ax.annotate("B%s" % n, (seconds, error), fontsize=6, xytext=(3, -8), textcoords="offset points")
+                ax.annotate("B%s" % n, (seconds, error), fontsize=7, xytext=(3, -8), textcoords="offset points")
             ax.set_title(name)
             ax.set_xlabel("wall time [s]")
             ax.set_ylabel("error")
@@ -223,13 +223,13 @@ def body_work_precision(out, build, fig_dir, source, cases):
             ax.loglog([p[0] for p in pts], [p[1] for p in pts], style, color=colour, ms=4,
                       label="%s, slope %.2f" % (legend, slope))
             for p in pts:
-                ax.annotate(p[2], (p[0], p[1]), fontsize=6, xytext=(3, 3), textcoords="offset points")
+                ax.annotate(p[2], (p[0], p[1]), fontsize=7, xytext=(3, 3), textcoords="offset points")
         if family == "dfg_2d2":
             ax.axhline(0.03, color="0.4", ls=":", lw=0.8, label="3 %")
         ax.set_title(_BODY_FAMILIES[family][0], fontsize=9)
         ax.set_xlabel("wall time [s]")
         ax.set_ylabel("error")
-        ax.legend(fontsize=6)
+        ax.legend(fontsize=7)
     path = os.path.join(fig_dir, "work_precision_bodies.pdf")
     fig.tight_layout()
     fig.savefig(path)
@@ -297,7 +297,7 @@ def stability_section(out, build, fig_dir):
                               ms=6, ls="none", label=kind)
             ax.set_title("%s: %s solid steps" % (name, mode))
             ax.set_xlabel("fluid dt [s]")
-            ax.legend(fontsize=6)
+            ax.legend(fontsize=7)
         quantity = next((m.group(1) for c in _comments(f) for m in [re.search(r"against (\w+)", c)] if m),
                         "stiffness")
         axes[0].set_ylabel(quantity.replace("_", " "))
@@ -387,7 +387,7 @@ def fluid_stability_maps(out, files, fig_dir):
                         max(_float(r["cell_reynolds"]) for r in rows) * 1.5)
             ax.set_title("%s: %s" % (name, mode.replace("_", " ")), fontsize=8)
             ax.set_xlabel("run.cfl (adaptive $\\Delta t$)" if "adaptive" in name else "CFL number $U\\Delta t/h$")
-            ax.legend(fontsize=5, framealpha=0.6)
+            ax.legend(fontsize=7, framealpha=0.6)
         axes[0][0].set_ylabel("$\\mathrm{Re}_h = Uh/\\nu$")
         path = os.path.join(fig_dir, "stability_fluid_%s.pdf" % name)
         fig.tight_layout()

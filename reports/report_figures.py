@@ -148,7 +148,7 @@ def cavity_profiles(case_dir, case, ref_dir, out, labels=None):
                        if comp in refs else "%s $-$ point-mirrored" % comp, fontsize=7)
         ax.grid(alpha=0.3)
         dax.grid(alpha=0.3)
-        ax.legend(loc="best", fontsize=6)
+        ax.legend(loc="best", fontsize=7)
     fig.tight_layout()
     fig.savefig(out)
     plt.close(fig)
@@ -372,7 +372,7 @@ def body_histories(case_dir, out, literature=None):
             if l not in labels:
                 handles.append(h)
                 labels.append(l)
-    fig.legend(handles, labels, loc="lower center", ncol=min(3, len(labels)), fontsize=6.5,
+    fig.legend(handles, labels, loc="lower center", ncol=min(3, len(labels)), fontsize=7,
                bbox_to_anchor=(0.5, 1.0), frameon=False)
     fig.tight_layout()
     fig.savefig(out)
@@ -470,7 +470,7 @@ def convergence_study(name, refined, items, out):
     ax.set_ylabel("error")
     ax.set_title(name.replace("_", " "), fontsize=9)
     ax.grid(alpha=0.3, which="both")
-    ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize=6.5, frameon=False)
+    ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize=7, frameon=False)
     fig.tight_layout()
     fig.savefig(out)
     plt.close(fig)
