@@ -91,7 +91,10 @@ def readme_summary(source, case):
     # Pointers to the project's issue tracker mean nothing to a reader of the report.
     text = re.sub(r"\s*\((?:see )?issue \d+(?:\s*(?:§|item)\s*\d+)?\)", "", text)
     text = re.sub(r"[:;,]?\s*issue \d+(?:\s*(?:§|item)\s*\d+)?", "", text)
-    return text[:900] or None
+    if len(text) > 900:  # whole sentences, else whole words, never a word cut in two
+        cut = text.rfind(". ", 0, 900)
+        text = text[:cut + 1] if cut > 300 else text[:text.rfind(" ", 0, 900)] + " ..."
+    return text or None
 
 
 # ---------------------------------------------------------------- run parameters (from the outputs)
