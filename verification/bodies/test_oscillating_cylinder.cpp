@@ -8,7 +8,7 @@
 //  - The box (8 D, walls) adds the confinement of a dipole, ~ (D/L)^2: measured at D/h = 20 as
 //    (4/3) (F(8 D) - F(16 D)) (the 1/L^2 law checked at D/h = 10 with 8, 16 and 32 D: the
 //    differences fall by 4.1 and 4.4) and removed from every grid; the test prints it.
-// Claims: each part's error falls at least at first order between successive grids, and both are
+// Claims: each part's error falls at an order in [1, 3] between successive grids, and both are
 // within 1 % of the exact values on the finest grid; the marker system takes at most 2 products a
 // step on every grid.
 #define BOOST_TEST_MODULE oscillating_cylinder
@@ -136,11 +136,17 @@ BOOST_AUTO_TEST_CASE(both_force_parts_converge_to_the_exact_ones) {
     // step measured; 10.7, 10.0 and 12.2 with J S and the leak, 21-29 without a preconditioner.
     BOOST_TEST(f.mean_products <= 2.0);
   }
-  const verification::OrderClaim claim{1.0, 1.0, NAN, "h"};
+  // Band [1, 3]: the diffuse interface is first order; with the retraction cancelling its leading
+  // term the parts converge at 1.5-2.6 (measured), and an order above 3 would be errors cancelling
+  // between grids, not convergence.
+  const verification::OrderClaim claim{1.0, 1.0, 3.0, "h"};
   verification::append_convergence_csv("oscillating cylinder, added-mass part (Stokes 1851)", grids, h, error_m, claim);
   verification::append_convergence_csv("oscillating cylinder, Stokes-drag part (Stokes 1851)", grids, h, error_d, claim);
-  for (const double p : verification::pairwise_orders(h, error_m)) BOOST_TEST(p >= 1.0);
-  for (const double p : verification::pairwise_orders(h, error_d)) BOOST_TEST(p >= 1.0);
+  for (const auto* error : {&error_m, &error_d})
+    for (const double p : verification::pairwise_orders(h, *error)) {
+      BOOST_TEST(p >= claim.asserted_min);
+      BOOST_TEST(p <= claim.asserted_max);
+    }
   BOOST_TEST(error_m.back() < 0.01);
   BOOST_TEST(error_d.back() < 0.01);
 }
