@@ -93,7 +93,8 @@ def readme_summary(source, case):
     text = re.sub(r"[:;,]?\s*issue \d+(?:\s*(?:§|item)\s*\d+)?", "", text)
     if len(text) > 900:  # whole sentences, else whole words, never a word cut in two
         cut = text.rfind(". ", 0, 900)
-        text = text[:cut + 1] if cut > 300 else text[:text.rfind(" ", 0, 900)] + " ..."
+        space = text.rfind(" ", 0, 900)
+        text = text[:cut + 1] + " ..." if cut > 300 else text[:space if space > 0 else 900] + " ..."
     return text or None
 
 
@@ -359,9 +360,11 @@ def checks_by_case_section(out, order, metas, judged):
     out.append(r"\section{Validation checks by case}\label{sec:checks}")
     out.append("Every line of \\texttt{validation/results.csv} (last line per case and metric), grouped by "
                "case. Source: P published, E exact, O ibms's own (the case's mark from its README; lines "
-               "comparing ibms with itself, such as GCI and wheel against rigid, are O). \\emph{gate}: "
+               "comparing ibms with itself, such as the grid convergence index GCI of Roache %s in the form of "
+               "Celik et al. %s and wheel against rigid, are O). \\emph{gate}: "
                "\\emph{check} when the case's check program judged the line, \\emph{report} when this report "
-               "judged an \\emph{info} line against its target (rules in \\texttt{reports/report\\_cases.py}).\n")
+               "judged an \\emph{info} line against its target (rules in \\texttt{reports/report\\_cases.py}).\n"
+               % (cases_mod.cite("roache1994"), cases_mod.cite("celik2008")))
     rows = []
     for case in order:
         c = judged.get(case)
@@ -529,8 +532,12 @@ def parameter_table(out, params):
                                                "passes", "coupling", "run [s]"], rows,
                                               caption="Run parameters from each output's resolved scene "
                                                       "(\\texttt{fluid.convection} / \\texttt{fluid.wall\\_closure}; "
-                                                      "\\texttt{ibm.coupling}: \\emph{uhlmann} where the scene "
-                                                      "has no such key) and its \\texttt{/timing/run}.", size="footnotesize"))
+                                                      "\\texttt{ibm.coupling}: \\emph{uhlmann} %s where the scene "
+                                                      "has no such key, \\emph{no\\_slip} the end-of-step constraint "
+                                                      "%s; bodies carry the inner fluid's inertia of Kempe \\& "
+                                                      "Fr\\\"ohlich %s) and its \\texttt{/timing/run}."
+                                                      % (cases_mod.cite("uhlmann2005"), cases_mod.cite("taira2007"),
+                                                         cases_mod.cite("kempe2012")), size="footnotesize"))
 
 
 def case_section(out, case, meta, build, source, judged, params, fig_dir):

@@ -167,8 +167,9 @@ void find_touching_pairs_body_bounds(const ContactSpheres& spheres, const WallBo
   if (n < 2) return;
   // The spheres in runs of one body (gather_contact_spheres lists each body's spheres together):
   // run b holds spheres start[b] .. start[b + 1]. Runs, not body indices, so that a group of k
-  // bodies costs O(k) whatever the scene's number of bodies. A body split over two runs would only
-  // cost a broad-phase test: check_pair rejects spheres of one body by their body index.
+  // bodies costs O(k) whatever the scene's number of bodies. A body split over several runs still
+  // gives the right pairs (check_pair rejects spheres of one body by their body index), at the cost
+  // of the tests between its runs.
   thread_local std::vector<int> start;
   thread_local std::vector<std::array<double, 4>> bounds;  // x_min, x_max, y_min, y_max of the spheres
   start.clear();

@@ -50,7 +50,9 @@ PairSearchResult find_touching_pairs_cell_list(const ContactSpheres& spheres, co
 // overlap, the sphere pairs of the spheres of each that meet the boxes' common part: for bodies of
 // many spheres each, far fewer distance checks than the cell list, whose bins are mostly filled
 // with spheres of one body. n_pair_checks counts the body-box tests too. Periodic boxes use the
-// cell list.
+// cell list. Each body's spheres are expected together (as gather_contact_spheres lists them): the
+// boxes are those of runs of one body's spheres, so a body split over several runs is still searched
+// right, but at the cost of the tests between its runs.
 PairSearchResult find_touching_pairs_body_bounds(const ContactSpheres& spheres, const WallBox& box);
 // The same into `out` (cleared, capacity reused) for walled boxes; periodic boxes: the cell list.
 void find_touching_pairs_body_bounds(const ContactSpheres& spheres, const WallBox& box, PairSearchResult& out);

@@ -69,7 +69,7 @@ double mean_in_window(const SeriesTable& s, const std::string& column, double t0
 
 void write_trajectories(const SeriesTable& s, double t0, double t1, const std::string& path, const std::string& run) {
   std::ofstream out(path);
-  out << "# ibms two-sided cavity with 16 particles, " << run << " run: particle centroids (rim-polygon area\n"
+  out << "# ibms two-sided cavity with particles, " << run << " run: particle centroids (rim-polygon area\n"
          "# centroid) and diameters D(t) for " << t0 << " <= t <= " << t1 << ", every output step\n"
          "time [-],particle [-],x [-],y [-],diameter [-]\n";
   out.precision(10);

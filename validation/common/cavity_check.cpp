@@ -245,7 +245,6 @@ int check_symmetry(char** argv) {
               constraints_pass ? "pass" : "FAIL");
   append_result(results, name, "largest defect of reference/constraints (lids, centre, odd profiles, net flux)",
                 tolerance, constraint_defect, constraints_pass);
-  const bool converges = check_botella_peyret(argv[3], grids, results, name);
   std::printf("grid convergence (Celik et al. 2008, safety factor 1.25, r = 2):\n");
   // u's extrema on x = 0.5 are the lid values, so use interior point values instead.
   report_gci(grids, results, name,
