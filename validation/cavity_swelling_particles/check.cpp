@@ -1,4 +1,4 @@
-// Check of the two-sided cavity with 16 particles, and with 256 (README.md): reads the body series
+// Check of the two-sided cavity with 16 particles (README.md): reads the body series
 // of the non-swelling and the swelling run, writes the centre trajectories for
 // t_stop <= t <= t_end as CSV (long format: time, particle, x, y, diameter), and verifies
 //   1. both runs reach t_end (stable: no blow-up);
@@ -103,7 +103,6 @@ int main(int argc, char** argv) {
     // The collision-time set and the papers'-coupling set record their metrics under a prefix.
     const std::string prefix = out_dir.find("collision_time") != std::string::npos    ? "collision_time: "
                                : out_dir.find("papers_coupling") != std::string::npos ? "papers' coupling: "
-                               : out_dir.find("particles_256") != std::string::npos   ? "256 particles: "
                                                                                      : "";
     bool all = true;
     for (const auto& [label, s] : {std::pair{"non-swelling", &plain}, std::pair{"swelling", &swell}}) {
