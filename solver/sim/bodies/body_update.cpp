@@ -107,7 +107,7 @@ void advance_group_inner_loop(const SolidStepInputs& in, const std::vector<Swell
   }
 }
 
-// One group (groups.members) from t^n to t^n + dt in n_sub shared sub-steps.
+// One group (members) from t^n to t^n + dt in n_sub shared sub-steps.
 void advance_group(const SolidStepInputs& in, const std::vector<SwellingSchedule>& swelling,
                    const ContactForces& contact_forces, const BodySet& members, const std::vector<char>& implicit_of_body,
                    std::vector<ImplicitSpringSystem>& implicit, int n_sub,
@@ -157,21 +157,23 @@ void advance_group(const SolidStepInputs& in, const std::vector<SwellingSchedule
 
 namespace {
 
-// Sets groups.members to group g (global mode, g = -1: every body), decides the
-// spring integrator of its mass-spring bodies (groups.implicit_of_body) and returns the sub-steps
-// the group needs in this step (0: no members). inner_substeps: the inner contact steps per
+// The bodies of group g (global mode, g = -1: every body) in the step.
+BodySet group_bodies(const SubstepGroups& groups, int g) { return g < 0 ? BodySet{} : groups.group_members(g); }
+
+// Decides the spring integrator of group g's mass-spring bodies (groups.implicit_of_body) and
+// returns the sub-steps the group needs in this step (0: no members). inner_substeps: the inner contact steps per
 // sub-step when the group takes the inner loop (its sub-step is then its springs' alone), else 0.
 int group_substeps(const SolidStepInputs& in, SubstepGroups& groups, int g, const std::vector<MassSpringBody>& bodies,
                    SpectralWorkspace& scratch, int& inner_substeps) {
   inner_substeps = 0;
-  groups.members = g < 0 ? BodySet{} : groups.group_members(g);
+  const BodySet members = group_bodies(groups, g);
   groups.implicit_of_body.resize(bodies.size());
   const double contact_dt = g < 0 ? in.max_substep : groups.max_substep[g];
   double spring_dt = HUGE_VAL;
   int n_members = 0;
   bool inner_loop_fits = static_cast<bool>(groups.inner_loop) && std::isfinite(contact_dt);
-  for (std::size_t i = 0; i < groups.members.count(bodies.size()); ++i) {
-    const std::size_t b = groups.members.at(i);
+  for (std::size_t i = 0; i < members.count(bodies.size()); ++i) {
+    const std::size_t b = members.at(i);
     ++n_members;
     // The spectral bound only where it decides something (explicit or automatic springs).
     const bool forced_implicit = bodies[b].integrator == SpringIntegrator::implicit_euler;
@@ -207,10 +209,10 @@ int end_group(const SubstepGroups& groups, const std::vector<MassSpringBody>& bo
   return groups.group_of.size() == bodies.size() ? static_cast<int>(groups.max_substep.size()) : 0;
 }
 
-void record(const SubstepGroups& groups, int n_sub, std::vector<int>& substeps_of_body, SolidStepCount& count) {
+void record(const BodySet& members, int n_sub, std::vector<int>& substeps_of_body, SolidStepCount& count) {
   count.max_substeps = std::max(count.max_substeps, n_sub);
-  for (std::size_t i = 0; i < groups.members.count(substeps_of_body.size()); ++i) {
-    substeps_of_body[groups.members.at(i)] = n_sub;
+  for (std::size_t i = 0; i < members.count(substeps_of_body.size()); ++i) {
+    substeps_of_body[members.at(i)] = n_sub;
     count.body_substeps += n_sub;
   }
 }
@@ -232,7 +234,7 @@ SolidStepCount count_substeps(const SolidStepInputs& in, SubstepGroups& groups,
     int inner = 0;
     groups.group_substeps.push_back(group_substeps(in, groups, g, bodies, scratch, inner));
     groups.group_inner_substeps.push_back(inner);
-    record(groups, groups.group_substeps.back(), groups.substeps_of_body, count);
+    record(group_bodies(groups, g), groups.group_substeps.back(), groups.substeps_of_body, count);
   }
   return count;
 }
@@ -265,7 +267,7 @@ SolidStepCount advance_bodies(const SolidStepInputs& in, const std::vector<Swell
 #endif
   for (int k = 0; k < n_groups; ++k) {
     if (groups.group_substeps[k] == 0) continue;
-    const BodySet mask = first < 0 ? BodySet{} : groups.group_members(first + k);  // global mode: every body
+    const BodySet mask = group_bodies(groups, first < 0 ? -1 : first + k);
     try {
       if (groups.group_inner_substeps[k] > 0)
         advance_group_inner_loop(in, swelling, groups.inner_loop, mask, groups.group_substeps[k],

@@ -63,7 +63,6 @@ struct SubstepGroups {
   std::vector<double> max_substep;
   ContactInnerLoop inner_loop;        // empty: the shared sub-step for every group
   std::vector<int> group_inner_substeps;  // out: inner steps per outer sub-step of each group (0: shared)
-  BodySet members;  // scratch: the group being planned
   std::vector<int> member_start;  // scratch: group g's bodies are member_list[member_start[g] ..
   std::vector<int> member_list;   //   member_start[g + 1]), ascending (list_members)
   // Lists each group's bodies from group_of, in O(bodies + groups): a group's loops then visit its

@@ -260,9 +260,9 @@ double measure_slip(const Grid& grid, KernelKind kernel, const WallVelocities& w
 double measure_face_slip(const Grid& grid, KernelKind kernel, const WallVelocities& walls, const FaceField& face_x,
                          const FaceField& face_y, std::vector<BodyCoupling>& coupling) {
   for_each_body(coupling.size(), [&](std::size_t b) {
-    interpolate_faces(grid, kernel, walls, face_x, face_y, coupling[b].marker, coupling[b].interpolated_velocity);
+    map_face_stencils(grid, kernel, coupling[b].marker, coupling[b].face_stencils);
   });
-  return slip_of_interpolated(coupling, true);
+  return measure_face_slip(grid, walls, face_x, face_y, coupling);
 }
 
 double measure_face_slip(const Grid& grid, const WallVelocities& walls, const FaceField& face_x, const FaceField& face_y,

@@ -156,7 +156,8 @@ double measure_slip(const Grid& grid, KernelKind kernel, const WallVelocities& w
 // face_slip_rms; returns the largest face_slip_max.
 double measure_face_slip(const Grid& grid, KernelKind kernel, const WallVelocities& walls, const FaceField& face_x,
                          const FaceField& face_y, std::vector<BodyCoupling>& coupling);
-// The same with each body's markers' face stencils as mapped in face_stencils (map_face_stencils).
+// The same with each body's markers' face stencils as mapped in face_stencils (map_face_stencils;
+// the form above maps them at the current markers first).
 double measure_face_slip(const Grid& grid, const WallVelocities& walls, const FaceField& face_x, const FaceField& face_y,
                          std::vector<BodyCoupling>& coupling);
 

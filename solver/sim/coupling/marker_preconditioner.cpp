@@ -92,7 +92,7 @@ bool MarkerPreconditioner::factorise(const Grid& grid, KernelKind kernel, bool o
     block.leak = 0.0;
     block.exact = on_faces && (c.given_motion || rigid) && n > 0;
     if (block.exact) {
-      build_local(grid, kernel, free_faces, b, coupling, rigid ? response : BodyResponse{}, block);
+      build_local(grid, free_faces, b, coupling, rigid ? response : BodyResponse{}, block);
       continue;
     }
     moved = true;
@@ -137,7 +137,7 @@ bool MarkerPreconditioner::factorise(const Grid& grid, KernelKind kernel, bool o
 }
 
 // A_b = J_f P_0 S_f of one body on the unbounded grid (marker_preconditioner.hpp).
-void MarkerPreconditioner::build_local(const Grid& grid, KernelKind kernel, const FluidSolver::FaceRange& free_faces,
+void MarkerPreconditioner::build_local(const Grid& grid, const FluidSolver::FaceRange& free_faces,
                                        std::size_t body, std::vector<BodyCoupling>& coupling,
                                        const BodyResponse& response, Block& block) {
   BodyCoupling& c = coupling[body];

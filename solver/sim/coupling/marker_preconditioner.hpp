@@ -86,7 +86,7 @@ class MarkerPreconditioner {
     bool identity = false;               // a responding (mass-spring) rim: no block, no leak
   };
   std::vector<Block> blocks_;
-  void build_local(const Grid& grid, KernelKind kernel, const FluidSolver::FaceRange& free_faces,
+  void build_local(const Grid& grid, const FluidSolver::FaceRange& free_faces,
                    std::size_t body, std::vector<BodyCoupling>& coupling, const BodyResponse& response, Block& block);
   std::vector<std::vector<NodeWeight>> weights_;  // the nodes of each marker of the largest body
   std::vector<std::vector<CellWeight>> cells_;    // R of each marker and component (2k + d) of the largest body
