@@ -127,7 +127,12 @@ def work_precision_section(out, build, fig_dir, source=None):
                "resolutions, error against the wall time of the whole run on this machine "
                "(shared, so times carry some noise). The slope is the least-squares fit of "
                "$\\log(\\mathrm{error})$ against $\\log(\\mathrm{time})$ over all points; for a "
-               "second-order method with $\\Delta t \\propto h$ in 2D the ideal is $-2/3$.\n")
+               "second-order method with $\\Delta t \\propto h$ in 2D the ideal is $-2/3$. In the "
+               "main job the fluid cases (MMS, cavities, settling disk) are timed with the machine to "
+               "themselves (job \\texttt{bench\\_work\\_precision}, every core claimed); the DFG "
+               "cylinders (job \\texttt{bench\\_work\\_precision\\_bodies}) on one core beside "
+               "other one-thread jobs, so their times are those of a shared machine, and their figure "
+               "is the ratio of the two couplings' times, both measured so.\n")
     cases, table = [], []
     for f in files:
         rows = _rows(f)

@@ -40,6 +40,18 @@ def read_sweep(path):
     return title, plot, reader.fieldnames or [], rows
 
 
+SHARED_PREFIX = "points read from the validation runs"
+
+
+def shared_note(path):
+    """The CSV's note naming the points that are validation runs (read, not run again), or ""."""
+    with open(path, encoding="utf-8", errors="replace") as f:
+        for line in f:
+            if line.startswith("#") and line[1:].strip().startswith(SHARED_PREFIX):
+                return line[1:].strip()
+    return ""
+
+
 def _cell(text):
     value = _float(text)
     if math.isfinite(value) and not str(text).lstrip("-").isdigit():
@@ -105,7 +117,10 @@ def sweeps_section(out, build, fig_dir):
                "run's outputs, and the wall time) into \\texttt{BUILD/sweeps/<name>.csv}. Status: "
                "\\emph{pass} for a run that exited 0; \\emph{accepted exit N} for a run that ended with "
                "another exit code its sweep file accepts (\\texttt{accept\\_exit\\_codes}, e.g. 3 when a "
-               "body leaves the box, the end of a scene without a contact model).\n")
+               "body leaves the box, the end of a scene without a contact model). A point with the "
+               "scene and values of a validation run of the level is that run: it reads the run's "
+               "outputs and takes its wall time instead of running again (the table's caption names "
+               "those runs).\n")
     for k, path in enumerate(files):
         title, plot, header, rows = read_sweep(path)
         out.append(r"\subsection{%s}" % esc(title))
@@ -115,8 +130,9 @@ def sweeps_section(out, build, fig_dir):
         table = [[_status_cell(r) if h == "status" else _cell(r.get(h, "")) for h in header] for r in rows]
         spec = "".join("r" for _ in header)
         out.append(longtable(spec, [r"\texttt{%s}" % esc(h) for h in header], table,
-                             caption="Sweep \\texttt{%s}: one row per grid point." %
-                                     esc(os.path.basename(path))))
+                             caption="Sweep \\texttt{%s}: one row per grid point.%s" %
+                                     (esc(os.path.basename(path)),
+                                      (" The " + esc(shared_note(path)) + ".") if shared_note(path) else "")))
         p = plot_sweep(plot, rows, os.path.join(fig_dir, "sweep%d.pdf" % k))
         if p:
             out.append(figure(p, "Sweep \\texttt{%s}: %s against \\texttt{%s}." %

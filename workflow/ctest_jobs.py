@@ -93,6 +93,17 @@ def scene_and_sets(command):
     return scene, sets
 
 
+def output_of(command):
+    """The output file an ibms run writes (`-o FILE`, or `-DOUTPUT=FILE` through run_to_wall.cmake),
+    None when the command names none."""
+    for i, arg in enumerate(command):
+        if arg.startswith("-DOUTPUT="):
+            return arg.split("=", 1)[1]
+        if arg == "-o" and i + 1 < len(command):
+            return command[i + 1]
+    return None
+
+
 def load_jobs(build, source, labels, exclude_cases=(), tests=None):
     """Jobs of the tests carrying one of `labels` (plus the fixture-setup tests they require, as
     ctest adds them), cases in exclude_cases left out. Returns an ordered dict name -> job."""
@@ -150,6 +161,7 @@ def load_jobs(build, source, labels, exclude_cases=(), tests=None):
                    skip_code=props.get("SKIP_RETURN_CODE"), will_fail=bool(props.get("WILL_FAIL", False)),
                    status=os.path.join(wf, "tests", name + ".status"))
         job["scene"], job["sets"] = scene_and_sets(command)
+        job["output"] = output_of(command) if kind == "run" else None
         job["definition"] = hashlib.sha256(json.dumps(
             [job["command"], job["env"], job["cwd"], job["pass_regex"], job["fail_regex"],
              job["skip_code"], job["will_fail"]]).encode()).hexdigest()[:16]

@@ -53,12 +53,14 @@ def schedule(build, level="default", cores=2, list_jobs=False):
         sweeps[s["name"]] = s
     benches, bench_level = config.get("benches", []), config.get("bench_level", "default")
     times = priorities.measured(build, wf)
+    shared = sweep_files.shared_runs(sweeps, jobs)
     cases = [("before: every bench exclusive, no priorities", dict(one_core_benches=set()), "none"),
              ("after: map benches on one core, longest first, exclusive jobs first", {}, "first"),
              ("after, exclusive jobs last (config exclusive=last)", {}, "last")]
     for title, extra, exclusive in cases:
         plan = priorities.plan(jobs, benches, bench_level, sweeps, build, wf, ibms, cores,
-                               exclusive if exclusive != "none" else "first", times=times, **extra)
+                               exclusive if exclusive != "none" else "first", times=times,
+                               shared_points=shared, **extra)
         order = {j: 0 for j in plan} if exclusive == "none" else None  # ties: the plan's order
         makespan, _ = priorities.simulate(plan, cores, order)
         excl = sum(v["seconds"] for v in plan.values() if v["cores"] > 1)
@@ -67,7 +69,8 @@ def schedule(build, level="default", cores=2, list_jobs=False):
               "one-core jobs %.0f s (%.0f s on %d cores)" % (title, cores, makespan, makespan / 60, excl, one,
                                                            one / cores, cores))
     if list_jobs:
-        plan = priorities.plan(jobs, benches, bench_level, sweeps, build, wf, ibms, cores, times=times)
+        plan = priorities.plan(jobs, benches, bench_level, sweeps, build, wf, ibms, cores, times=times,
+                               shared_points=shared)
         _, started = priorities.simulate(plan, cores)
         print("\n%-78s %9s %6s %8s %8s  %s" % ("job", "seconds", "cores", "priority", "start", "source"))
         for j, v in sorted(plan.items(), key=lambda kv: started[kv[0]][0]):

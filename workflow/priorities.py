@@ -21,8 +21,12 @@ A job's cost, in order of preference:
      estimates.SECONDS_PER_CELL_STEP (the measured cost of a cell-step, no margin); `ibms info`
      is not called for it: on a clean build its 2-12 s per scene would cost more than the order
      saves;
-  3. a fixed table of seconds measured on the 2-core development machine (benches per bench
-     level, the ctest verification), else UNKNOWN_SECONDS.
+  3. the jobs' times measured on the 2-core development machine: workflow/measured_seconds.json
+     for case runs, checks and sweep points (a clean clone has timed nothing, and without them
+     its longest runs started last), FALLBACK_SECONDS for the benches per bench level and the ctest
+     verification; else UNKNOWN_SECONDS (CHECK_SECONDS for a check).
+A sweep point that is a validation run of the level (sweeps.shared_runs) reads that run's output:
+it costs a check and waits for the run.
 
 Class of a cost: 0 below 1 s, else floor(log2(seconds)) + 1 (factor-2 bins, at most MAX_CLASS).
 A job that claims every core (a timing bench, the ctest verification) gets EXCLUSIVE_OFFSET on top
@@ -59,6 +63,9 @@ ONE_CORE_BENCHES = {
     "forcing_passes": "errors and rim slip per forcing-pass count; its ms per step compare passes "
                       "measured one after another in one process on one thread: a ratio, and a "
                       "one-thread job on the other core shares no core with it",
+    "work_precision_bodies": "the DFG cylinders' errors per grid under both couplings; their times "
+                             "give the ratio of the two couplings' time to 3 % on 2D-2's max c_D, "
+                             "both measured in one process on one thread beside the same neighbours",
 }
 
 # Seconds of the benches and of the ctest verification on the shared 2-core machine, used until
@@ -70,12 +77,12 @@ ONE_CORE_BENCHES = {
 # CTestCostData.txt. Quick: bench_work_precision 1 + 7 min (bench/README.md), bench_forcing_passes
 # a guess (a third of its grids); full: bench/README.md's "adds 39 min", forcing passes a guess.
 FALLBACK_SECONDS = {
-    ("bench", "default"): {"work_precision": 324, "fluid_stability": 201, "forcing_passes": 174,
-                           "stability": 40, "overhead": 5},
-    ("bench", "quick"): {"work_precision": 480, "fluid_stability": 201, "forcing_passes": 30,
-                         "stability": 40, "overhead": 5},
-    ("bench", "full"): {"work_precision": 3200, "fluid_stability": 201, "forcing_passes": 900,
-                        "stability": 40, "overhead": 5},
+    ("bench", "default"): {"work_precision": 100, "work_precision_bodies": 173, "fluid_stability": 202,
+                           "forcing_passes": 175, "stability": 8, "overhead": 2},
+    ("bench", "quick"): {"work_precision": 60, "work_precision_bodies": 420, "fluid_stability": 201,
+                         "forcing_passes": 30, "stability": 40, "overhead": 5},
+    ("bench", "full"): {"work_precision": 600, "work_precision_bodies": 2600, "fluid_stability": 201,
+                        "forcing_passes": 900, "stability": 40, "overhead": 5},
     ("verification", None): {"verification": 150},
 }
 BENCH_UNKNOWN_SECONDS = 300.0
@@ -191,11 +198,31 @@ def _with_fallback(m, fallback):
     return max(seconds, fallback), "measured (%s), at least the estimate" % status
 
 
-def run_seconds(scene, sets, m, ibms, wf):
+SHIPPED_PATH = os.path.join(os.path.dirname(os.path.abspath(__file__)), "measured_seconds.json")
+_shipped = None
+
+
+def shipped_seconds():
+    """key -> seconds of workflow/measured_seconds.json: the jobs' times measured on the project's
+    machine, for the order on a build that has timed nothing yet (a clean clone)."""
+    global _shipped
+    if _shipped is None:
+        _shipped = (read_json(SHIPPED_PATH) or {}).get("seconds", {})
+    return _shipped
+
+
+def run_seconds(scene, sets, m, ibms, wf, shipped=None):
+    """A run's or sweep point's seconds: measured in this build, else its `ibms info` estimate when
+    cached, else the shipped time, else UNKNOWN_SECONDS."""
     cost = estimates.cached_cost(scene, sets, wf) if scene else None
-    fallback = cost * estimates.SECONDS_PER_CELL_STEP if cost else UNKNOWN_SECONDS
+    if cost:
+        fallback, how = cost * estimates.SECONDS_PER_CELL_STEP, "ibms info estimate"
+    elif shipped is not None:
+        fallback, how = shipped, "shipped time"
+    else:
+        fallback, how = UNKNOWN_SECONDS, "estimate"
     seconds, source = _with_fallback(m, fallback)
-    return seconds, (source if source != "estimate" or not cost else "ibms info estimate")
+    return seconds, (how if source == "estimate" else source)
 
 
 def _test_time(times, kind, name):
@@ -209,11 +236,14 @@ def _test_time(times, kind, name):
 # ---- the plan: every job with its cost, cores, priority and the jobs it waits for
 
 def plan(jobs, benches, bench_level, sweeps, build, wf, ibms, all_cores, exclusive="first",
-         one_core_benches=None, times=None):
+         one_core_benches=None, times=None, shared_points=None):
     """jobs: ctest_jobs.load_jobs of the level; benches: names; sweeps: name -> sweeps.load.
     Returns an ordered dict: job id -> dict(kind, name, seconds, source, cores, priority, deps).
     Job ids: run/<test>, check/<test>, bench/<name>, verification, sweep/<sweep>/<point>,
-    sweep_collect/<sweep>, results, report."""
+    sweep_collect/<sweep>, results, report. shared_points: (sweep, point) -> the validation run
+    whose output the point reads (sweeps.shared_runs): a check's cost, after that run."""
+    shared_points = shared_points or {}
+    shipped = shipped_seconds()
     one_core = ONE_CORE_BENCHES if one_core_benches is None else one_core_benches
     times = measured(build, wf) if times is None else times
     out = {}
@@ -225,12 +255,12 @@ def plan(jobs, benches, bench_level, sweeps, build, wf, ibms, all_cores, exclusi
         k = key(j["kind"], name)
         if j["kind"] == "run":
             m, how = _test_time(times, "run", name)
-            s, src = run_seconds(j.get("scene"), j.get("sets", []), m, ibms, wf)
+            s, src = run_seconds(j.get("scene"), j.get("sets", []), m, ibms, wf, shipped.get(k))
             add(k, "run", name, s, src + (how if src.startswith("measured") else ""), 1)
     for name, j in jobs.items():
         if j["kind"] == "check":
             m, how = _test_time(times, "check", name)
-            s, src = _with_fallback(m, CHECK_SECONDS)
+            s, src = _with_fallback(m, shipped.get(key("check", name), CHECK_SECONDS))
             add(key("check", name), "check", name, s, src + (how if src.startswith("measured") else ""), 1,
                 ["run/" + r for r in j["requires"]])
     s, src = _with_fallback(times.get("verification"), FALLBACK_SECONDS[("verification", None)]["verification"])
@@ -242,7 +272,12 @@ def plan(jobs, benches, bench_level, sweeps, build, wf, ibms, all_cores, exclusi
     for sname, sw in sweeps.items():
         for p in sw["points"]:
             n = "%s/%s" % (sname, p["id"])
-            s, src = run_seconds(sw.get("scene"), p.get("sets", []), times.get(key("sweep", n)), ibms, wf)
+            shared = shared_points.get((sname, p["id"]))
+            if shared:
+                add(key("sweep", n), "sweep", n, CHECK_SECONDS, "reads run " + shared, 1, ["run/" + shared])
+                continue
+            s, src = run_seconds(sw.get("scene"), p.get("sets", []), times.get(key("sweep", n)), ibms, wf,
+                                 shipped.get(key("sweep", n)))
             add(key("sweep", n), "sweep", n, s, src, 1)
         add("sweep_collect/" + sname, "sweep_collect", sname, 0.0, "negligible", 1,
             ["sweep/%s/%s" % (sname, p["id"]) for p in sw["points"]], prio=0)

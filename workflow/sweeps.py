@@ -136,6 +136,66 @@ def parse_compare(text):
     return found
 
 
+def _assignments(sets):
+    """`key=value` strings as a dict, numbers compared as numbers and strings without their quotes."""
+    out = {}
+    for s in sets:
+        k, _, v = s.partition("=")
+        v = v.strip()
+        try:
+            out[k.strip()] = float(v)
+        except ValueError:
+            out[k.strip()] = v.strip('"').strip("'")
+    return out
+
+
+def shared_runs(sweeps, jobs):
+    """(sweep, point id) -> name of the validation run of the level that is the same run (the same
+    scene and the same --set values, an output file named): the point reads that run's output
+    instead of running it again."""
+    runs = {}
+    for name, j in jobs.items():
+        if j["kind"] == "run" and j.get("scene") and j.get("output"):
+            runs.setdefault(os.path.realpath(j["scene"]), []).append((_assignments(j["sets"]), name))
+    out = {}
+    for sname, sw in sweeps.items():
+        if not sw.get("scene"):
+            continue
+        for p in sw["points"]:
+            wanted = _assignments(p["sets"])
+            for sets, name in runs.get(os.path.realpath(sw["scene"]), []):
+                if sets == wanted:
+                    out[(sname, p["id"])] = name
+                    break
+    return out
+
+
+def _add_metrics(sweep, output, ibms, result):
+    """The sweep's metrics of the run whose output path (without .h5) is `output`, into result."""
+    m = sweep["metrics"]
+    if result["status"] == "pass" and m.get("compare"):
+        files = [f.format(output=output) for f in m.get("files", [])]
+        c = subprocess.run([ibms, "compare", m["compare"]] + files, capture_output=True, text=True)
+        found = parse_compare(c.stdout)
+        cols = m.get("columns")
+        if cols:
+            for col, prefix in cols.items():
+                hits = [v for k, v in found.items() if k.startswith(prefix)]
+                result["metrics"][col] = hits[0] if hits else None
+        else:
+            result["metrics"] = found
+        result["compare_exit_code"] = c.returncode
+
+
+def _write(sweep, point, result, out_json):
+    tmp = out_json + ".tmp"
+    with open(tmp, "w") as f:
+        json.dump(result, f, indent=1)
+    os.replace(tmp, out_json)
+    print("sweep %s %-40s %s %.1f s%s" % (sweep["name"], point["id"], result["status"], result["seconds"] or 0.0,
+                                          " (run %s)" % result["run"] if result.get("run") else ""), flush=True)
+
+
 def run_point(sweep, point, ibms, out_json, threads=1):
     os.makedirs(os.path.dirname(point["output"]), exist_ok=True)
     cmd = [ibms, "run", sweep["scene"], "-o", point["output"] + ".h5", "--quiet"]
@@ -149,24 +209,26 @@ def run_point(sweep, point, ibms, out_json, threads=1):
                   exit_code=p.returncode, seconds=round(seconds, 3),
                   status="pass" if p.returncode in sweep["accept"] else "FAIL",
                   stderr=p.stderr[-2000:], metrics={})
-    m = sweep["metrics"]
-    if result["status"] == "pass" and m.get("compare"):
-        files = [f.format(output=point["output"]) for f in m.get("files", [])]
-        c = subprocess.run([ibms, "compare", m["compare"]] + files, capture_output=True, text=True)
-        found = parse_compare(c.stdout)
-        cols = m.get("columns")
-        if cols:
-            for col, prefix in cols.items():
-                hits = [v for k, v in found.items() if k.startswith(prefix)]
-                result["metrics"][col] = hits[0] if hits else None
-        else:
-            result["metrics"] = found
-        result["compare_exit_code"] = c.returncode
-    tmp = out_json + ".tmp"
-    with open(tmp, "w") as f:
-        json.dump(result, f, indent=1)
-    os.replace(tmp, out_json)
-    print("sweep %s %-40s %s %.1f s" % (sweep["name"], point["id"], result["status"], seconds), flush=True)
+    _add_metrics(sweep, point["output"], ibms, result)
+    _write(sweep, point, result, out_json)
+
+
+def reuse_point(sweep, point, run, run_status, ibms, out_json):
+    """A point that is a validation run (shared_runs): its metrics from that run's output, its
+    seconds and exit code from the run's status file; a run that did not pass gives a point that
+    did not either."""
+    st = {}
+    try:
+        with open(run_status) as f:
+            st = json.load(f)
+    except (OSError, ValueError):
+        pass
+    output = os.path.splitext(run["output"])[0]
+    result = dict(sweep=sweep["name"], point=point["id"], values=point["values"], sets=point["sets"],
+                  exit_code=st.get("exit_code"), seconds=st.get("seconds"), run=run["name"],
+                  status="pass" if st.get("status") == "pass" else "not run", stderr="", metrics={})
+    _add_metrics(sweep, output, ibms, result)
+    _write(sweep, point, result, out_json)
 
 
 def collect(sweep, json_files, out_csv):
@@ -185,6 +247,10 @@ def collect(sweep, json_files, out_csv):
         f.write("# sweep %s: %s\n" % (sweep["name"], sweep["title"]))
         f.write("# scene %s; linked keys: %s\n" % (os.path.relpath(sweep["scene"], os.path.dirname(os.path.dirname(sweep["file"]))),
                                                    "; ".join("%s = %s" % kv for kv in sweep["linked"].items()) or "none"))
+        shared = ["%s (%s)" % (r["point"], r["run"]) for r in rows if r.get("run")]
+        if shared:
+            f.write("# points read from the validation runs of the same scene and values, not run again: %s\n"
+                    % ", ".join(shared))
         if sweep["plot"]:
             f.write("# plot %s\n" % json.dumps(sweep["plot"]))
         w = csv.writer(f)

@@ -98,7 +98,8 @@ def main():
         return {"name": name, "command": command,
                 "properties": [{"name": k, "value": v} for k, v in props.items()]}
     tests = [
-        test("settling_disk_100_run", [ok, "-DSCENE=" + scene, "-DSETS=a=1\\;b=2"], LABELS=["validation"],
+        test("settling_disk_100_run", [ok, "-DSCENE=" + scene, "-DSETS=a=1\\;b=2", "-DOUTPUT=" + os.path.join(build, "sd.h5")],
+             LABELS=["validation"],
              FIXTURES_SETUP=["settling_disk_runs"], WORKING_DIRECTORY=build),
         test("settling_disk_check", [ok, shared], LABELS=["validation"], FIXTURES_REQUIRED=["settling_disk_runs"],
              ENVIRONMENT=["IBMS_VALIDATION_RESULTS=" + shared], WORKING_DIRECTORY=build),
@@ -113,8 +114,10 @@ def main():
     run, chk = jobs["settling_disk_100_run"], jobs["settling_disk_check"]
     check(run["kind"] == "run" and chk["kind"] == "check" and chk["requires"] == ["settling_disk_100_run"],
           "run and check kinds, check requires the fixture's run")
-    check(run["inputs"] == [ok, scene] and run["scene"] == scene and run["sets"] == ["a=1", "b=2"],
-          "run inputs (program, scene) and --set values from -DSETS: %s %s" % (run["inputs"], run["sets"]))
+    check(run["inputs"] == [ok, scene] and run["scene"] == scene and run["sets"] == ["a=1", "b=2"]
+          and run["output"] == os.path.join(build, "sd.h5") and chk["output"] is None,
+          "run inputs (program, scene), --set values from -DSETS, output from -DOUTPUT: %s %s %s"
+          % (run["inputs"], run["sets"], run["output"]))
     check(any("/settling_disk/reference/" in p for p in chk["inputs"]), "check inputs hold the case's references")
     check(chk["command"][1] == chk["results"] and chk["env"]["IBMS_VALIDATION_RESULTS"] == chk["results"],
           "check writes its own results file, not results.csv")
@@ -167,6 +170,11 @@ def main():
                           for a in j["sets"] if a.startswith("domain.cells_x="))
             grid = sorted(sw["grid"]["domain.cells_x"])
             check(case == grid, "%s: grids %s = the case's validation runs %s" % (sweep_file, grid, case))
+            # ... and are those runs: every point reads its validation run instead of running again
+            shared = sweeps.shared_runs({sw["name"]: sw}, real)
+            check(sorted(shared) == sorted((sw["name"], p["id"]) for p in sw["points"])
+                  and all(n.startswith(prefix) for n in shared.values()),
+                  "%s: every point is a validation run: %s" % (sweep_file, shared))
         test_dry_run_rules(os.path.abspath(sys.argv[2]))
     print("%d failure(s)" % len(failures))
     return 1 if failures else 0
@@ -197,10 +205,30 @@ def test_priorities(build, jobs):
           and min(v["priority"] for v in excl) > 2 * max(prios),
           "exclusive jobs longest first, each above any two one-core jobs: %s"
           % [(v["name"], v["seconds"], v["priority"]) for v in excl])
-    check(plan["run/dkt_two_disks_run_160"]["seconds"] == priorities.UNKNOWN_SECONDS
+    shipped = priorities.shipped_seconds()
+    untimed = dict(jobs, dfg_2d2_20_run=dict(jobs["dkt_two_disks_run_160"], name="dfg_2d2_20_run"))
+    up = priorities.plan(untimed, benches, "default", sw, build, wf, None, 2, times=times)
+    check(shipped.get("run/dfg_2d2_20_run", 0) > shipped.get("run/settling_disk_100_run", 1e9)
+          and up["run/dfg_2d2_20_run"]["seconds"] == shipped["run/dfg_2d2_20_run"]
+          and up["run/dfg_2d2_20_run"]["source"] == "shipped time",
+          "a run this build has not timed takes the shipped time: %s" % up.get("run/dfg_2d2_20_run"))
+    check(plan["run/dkt_two_disks_run_160"]["seconds"]
+          == max(3.0, shipped.get("run/dkt_two_disks_run_160", priorities.UNKNOWN_SECONDS))
           and plan["bench/overhead"]["seconds"] == priorities.FALLBACK_SECONDS[("bench", "default")]["overhead"]
           and plan["sweep/s/a"]["seconds"] == 300.0,
           "a failed run's time is a lower bound; a bench not measured takes the table's seconds")
+    # a sweep point that is a validation run of the level reads it: same scene, same values
+    # (numbers compared as numbers), the run's output named; another value runs on its own
+    run = jobs["settling_disk_100_run"]
+    sd = {"sd": {"scene": run["scene"], "points": [{"id": "same", "sets": ["b=2", "a=1.0"]},
+                                                   {"id": "other", "sets": ["a=1", "b=3"]}]}}
+    shared = sweeps.shared_runs(sd, jobs)
+    check(shared == {("sd", "same"): "settling_disk_100_run"},
+          "sweep point = validation run: %s (run sets %s, output %s)" % (shared, run["sets"], run["output"]))
+    sp = priorities.plan(jobs, benches, "default", sd, build, wf, None, 2, times=times, shared_points=shared)
+    check(sp["sweep/sd/same"]["deps"] == ["run/settling_disk_100_run"]
+          and sp["sweep/sd/same"]["seconds"] == priorities.CHECK_SECONDS and not sp["sweep/sd/other"]["deps"],
+          "a shared point costs a check after its run: %s" % sp["sweep/sd/same"])
     last = priorities.plan(jobs, benches, "default", sw, build, wf, None, 2, exclusive="last", times=times)
     check(last["bench/work_precision"]["priority"] == priorities.priority_class(900.0),
           "exclusive=last: no offset (%s)" % last["bench/work_precision"]["priority"])
@@ -262,7 +290,7 @@ def test_dry_run_rules(build):
             jobs.append(cur)
         elif cur is not None and ":" in line:
             k, v = line.strip().split(":", 1)
-            if k in ("output", "wildcards"):
+            if k in ("output", "wildcards", "input"):
                 cur[k] = v.strip()
             elif k in ("priority", "threads"):
                 cur[k] = int(float(v))
@@ -283,7 +311,13 @@ def test_dry_run_rules(build):
           "dry run: rules <kind>_p<priority> with that priority; jobs per kind %s %s" % (kinds, bad))
     threads = {j.get("wildcards", "").replace("bench=", ""): j["threads"] for j in jobs if j["rule"].startswith("bench_")}
     check(threads.get("stability") == 1 and threads.get("fluid_stability") == 1
+          and threads.get("work_precision_bodies") == 1
           and threads.get("work_precision", 1) > 1, "dry run: bench threads %s" % threads)
+    # the sweep points that are validation runs wait for them and run nothing themselves
+    shared_points = [j for j in jobs if j["rule"].startswith("sweep_run")
+                     and "/workflow_state/tests/" in j.get("input", "")]
+    check(len(shared_points) == 6, "dry run: %d sweep points read validation runs (the two convergence "
+          "sweeps' 6)" % len(shared_points))
 
 
 if __name__ == "__main__":
