@@ -3,8 +3,8 @@
 // with n the unit normal from CDS i to its partner j (a wall point for wall contacts); the spring
 // repels and the dashpot resists approach (v_n < 0). Not clipped to stay repulsive: clipping
 // changes the realised restitution (A8 caveat, Schwager & Poeschel 2007).
-// Both the shared sub-step (contact_forces.cpp) and the contacts' inner loop (contact_subcycle.cpp)
-// take their forces and their dashpot sharing from this file.
+// Both the shared sub-step (contact_forces.cpp) and the contacts' inner loop
+// (contact_subcycle_inner_loop.cpp) take their forces and their dashpot sharing from this file.
 #pragma once
 #include <array>
 #include <cmath>

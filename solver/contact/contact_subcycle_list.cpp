@@ -1,0 +1,155 @@
+// The neighbour list of the contacts' inner loop (contact_subcycle.hpp, step 1): the candidate
+// points, copied into contiguous arrays, and the pairs and walls within the skin, each with its
+// law's stiffness and dashpot and the share its dashpot is divided in; back into the bodies when
+// the list is released.
+#include "contact/contact_subcycle.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "solid/spring_dashpot.hpp"
+
+namespace ibms {
+
+void ContactSubcycler::Candidates::clear() {
+  for (std::vector<int>* a : {&body, &point}) a->clear();
+  for (std::vector<double>* a : {&inverse_mass, &x, &y, &u, &v, &force_x, &force_y, &anchor_x, &anchor_y, &slow_x,
+                                 &slow_y, &rate_x, &rate_y})
+    a->clear();
+}
+
+void ContactSubcycler::Candidates::reserve(std::size_t n) {
+  for (std::vector<int>* a : {&body, &point}) a->reserve(n);
+  for (std::vector<double>* a : {&inverse_mass, &x, &y, &u, &v, &force_x, &force_y, &anchor_x, &anchor_y, &slow_x,
+                                 &slow_y, &rate_x, &rate_y})
+    a->reserve(n);
+}
+
+int ContactSubcycler::candidate(int body, int point, const std::vector<MassSpringBody>& bodies) {
+  int& slot = slot_[offset_[body] + point];
+  if (slot >= 0) return slot;
+  slot = points_.size();
+  Candidates& p = points_;
+  const double inverse_mass = 1.0 / bodies[body].mass[point];
+  const Vec& x = bodies[body].position[point];
+  const Vec& u = bodies[body].velocity[point];
+  p.body.push_back(body);
+  p.point.push_back(point);
+  p.inverse_mass.push_back(inverse_mass);
+  p.x.push_back(x[0]);
+  p.y.push_back(x[1]);
+  p.anchor_x.push_back(x[0]);
+  p.anchor_y.push_back(x[1]);
+  p.u.push_back(u[0]);
+  p.v.push_back(u[1]);
+  p.force_x.push_back(0.0);
+  p.force_y.push_back(0.0);
+  p.slow_x.push_back(slow_[body][point][0] * inverse_mass);
+  p.slow_y.push_back(slow_[body][point][1] * inverse_mass);
+  p.rate_x.push_back(rate_[body][point][0] * inverse_mass);
+  p.rate_y.push_back(rate_[body][point][1] * inverse_mass);
+  return slot;
+}
+
+int ContactSubcycler::share_of(int body_a, int partner) {
+  for (std::size_t s = 0; s < shares_.size(); ++s)
+    if (shares_[s].body_a == body_a && shares_[s].partner == partner) return static_cast<int>(s);
+  Share share;
+  share.body_a = body_a;
+  share.partner = partner;
+  shares_.push_back(share);
+  return static_cast<int>(shares_.size()) - 1;
+}
+
+void ContactSubcycler::release_list(std::vector<MassSpringBody>& bodies) {
+  for (int i = 0; i < points_.size(); ++i) {
+    const int body = points_.body[i], point = points_.point[i];
+    bodies[body].position[point] = {points_.x[i], points_.y[i]};
+    bodies[body].velocity[point] = {points_.u[i], points_.v[i]};
+    slot_[offset_[body] + point] = -1;
+  }
+  points_.clear();
+  pairs_.clear();
+  gap_.clear();
+  near_.clear();
+  walls_.clear();
+  shares_.clear();
+  forced_.clear();
+  touched_.clear();
+}
+
+void ContactSubcycler::build_list(const ContactModel& model, const WallBox& box, double skin,
+                                  const BodySet& members, const std::vector<MassSpringBody>& bodies, double time) {
+  time_built_ = time;
+  gap_.clear();
+  near_.clear();
+  near_reach_ = -1.0;  // the pairs near contact are picked at the first inner step
+  near_reach_floor_ = skin / 16.0;
+  radius_rate_max_ = 0.0;
+  const double half_skin = 0.5 * skin;
+  const double zeta_factor = 2.0 * damping_ratio_from_restitution(model.restitution_coefficient);
+  // Pairs of different bodies closer than the skin: the pair search on CDS grown by s / 2.
+  gather_contact_spheres(model, bodies, spheres_, members);
+  for (int s = 0; s < spheres_.n_spheres(); ++s) spheres_.radius[s] += time * radius_rate_[spheres_.body[s]];
+  const bool several_bodies = std::any_of(spheres_.body.begin(), spheres_.body.end(),
+                                          [&](int b) { return b != spheres_.body.front(); });
+  if (several_bodies) {
+    for (double& r : spheres_.radius) r += half_skin;
+    find_touching_pairs_body_bounds(spheres_, box, search_);
+    pair_checks_ += search_.n_pair_checks;
+    for (const SpherePair& found : search_.pairs) {
+      const int s = found.first, t = found.second;
+      const int body_s = spheres_.body[s], body_t = spheres_.body[t];
+      Pair pair;
+      pair.a = candidate(body_s, spheres_.point[s], bodies);
+      pair.b = candidate(body_t, spheres_.point[t], bodies);
+      const Vec xa{points_.x[pair.a], points_.y[pair.a]};
+      const Vec xb{points_.x[pair.b], points_.y[pair.b]};
+      const Vec d = separation(xa, xb, box);
+      pair.shift = {d[0] - (xb[0] - xa[0]), d[1] - (xb[1] - xa[1])};
+      pair.radius_sum = spheres_.radius[s] + spheres_.radius[t] - skin;
+      pair.radius_rate = radius_rate_[body_s] + radius_rate_[body_t];
+      const double m_eff = contact_effective_mass(model, bodies, body_s, spheres_.point[s], body_t, spheres_.point[t]);
+      pair.stiffness = model.pair_stiffness(m_eff);
+      pair.damping = zeta_factor * std::sqrt(m_eff * pair.stiffness);
+      pair.share = share_of(std::min(body_s, body_t), std::max(body_s, body_t));
+      pairs_.push_back(pair);
+      gap_.push_back(std::sqrt(d[0]*d[0] + d[1]*d[1]) - pair.radius_sum);
+      radius_rate_max_ = std::max(radius_rate_max_, std::abs(pair.radius_rate));
+    }
+  }
+  // Walls: CDS closer to a wall than s / 2.
+  if (model.walls) {
+    for (std::size_t i = 0; i < members.count(bodies.size()); ++i) {
+      const int b = static_cast<int>(members.at(i));
+      const double radius = model.cds_radius_of(bodies[b]) + time * radius_rate_[b];
+      for (int k = 0; k < bodies[b].n_surface; ++k) {
+        for (int c = 0; c < 2; ++c) {
+          if (box.periodic[c]) continue;
+          const double x = bodies[b].position[k][c];
+          const double wall_coordinate[2] = {box.origin[c], box.origin[c] + box.length[c]};
+          for (int side = 0; side < 2; ++side) {
+            if (!box.is_wall(c, side)) continue;
+            const double distance = side == 0 ? x - wall_coordinate[0] : wall_coordinate[1] - x;
+            if (!(distance - radius < half_skin)) continue;
+            Wall wall;
+            wall.a = candidate(b, k, bodies);
+            wall.axis = c;
+            wall.side = side;
+            wall.radius = radius;
+            wall.radius_rate = radius_rate_[b];
+            wall.coordinate = wall_coordinate[side];
+            const double m_eff = contact_effective_mass(model, bodies, b, k, -1, 0);
+            wall.stiffness = model.pair_stiffness(m_eff);
+            wall.damping = zeta_factor * std::sqrt(m_eff * wall.stiffness);
+            wall.share = share_of(b, -1 - (2*c + side));
+            walls_.push_back(wall);
+          }
+        }
+      }
+    }
+  }
+}
+
+
+}  // namespace ibms
