@@ -34,6 +34,11 @@ GridConvergence grid_convergence(double h_fine, double h_medium, double h_coarse
   const double e21 = f_medium - f_fine, e32 = f_coarse - f_medium;
   g.monotone = e21 != 0.0 && e32 / e21 > 0.0;
   if (!g.monotone) return g;  // oscillatory or converged to round-off: no order
+  // f = f* + C h^p gives e32 / e21 = r21^p (r32^p - 1) / (r21^p - 1), which grows with p from
+  // ln r32 / ln r21 at p -> 0: a smaller ratio (the differences not shrinking enough, or growing)
+  // fits no positive order.
+  g.converging = e32 / e21 > std::log(r32) / std::log(r21);
+  if (!g.converging) return g;
   double p = std::log(e32 / e21) / std::log(r21);
   for (int iteration = 0; iteration < 200; ++iteration) {  // eq. 3 with s = 1
     const double q = std::log((std::pow(r21, p) - 1.0) / (std::pow(r32, p) - 1.0));

@@ -4,7 +4,8 @@
 //    (GSL gsl_fit_linear), over the finest `levels` points;
 //  - grid_convergence: observed order, Richardson-extrapolated value and fine-grid GCI of a scalar
 //    on three grids with any refinement ratios (Celik et al. 2008, J. Fluids Eng. 130, 078001,
-//    eqs. 3a-c by fixed-point iteration, safety factor 1.25).
+//    eqs. 3a-c by fixed-point iteration, safety factor 1.25), none for a triple whose differences
+//    change sign or do not shrink as a positive order requires.
 #pragma once
 #include <cmath>
 #include <vector>
@@ -26,6 +27,10 @@ struct GridConvergence {
   double extrapolated = NAN;  // (r21^p f_fine - f_medium) / (r21^p - 1)
   double gci_fine = NAN;      // 1.25 |(f_fine - f_medium) / f_fine| / (r21^p - 1), a fraction
   bool monotone = false;      // the two differences have one sign (otherwise order etc. are NaN)
+  bool converging = false;    // monotone and some order p > 0 fits: the fine difference is smaller than
+                              // the coarse one by more than p -> 0 would give (e32 / e21 > ln r32 /
+                              // ln r21; 1 for equal ratios). Otherwise order etc. are NaN: Celik's
+                              // iteration takes |...| and returns a large order for a diverging triple.
 };
 // f_fine on the grid of spacing h_fine, ..., f_coarse on the coarsest (h_fine < h_medium < h_coarse).
 GridConvergence grid_convergence(double h_fine, double h_medium, double h_coarse, double f_fine, double f_medium,

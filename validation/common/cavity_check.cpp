@@ -72,7 +72,8 @@ void report_gci(const std::vector<Profiles>& grids, const std::string& results, 
     const GridConvergence g = grid_convergence(1.0, 2.0, 4.0, phi[2], phi[1], phi[0]);
     std::printf("  %-18s coarse %.6f  medium %.6f  fine %.6f  observed order %.2f  extrapolated %.6f  GCI_fine %.3f %%%s\n",
                 q.label, phi[0], phi[1], phi[2], g.order, g.extrapolated, 100 * g.gci_fine,
-                g.monotone ? "" : "  (non-monotone convergence: no order, no GCI)");
+                g.converging ? "" : g.monotone ? "  (the differences do not shrink: no order, no GCI)"
+                                               : "  (non-monotone convergence: no order, no GCI)");
     // Reported, not gated: the GCI estimates our own discretisation error (docs/design.md §6).
     char metric[160];
     std::snprintf(metric, sizeof metric, "GCI_fine of %s (observed order %.6g)", q.label, g.order);

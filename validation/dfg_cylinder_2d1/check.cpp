@@ -214,7 +214,7 @@ int main(int argc, char** argv) {
         record_info(name, keys[q] + ": GCI of the finest grid", r.gci_fine);
         const bool check = mode == "steady" && keys[q] == "drag_coefficient" && gated("drag_richardson");
         if (std::isnan(r.extrapolated)) {
-          std::printf("  %s: no Richardson value (the differences change sign)\n", keys[q].c_str());
+          std::printf("  %s: no Richardson value (the differences change sign or do not shrink)\n", keys[q].c_str());
           if (check) { record(name, keys[q] + " Richardson value relative to the reference", criteria::dfg_richardson_drag_tolerance, NAN, false); ok = false; }
           continue;
         }

@@ -8,46 +8,136 @@
 // symbols are ~0.3 s apart there), the leading disk's max speed, the time of minimum distance and the
 // time the pair is horizontal, which are set by when the pair tumbles and so by the
 // symmetry-breaking perturbation (README.md).
+//
+// Grid study (`--grid-study`, label slow): the drafting figures of three runs (coarse to fine,
+// N cells across the 2 cm width), with the observed order, Richardson value and GCI of the finest
+// grid (Celik et al. 2008; Roache's GCI, safety factor 1.25) of each, as information: the
+// numerical uncertainty of the finest run's figures. The contact parameters scale with h (CDS
+// radius h / 2), so the three runs differ in contact model as in grid.
 // usage: dkt_check <reference.csv> <base>
+//        dkt_check <reference.csv> --grid-study N:<base> N:<base> N:<base>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "metrics/body_series.hpp"
 #include "metrics/case_criteria.hpp"
 #include "metrics/csv_reader.hpp"
+#include "metrics/grid_convergence.hpp"
 #include "verification/common/results_csv.hpp"
 
 using namespace ibms;
 using namespace ibms::validation;
 
+namespace {
+
+constexpr double diameter = 0.2;  // cm
+constexpr double width = 2.0;     // cm
+
+struct Figures {
+  double speed0 = 0, speed1 = 0, t_speed0 = 0, t_speed1 = 0, min_distance = HUGE_VAL, t_kiss = NAN, t_level = NAN;
+  double t_kiss_start = NAN, drafting0 = 0, t_drafting0 = 0;
+  bool overtook = false;
+};
+
+// The figures of one run (<base>_bodies.csv); drafting ends at end_of_drafting [s].
+Figures figures_of(const std::string& base, double end_of_drafting) {
+  const SeriesTable s = read_series_csv(base + "_bodies.csv");
+  const std::vector<double>& t = s.at("time");
+  const std::vector<double>&x0 = s.at("body_000/centroid_x"), &y0 = s.at("body_000/centroid_y");
+  const std::vector<double>&x1 = s.at("body_001/centroid_x"), &y1 = s.at("body_001/centroid_y");
+  const std::vector<double>&v0 = s.at("body_000/velocity_y"), &v1 = s.at("body_001/velocity_y");
+  Figures f;
+  for (std::size_t k = 0; k < t.size(); ++k) {
+    if (-v0[k] > f.speed0) { f.speed0 = -v0[k]; f.t_speed0 = t[k]; }
+    if (t[k] <= end_of_drafting && -v0[k] > f.drafting0) { f.drafting0 = -v0[k]; f.t_drafting0 = t[k]; }
+    if (-v1[k] > f.speed1) { f.speed1 = -v1[k]; f.t_speed1 = t[k]; }
+    const double distance = std::hypot(x0[k] - x1[k], y0[k] - y1[k]);
+    if (distance < f.min_distance) { f.min_distance = distance; f.t_kiss = t[k]; }
+    if (std::isnan(f.t_level) && y0[k] <= y1[k]) f.t_level = t[k];
+    if (std::isnan(f.t_kiss_start) && distance < 1.25 * diameter) f.t_kiss_start = t[k];
+  }
+  f.overtook = y0.back() < y1.back();
+  return f;
+}
+
+int grid_study(const std::string& ref, int argc, char** argv) {
+  if (argc != 6) {
+    std::fprintf(stderr, "usage: dkt_check <reference.csv> --grid-study N:<base> N:<base> N:<base>\n");
+    return 2;
+  }
+  const double end_of_drafting = reference_value(ref, "time_of_kissing");
+  std::vector<double> h;
+  std::vector<Figures> f;
+  for (int a = 3; a < 6; ++a) {
+    const std::string arg = argv[a];
+    const std::size_t colon = arg.find(':');
+    if (colon == std::string::npos) throw std::invalid_argument("grid study: expected N:<base>, got " + arg);
+    h.push_back(width / std::atof(arg.substr(0, colon).c_str()));
+    f.push_back(figures_of(arg.substr(colon + 1), end_of_drafting));
+  }
+  if (!(h[0] > h[1] && h[1] > h[2])) throw std::invalid_argument("grid study: give the grids coarse to fine");
+  struct Quantity {
+    const char* name;
+    double Figures::*member;
+    const char* reference_key;  // "" : none
+  };
+  const Quantity quantities[] = {
+      {"trailing max speed while drafting [cm/s]", &Figures::drafting0, "max_settling_speed_trailing"},
+      {"time of trailing max speed while drafting [s]", &Figures::t_drafting0, "time_of_max_speed_trailing"},
+      {"time the pair is horizontal [s]", &Figures::t_level, ""}};
+  bool pass = true;
+  std::printf("DKT grid study, D/h = %g, %g, %g: value per grid, observed order, Richardson value, GCI of the finest\n",
+              diameter / h[0], diameter / h[1], diameter / h[2]);
+  for (const Quantity& q : quantities) {
+    const double coarse = f[0].*q.member, medium = f[1].*q.member, fine = f[2].*q.member;
+    const GridConvergence g = grid_convergence(h[2], h[1], h[0], fine, medium, coarse);
+    std::printf("  %-48s %.5g  %.5g  %.5g  order %.3g  Richardson %.6g  GCI %.3g %%\n", q.name, coarse, medium, fine,
+                g.order, g.extrapolated, 100 * g.gci_fine);
+    char grids[64];
+    std::snprintf(grids, sizeof grids, ", D/h = %g, %g, %g", diameter / h[0], diameter / h[1], diameter / h[2]);
+    const std::string what = std::string(q.name) + grids;
+    record_info("dkt_two_disks", "observed order of the " + what, g.order);
+    record_info("dkt_two_disks", "GCI of the finest grid, " + what, g.gci_fine);
+    pass = pass && std::isfinite(fine);
+    if (*q.reference_key == '\0') continue;
+    // The comparison error E = S - D of the finest run against the numerical uncertainty of that run
+    // (the validation uncertainty without the digitised curve's own, which Wan & Turek do not state).
+    const double reference = reference_value(ref, q.reference_key);
+    record_info("dkt_two_disks", "comparison error E = finest - Wan & Turek, " + what, fine - reference);
+    record_info("dkt_two_disks", "numerical uncertainty GCI x value of the finest, " + what,
+                std::isfinite(g.gci_fine) ? g.gci_fine * std::abs(fine) : NAN);
+  }
+  std::printf("%s\n", pass ? "PASS" : "FAIL");
+  return pass ? 0 : 1;
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
+  if (argc >= 3 && std::string(argv[2]) == "--grid-study") {
+    try {
+      return grid_study(argv[1], argc, argv);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "dkt_check: %s\n", e.what());
+      return 2;
+    }
+  }
   if (argc != 3) {
-    std::fprintf(stderr, "usage: %s <reference.csv> <base>\n", argv[0]);
+    std::fprintf(stderr, "usage: %s <reference.csv> <base>\n       %s <reference.csv> --grid-study N:<base> N:<base> N:<base>\n",
+                 argv[0], argv[0]);
     return 2;
   }
   try {
     const std::string ref = argv[1];
-    const SeriesTable s = read_series_csv(std::string(argv[2]) + "_bodies.csv");
-    const std::vector<double>& t = s.at("time");
-    const std::vector<double>&x0 = s.at("body_000/centroid_x"), &y0 = s.at("body_000/centroid_y");
-    const std::vector<double>&x1 = s.at("body_001/centroid_x"), &y1 = s.at("body_001/centroid_y");
-    const std::vector<double>&v0 = s.at("body_000/velocity_y"), &v1 = s.at("body_001/velocity_y");
-    double speed0 = 0, speed1 = 0, t_speed0 = 0, t_speed1 = 0, min_distance = HUGE_VAL, t_kiss = NAN, t_level = NAN;
-    double t_kiss_start = NAN, drafting0 = 0, t_drafting0 = 0;
-    constexpr double diameter = 0.2;  // cm
-    const double end_of_drafting = reference_value(ref, "time_of_kissing");
-    for (std::size_t k = 0; k < t.size(); ++k) {
-      if (-v0[k] > speed0) { speed0 = -v0[k]; t_speed0 = t[k]; }
-      if (t[k] <= end_of_drafting && -v0[k] > drafting0) { drafting0 = -v0[k]; t_drafting0 = t[k]; }
-      if (-v1[k] > speed1) { speed1 = -v1[k]; t_speed1 = t[k]; }
-      const double distance = std::hypot(x0[k] - x1[k], y0[k] - y1[k]);
-      if (distance < min_distance) { min_distance = distance; t_kiss = t[k]; }
-      if (std::isnan(t_level) && y0[k] <= y1[k]) t_level = t[k];
-      if (std::isnan(t_kiss_start) && distance < 1.25 * diameter) t_kiss_start = t[k];
-    }
-    const bool overtook = y0.back() < y1.back();
+    const Figures f = figures_of(argv[2], reference_value(ref, "time_of_kissing"));
+    const double speed0 = f.speed0, speed1 = f.speed1, t_speed0 = f.t_speed0, t_speed1 = f.t_speed1;
+    const double min_distance = f.min_distance, t_kiss = f.t_kiss, t_level = f.t_level, t_kiss_start = f.t_kiss_start;
+    const double drafting0 = f.drafting0, t_drafting0 = f.t_drafting0;
+    const bool overtook = f.overtook;
     std::printf("DKT: trailing max speed while drafting %.4f cm/s at t = %.3f s (over the run %.4f at %.3f s), "
                 "leading %.4f cm/s at t = %.3f s\n", drafting0, t_drafting0, speed0, t_speed0, speed1, t_speed1);
     std::printf("     kissing from t = %.3f s (distance < 1.25 d), min centre distance %.4f cm at t = %.3f s;"

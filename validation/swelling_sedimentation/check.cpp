@@ -10,12 +10,19 @@
 //      over the whole window the largest difference is 3.1 % at n_x = 100, right after swelling
 //      ends, before the disk has adjusted to its new size; it is recorded as information.)
 //   3. bottom arrival (gap centre_y - D/2 <= 0.015 cm): t_030 < t_sw < t_025.
+// Grid study (`--grid-study`, label slow): the bottom arrival times and the largest settling speeds
+// of the three runs on three grids (coarse to fine; <dir>/{swelling,d025,d030}_<N>), each with its
+// observed order, Richardson value and the GCI of the finest grid (Celik et al. 2008; Roache's GCI,
+// safety factor 1.25), as information: the numerical uncertainty of the finest runs' figures.
 // usage: swelling_sedimentation_check <onset> <swelling_end> <base_swelling> <base_d025> <base_d030> <out.csv>
+//        swelling_sedimentation_check --grid-study <dir> N N N
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <iterator>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -23,6 +30,7 @@
 #include "metrics/body_series.hpp"
 #include "metrics/case_criteria.hpp"
 #include "metrics/csv_reader.hpp"
+#include "metrics/grid_convergence.hpp"
 
 using namespace ibms;
 using namespace ibms::validation;
@@ -46,9 +54,64 @@ double arrival_time(const SeriesTable& s, double gap) {
   return first_crossing_below(s.at("time"), g, gap);
 }
 
+constexpr double arrival_gap = 0.015;  // cm, as in the settling-disk touchdown (centre at y = R + 0.015)
+constexpr double width = 2.0;          // cm: the box of the scene, h = width / N
+
+double largest_settling_speed(const SeriesTable& s) {
+  double largest = 0.0;
+  for (const double v : s.at("body_000/velocity_y")) largest = std::max(largest, -v);
+  return largest;
+}
+
+int grid_study(int argc, char** argv) {
+  if (argc != 6) {
+    std::fprintf(stderr, "usage: swelling_sedimentation_check --grid-study <dir> N N N\n");
+    return 2;
+  }
+  const std::string dir = argv[2];
+  std::vector<double> h;
+  std::vector<std::vector<double>> values;  // per grid: the quantities below
+  const char* names[] = {"bottom arrival of the swelling disk [s]", "bottom arrival, D = 0.25 [s]",
+                         "bottom arrival, D = 0.30 [s]", "largest settling speed, swelling disk [cm/s]",
+                         "largest settling speed, D = 0.30 [cm/s]"};
+  for (int a = 3; a < 6; ++a) {
+    const std::string n = argv[a];
+    h.push_back(width / std::atof(n.c_str()));
+    const SeriesTable sw = read_series_csv(dir + "/swelling_" + n + "_bodies.csv");
+    const SeriesTable d25 = read_series_csv(dir + "/d025_" + n + "_bodies.csv");
+    const SeriesTable d30 = read_series_csv(dir + "/d030_" + n + "_bodies.csv");
+    values.push_back({arrival_time(sw, arrival_gap), arrival_time(d25, arrival_gap), arrival_time(d30, arrival_gap),
+                      largest_settling_speed(sw), largest_settling_speed(d30)});
+  }
+  if (!(h[0] > h[1] && h[1] > h[2])) throw std::invalid_argument("grid study: give the grids coarse to fine");
+  char grids[64];
+  std::snprintf(grids, sizeof grids, ", n_x = %s, %s, %s", argv[3], argv[4], argv[5]);
+  std::printf("swelling sedimentation grid study%s: value per grid, observed order, Richardson value, GCI of the finest\n",
+              grids);
+  bool pass = true;
+  for (std::size_t q = 0; q < std::size(names); ++q) {
+    const GridConvergence g = grid_convergence(h[2], h[1], h[0], values[2][q], values[1][q], values[0][q]);
+    std::printf("  %-46s %.5g  %.5g  %.5g  order %.3g  Richardson %.6g  GCI %.3g %%\n", names[q], values[0][q],
+                values[1][q], values[2][q], g.order, g.extrapolated, 100 * g.gci_fine);
+    record_info("swelling_sedimentation", std::string("observed order of the ") + names[q] + grids, g.order);
+    record_info("swelling_sedimentation", std::string("GCI of the finest grid, ") + names[q] + grids, g.gci_fine);
+    pass = pass && values[2][q] > 0;
+  }
+  std::printf("%s\n", pass ? "PASS" : "FAIL");
+  return pass ? 0 : 1;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  if (argc >= 2 && std::string(argv[1]) == "--grid-study") {
+    try {
+      return grid_study(argc, argv);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "swelling_sedimentation_check: %s\n", e.what());
+      return 2;
+    }
+  }
   if (argc != 7) {
     std::fprintf(stderr, "usage: %s <onset> <swelling_end> <base_swelling> <base_d025> <base_d030> <out.csv>\n", argv[0]);
     return 2;
@@ -91,7 +154,7 @@ int main(int argc, char** argv) {
                                    100 * (v[k] - v30[k]) / std::abs(v30[k]));
     }
     // 3. Arrival order.
-    const double gap = 0.015;  // cm, as in the settling-disk touchdown (centre at y = R + 0.015)
+    const double gap = arrival_gap;
     const double t_sw = arrival_time(sw, gap), t_25 = arrival_time(d25, gap), t_30 = arrival_time(d30, gap);
     // Histories on the swelling run's times.
     std::ofstream out(argv[6]);
