@@ -22,7 +22,7 @@
 // writing); the CPU time of the process during the run is printed beside it. Writes
 // <out>/work_precision_<case>.csv (N,h,steps,wall_seconds,error; N is D/h for the cylinders) after
 // every resolution, with the least-squares slope of log(error) against log(wall time) in a comment
-// line, and work_precision_slopes.csv (the rows of cases not run now kept); then, when a dfg_2d2 case
+// line, and work_precision_slopes.csv (with a selection: work_precision_<selection>_slopes.csv); then, when a dfg_2d2 case
 // ran, from the two dfg_2d2 files in <out>, the wall time at which each coupling reaches 3 % on max
 // c_D and their ratio (also in time_to_target_dfg_2d2.csv).
 // usage: bench_work_precision [quick|default|full] [out_dir] [case[:N,N...]...] [--set key=value]...
@@ -470,16 +470,13 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "unknown case '%s'\n", sel.name.c_str());
       return 2;
     }
-  // The slopes file keeps the rows of the cases not run in this invocation (the workflow runs the
-  // cylinders and the others as two jobs into one folder).
-  const std::string slopes_path = out_dir + "/work_precision_slopes.csv";
-  std::vector<std::pair<std::string, std::string>> slope_rows;  // case, whole line
-  {
-    std::ifstream old(slopes_path);
-    std::string line;
-    for (bool header = true; std::getline(old, line); header = false)
-      if (!header && !line.empty()) slope_rows.emplace_back(line.substr(0, line.find(',')), line);
-  }
+  // One slopes file per selection (the workflow runs the cylinders and the other cases as two jobs
+  // into one folder, possibly at once): work_precision_slopes.csv for all cases, else
+  // work_precision_<selection>_slopes.csv.
+  std::string selection_tag;
+  for (const Selection& sel : only) selection_tag += sel.name + "_";
+  std::ofstream slopes(out_dir + "/work_precision_" + selection_tag + "slopes.csv");
+  slopes << "case,slope,n_points,error\n";
   bool ran_dfg_2d2 = false;
   for (const Case& c : cases) {
     const auto sel = std::find_if(only.begin(), only.end(),
@@ -522,17 +519,9 @@ int main(int argc, char** argv) {
     for (double target : marks)
       std::printf("  time to error %.0e: %s\n", target, time_to_reach(points, target).c_str());
     if (!marks.empty()) print_basilisk_ratios(c.name == "cavity_re1000" ? 1000 : 100, points);
-    std::ostringstream row;
-    row << c.name << "," << slope << "," << points.size() << ",\"" << c.error_definition << "\"";
-    slope_rows.erase(std::remove_if(slope_rows.begin(), slope_rows.end(),
-                                    [&](const auto& r) { return r.first == c.name; }),
-                     slope_rows.end());
-    slope_rows.emplace_back(c.name, row.str());
+    slopes << c.name << "," << slope << "," << points.size() << ",\"" << c.error_definition << "\"\n";
     ran_dfg_2d2 = ran_dfg_2d2 || c.family == "dfg_2d2";
   }
-  std::ofstream slopes(slopes_path);
-  slopes << "case,slope,n_points,error\n";
-  for (const auto& r : slope_rows) slopes << r.second << "\n";
   if (ran_dfg_2d2) compare_dfg_2d2_couplings(out_dir);
   return 0;
 }

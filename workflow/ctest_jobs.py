@@ -161,7 +161,8 @@ def load_jobs(build, source, labels, exclude_cases=(), tests=None):
                    skip_code=props.get("SKIP_RETURN_CODE"), will_fail=bool(props.get("WILL_FAIL", False)),
                    status=os.path.join(wf, "tests", name + ".status"))
         job["scene"], job["sets"] = scene_and_sets(command)
-        job["output"] = output_of(command) if kind == "run" else None
+        output = output_of(command) if kind == "run" else None
+        job["output"] = os.path.join(job["cwd"], output) if output else None
         job["definition"] = hashlib.sha256(json.dumps(
             [job["command"], job["env"], job["cwd"], job["pass_regex"], job["fail_regex"],
              job["skip_code"], job["will_fail"]]).encode()).hexdigest()[:16]

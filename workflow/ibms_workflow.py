@@ -60,7 +60,7 @@ def schedule(build, level="default", cores=2, list_jobs=False):
     for title, extra, exclusive in cases:
         plan = priorities.plan(jobs, benches, bench_level, sweeps, build, wf, ibms, cores,
                                exclusive if exclusive != "none" else "first", times=times,
-                               shared_points=shared, **extra)
+                               shared_points=shared if exclusive != "none" else None, **extra)
         order = {j: 0 for j in plan} if exclusive == "none" else None  # ties: the plan's order
         makespan, _ = priorities.simulate(plan, cores, order)
         excl = sum(v["seconds"] for v in plan.values() if v["cores"] > 1)

@@ -69,17 +69,16 @@ ONE_CORE_BENCHES = {
 }
 
 # Seconds of the benches and of the ctest verification on the shared 2-core machine, used until
-# the workflow has measured them in this build. Default level: bench_work_precision 14.5 min in a
-# default-level run of the workflow less the 546 s of its DFG 2D-2 runs at D/h = 30, which moved to
-# its full level (an estimate: its 2D-1 runs at D/h = 30 moved too), bench_fluid_stability 201 s and bench_forcing_passes 174 s in
-# a paper-level run (docs/workflow.md), bench_stability 40 s and bench_overhead 5 s
-# (bench/README.md); the verification `ctest -j 2 -L "unit|convergence"`: 254 s of test time in
-# CTestCostData.txt. Quick: bench_work_precision 1 + 7 min (bench/README.md), bench_forcing_passes
-# a guess (a third of its grids); full: bench/README.md's "adds 39 min", forcing passes a guess.
+# the workflow has measured them in this build. Default level: the clean-clone run of f07dec1
+# (docs/workflow.md), bench_work_precision's 273 s split between its fluid cases (100 s) and its
+# cylinders (173 s); the verification `ctest -j 2 -L "unit|convergence"` 150 s. Quick: the same
+# cylinder grids as default, the fluid cases 1 min (bench/README.md), bench_forcing_passes a guess
+# (a third of its grids); full: bench/README.md's "adds 39 min" for the cylinders, forcing passes a
+# guess.
 FALLBACK_SECONDS = {
     ("bench", "default"): {"work_precision": 100, "work_precision_bodies": 173, "fluid_stability": 202,
                            "forcing_passes": 175, "stability": 8, "overhead": 2},
-    ("bench", "quick"): {"work_precision": 60, "work_precision_bodies": 420, "fluid_stability": 201,
+    ("bench", "quick"): {"work_precision": 60, "work_precision_bodies": 173, "fluid_stability": 201,
                          "forcing_passes": 30, "stability": 40, "overhead": 5},
     ("bench", "full"): {"work_precision": 600, "work_precision_bodies": 2600, "fluid_stability": 201,
                         "forcing_passes": 900, "stability": 40, "overhead": 5},

@@ -149,13 +149,22 @@ def _assignments(sets):
     return out
 
 
+_PLAIN_OPTIONS = {"--set", "-o", "--quiet", "-P"}  # and -D... of run_to_wall.cmake
+
+
+def _plain_run(command):
+    """A run of a scene with --set values and an output only (no restart or other option that
+    would make it another run than the sweep point's)."""
+    return all(not a.startswith("-") or a in _PLAIN_OPTIONS or a.startswith("-D") for a in command)
+
+
 def shared_runs(sweeps, jobs):
     """(sweep, point id) -> name of the validation run of the level that is the same run (the same
-    scene and the same --set values, an output file named): the point reads that run's output
-    instead of running it again."""
+    scene and the same --set values, an output file named, no other option): the point reads that
+    run's output instead of running it again."""
     runs = {}
     for name, j in jobs.items():
-        if j["kind"] == "run" and j.get("scene") and j.get("output"):
+        if j["kind"] == "run" and j.get("scene") and j.get("output") and _plain_run(j["command"]):
             runs.setdefault(os.path.realpath(j["scene"]), []).append((_assignments(j["sets"]), name))
     out = {}
     for sname, sw in sweeps.items():

@@ -225,6 +225,8 @@ def test_priorities(build, jobs):
     shared = sweeps.shared_runs(sd, jobs)
     check(shared == {("sd", "same"): "settling_disk_100_run"},
           "sweep point = validation run: %s (run sets %s, output %s)" % (shared, run["sets"], run["output"]))
+    restarted = dict(jobs, settling_disk_100_run=dict(run, command=run["command"] + ["--restart", "x.h5"]))
+    check(sweeps.shared_runs(sd, restarted) == {}, "a run with another option (--restart) is not the point's run")
     sp = priorities.plan(jobs, benches, "default", sd, build, wf, None, 2, times=times, shared_points=shared)
     check(sp["sweep/sd/same"]["deps"] == ["run/settling_disk_100_run"]
           and sp["sweep/sd/same"]["seconds"] == priorities.CHECK_SECONDS and not sp["sweep/sd/other"]["deps"],

@@ -1,11 +1,12 @@
 // Collatz-Wielandt upper bound of the spectral radius (Perron root) of a non-negative square matrix
 // B, the bound behind the springs' sub-step (solid/stable_substep.cpp) and the contacts' inner step
-// (contact/contact_subcycle.cpp): rho(B) <= max_i (B x)_i / x_i for every x > 0, B reducible or
-// not. Taken at x = 1 (iteration 0: Gershgorin's row sums) and at `iterations` power iterates,
-// each divided by its largest entry, plus `floor` (which keeps x > 0 where B x has zero entries);
-// the smallest of these bounds. 0 when B x vanishes. With min_improvement > 0 the iteration stops
-// once an iterate lowers the bound by less than that fraction of it (the bounds of power iterates
-// fall towards the Perron root; a bound stopped early is as rigorous, only less tight).
+// (contact/contact_subcycle_step_bound.cpp): rho(B) <= max_i (B x)_i / x_i for every x > 0, B
+// reducible or not. Taken at x = 1 (iteration 0: Gershgorin's row sums) and at `iterations` power
+// iterates, each divided by its largest entry, plus `floor` (which keeps x > 0 where B x has zero
+// entries); the smallest of these bounds. 0 when B x vanishes. With min_improvement > 0 the
+// iteration stops once an iterate lowers the bound by less than that fraction of it (the bounds of
+// power iterates fall towards the Perron root; a bound stopped early is as rigorous, only less
+// tight).
 #pragma once
 #include <algorithm>
 #include <cstddef>

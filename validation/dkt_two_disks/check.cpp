@@ -37,6 +37,16 @@ namespace {
 constexpr double diameter = 0.2;  // cm
 constexpr double width = 2.0;     // cm
 
+// N of an "N:<base>" argument: a whole positive number of cells, else a clear error.
+int cells_of(const std::string& arg, std::size_t colon) {
+  const std::string text = arg.substr(0, colon);
+  char* end = nullptr;
+  const long n = std::strtol(text.c_str(), &end, 10);
+  if (text.empty() || *end != '\0' || n <= 0 || n > 100000)
+    throw std::invalid_argument("grid study: '" + arg + "': N must be a positive whole number of cells across the box");
+  return static_cast<int>(n);
+}
+
 struct Figures {
   double speed0 = 0, speed1 = 0, t_speed0 = 0, t_speed1 = 0, min_distance = HUGE_VAL, t_kiss = NAN, t_level = NAN;
   double t_kiss_start = NAN, drafting0 = 0, t_drafting0 = 0;
@@ -76,7 +86,7 @@ int grid_study(const std::string& ref, int argc, char** argv) {
     const std::string arg = argv[a];
     const std::size_t colon = arg.find(':');
     if (colon == std::string::npos) throw std::invalid_argument("grid study: expected N:<base>, got " + arg);
-    h.push_back(width / std::atof(arg.substr(0, colon).c_str()));
+    h.push_back(width / cells_of(arg, colon));
     f.push_back(figures_of(arg.substr(colon + 1), end_of_drafting));
   }
   if (!(h[0] > h[1] && h[1] > h[2])) throw std::invalid_argument("grid study: give the grids coarse to fine");
@@ -102,7 +112,8 @@ int grid_study(const std::string& ref, int argc, char** argv) {
     const std::string what = std::string(q.name) + grids;
     record_info("dkt_two_disks", "observed order of the " + what, g.order);
     record_info("dkt_two_disks", "GCI of the finest grid, " + what, g.gci_fine);
-    pass = pass && std::isfinite(fine);
+    // Information, not a gate: the test fails only when a grid gave no figure.
+    pass = pass && std::isfinite(coarse) && std::isfinite(medium) && std::isfinite(fine);
     if (*q.reference_key == '\0') continue;
     // The comparison error E = S - D of the finest run against the numerical uncertainty of that run
     // (the validation uncertainty without the digitised curve's own, which Wan & Turek do not state).

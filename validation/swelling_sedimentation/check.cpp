@@ -76,7 +76,11 @@ int grid_study(int argc, char** argv) {
                          "largest settling speed, D = 0.30 [cm/s]"};
   for (int a = 3; a < 6; ++a) {
     const std::string n = argv[a];
-    h.push_back(width / std::atof(n.c_str()));
+    char* end = nullptr;
+    const long cells = std::strtol(n.c_str(), &end, 10);
+    if (n.empty() || *end != '\0' || cells <= 0 || cells > 100000)
+      throw std::invalid_argument("grid study: '" + n + "': N must be a positive whole number of cells across the box");
+    h.push_back(width / static_cast<double>(cells));
     const SeriesTable sw = read_series_csv(dir + "/swelling_" + n + "_bodies.csv");
     const SeriesTable d25 = read_series_csv(dir + "/d025_" + n + "_bodies.csv");
     const SeriesTable d30 = read_series_csv(dir + "/d030_" + n + "_bodies.csv");
@@ -95,7 +99,8 @@ int grid_study(int argc, char** argv) {
                 values[1][q], values[2][q], g.order, g.extrapolated, 100 * g.gci_fine);
     record_info("swelling_sedimentation", std::string("observed order of the ") + names[q] + grids, g.order);
     record_info("swelling_sedimentation", std::string("GCI of the finest grid, ") + names[q] + grids, g.gci_fine);
-    pass = pass && values[2][q] > 0;
+    // Information, not a gate: the test fails only when a grid gave no figure (no arrival, no speed).
+    pass = pass && values[0][q] > 0 && values[1][q] > 0 && values[2][q] > 0;
   }
   std::printf("%s\n", pass ? "PASS" : "FAIL");
   return pass ? 0 : 1;
