@@ -148,6 +148,8 @@ class ContactSubcycler {
   int share_of(int body_a, int partner);
   // moved: the largest displacement of a candidate since the list was built [length].
   void contact_forces(const ContactModel& model, double time, double moved, ContactStats& stats);
+  // A touching pair or wall into this inner step's list, its normal into its share's sum.
+  void activate(const Active& a);
   // One inner step of the candidates; clears their contact forces for the next step and returns
   // the largest squared displacement of a candidate since the list was built.
   double kick_and_drift(double dt, double time, double& work);

@@ -44,6 +44,15 @@ void kick_and_drift_candidates(int n, double dt, double drift_time, double kick_
 
 }  // namespace
 
+void ContactSubcycler::activate(const Active& a) {
+  active_.push_back(a);
+  Share& s = shares_[a.share];
+  if (s.n_active == 0) touched_.push_back(a.share);
+  s.normal_sum[0] += a.normal[0];
+  s.normal_sum[1] += a.normal[1];
+  ++s.n_active;
+}
+
 // DEM forces on the candidates at their current state (contact_forces.cpp, restricted to the list),
 // added to their force arrays (zero on entry: kick_and_drift clears them). The shares' sums are
 // zero on entry too: only the shares with an active pair are visited and cleared again.
@@ -79,12 +88,7 @@ void ContactSubcycler::contact_forces(const ContactModel& model, double time, do
     a.damping = pair.damping;
     a.overlap = radius_sum - distance;
     a.normal = {dx / distance, dy / distance};
-    active_.push_back(a);
-    Share& s = shares_[pair.share];
-    if (s.n_active == 0) touched_.push_back(pair.share);
-    s.normal_sum[0] += a.normal[0];
-    s.normal_sum[1] += a.normal[1];
-    ++s.n_active;
+    activate(a);
   }
   const int n_pairs = static_cast<int>(active_.size());
   for (const Wall& wall : walls_) {
@@ -99,12 +103,7 @@ void ContactSubcycler::contact_forces(const ContactModel& model, double time, do
     a.damping = wall.damping;
     a.overlap = overlap;
     a.normal[wall.axis] = wall.side == 0 ? -1.0 : 1.0;
-    active_.push_back(a);
-    Share& s = shares_[wall.share];
-    if (s.n_active == 0) touched_.push_back(wall.share);
-    s.normal_sum[0] += a.normal[0];
-    s.normal_sum[1] += a.normal[1];
-    ++s.n_active;
+    activate(a);
   }
   stats.n_active_pairs = std::max(stats.n_active_pairs, n_pairs);
   stats.n_wall_contacts = std::max(stats.n_wall_contacts, static_cast<int>(active_.size()) - n_pairs);
