@@ -10,9 +10,10 @@
 // --collision-time: contact.model = "collision_time" (the linear law with k and c chosen per contact
 // so that it lasts 10 fluid steps, docs/method.md §5.5) instead of the papers' k_Dn = 1e7.
 // --coupling no_slip: the end-of-step constraint on the face velocities (docs/method.md §3.7) instead
-// of the papers' coupling (ibm.coupling = "uhlmann", the default).
+// of the papers' coupling (ibm.coupling = "uhlmann", the default); --drift X: its
+// ibm.preconditioner_drift (0 by default: each moving body's block built again at every move).
 // Usage: bench_scale [--n 4,8,16,32] [--kinds rigid,wheel,swelling] [--steps 40] [--bed] [--collision-time]
-//                    [--coupling uhlmann|no_slip]
+//                    [--coupling uhlmann|no_slip] [--drift X]
 #include <unistd.h>
 
 #include <cmath>
@@ -38,7 +39,7 @@ constexpr int cells_per_diameter = 16, rim_points = 50;
 
 // The scene of n x n bodies of `kind` (rigid | wheel | swelling) as TOML.
 std::string scene_text(int n, const std::string& kind, int steps, bool bed, bool collision_time,
-                       const std::string& coupling, const std::string& output) {
+                       const std::string& coupling, double drift, const std::string& output) {
   const double length = spacing * n;
   const int cells = static_cast<int>(std::lround(length * cells_per_diameter / diameter));
   std::string text = fmt::format(R"([run]
@@ -58,7 +59,9 @@ kernel = "roma3"
 coupling = "{}"
 {}
 )", 0.002 * steps, length, length, cells, cells, coupling,
-                                 coupling == "no_slip" ? "constrained_velocity = \"faces\"" : "");
+                                 coupling == "no_slip"
+                                     ? fmt::format("constrained_velocity = \"faces\"\npreconditioner_drift = {}", drift)
+                                     : "");
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
       // Spread over the box, or a bed: rows from the floor up, centred, the contact spheres (radius
@@ -94,10 +97,11 @@ struct Figures {
   double fluid = 0, ib = 0, bodies_stage = 0, contacts = 0, output = 0, other = 0, wall = 0;
 };
 
-Figures run(int n, const std::string& kind, int steps, bool bed, bool collision_time, const std::string& coupling) {
+Figures run(int n, const std::string& kind, int steps, bool bed, bool collision_time, const std::string& coupling,
+            double drift) {
   const BenchScratch scratch("ibms_bench_scale");
   const std::string out = (scratch.path / "run.h5").string();
-  const Scene scene = read_scene_string(scene_text(n, kind, steps, bed, collision_time, coupling, out), "bench_scale.toml");
+  const Scene scene = read_scene_string(scene_text(n, kind, steps, bed, collision_time, coupling, drift, out), "bench_scale.toml");
   Simulation sim(scene);
   const RunSummary summary = run_simulation(sim, {out, /*quiet=*/true});
   const StageTimers& t = sim.timers();
@@ -140,6 +144,7 @@ int main(int argc, char** argv) {
   int steps = 40;
   bool bed = false, collision_time = false;
   std::string coupling = "uhlmann";
+  double drift = 0.0;
   for (int a = 1; a < argc; ++a) {
     const std::string arg = argv[a];
     if (arg == "--n" && a + 1 < argc) sizes = split(argv[++a]);
@@ -150,23 +155,25 @@ int main(int argc, char** argv) {
     else if (arg == "--coupling" && a + 1 < argc && (std::string(argv[a + 1]) == "uhlmann" ||
                                                      std::string(argv[a + 1]) == "no_slip"))
       coupling = argv[++a];
+    else if (arg == "--drift" && a + 1 < argc) drift = std::atof(argv[++a]);
     else {
       std::fprintf(stderr, "usage: bench_scale [--n 4,8,16,32] [--kinds rigid,wheel,swelling] [--steps 40] [--bed] "
-                           "[--collision-time] [--coupling uhlmann|no_slip]\n");
+                           "[--collision-time] [--coupling uhlmann|no_slip] [--drift X]\n");
       return 2;
     }
   }
   try {
-    std::printf("bench_scale: n x n bodies, D/h = %d, %d rim points, %s, coupling %s, series every 10 steps, %d "
+    std::printf("bench_scale: n x n bodies, D/h = %d, %d rim points, %s, coupling %s%s, series every 10 steps, %d "
                 "steps%s, one thread\n", cells_per_diameter, rim_points,
-                collision_time ? "collision-time contacts (10 steps)" : "k_Dn = 1e7", coupling.c_str(), steps,
+                collision_time ? "collision-time contacts (10 steps)" : "k_Dn = 1e7", coupling.c_str(),
+                coupling == "no_slip" ? fmt::format(" (preconditioner_drift {})", drift).c_str() : "", steps,
                 bed ? ", a resting bed" : "");
     std::printf("  %-9s %6s %8s | ms per step: %8s %8s %8s %8s %8s %8s | / fluid: %6s %6s %6s %6s\n", "kind", "bodies",
                 "cells", "fluid", "IB", "bodies", "contacts", "output", "run", "IB", "bodies", "output", "run");
     for (const std::string& kind : kinds) {
       std::vector<double> n_bodies, per_step, fluid_per_step;
       for (const std::string& size : sizes) {
-        const Figures f = run(std::atoi(size.c_str()), kind, steps, bed, collision_time, coupling);
+        const Figures f = run(std::atoi(size.c_str()), kind, steps, bed, collision_time, coupling, drift);
         const double per = 1e3 / static_cast<double>(f.steps);
         std::printf("  %-9s %6d %8d | %25.3f %8.3f %8.3f %8.3f %8.3f %8.3f | %16.2f %6.2f %6.2f %6.2f\n", kind.c_str(),
                     f.bodies, f.cells, f.fluid * per, f.ib * per, f.bodies_stage * per, f.contacts * per,

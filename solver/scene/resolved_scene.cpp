@@ -146,6 +146,9 @@ std::string resolved_scene_toml(const Scene& scene) {
   out += fmt::format("coupling = {}\n", toml_string(scene_schema::name_of(ibm.coupling)));
   out += fmt::format("slip_tolerance = {}\n", toml_float(ibm.slip_tolerance));
   out += fmt::format("max_coupling_iterations = {}\n", ibm.max_coupling_iterations);
+  out += ibm.preconditioner_drift == IbmSpec::preconditioner_drift_auto
+             ? std::string("preconditioner_drift = \"auto\"\n")
+             : fmt::format("preconditioner_drift = {}\n", toml_float(ibm.preconditioner_drift));
   out += fmt::format("constrained_velocity = {}\n", toml_string(scene_schema::name_of(ibm.constrained_velocity)));
   out += fmt::format("virtual_mass_coefficient = {}\n", toml_float(ibm.virtual_mass_coefficient));
   out += fmt::format("rigid_response = {}\n", toml_string(scene_schema::name_of(ibm.rigid_response)));

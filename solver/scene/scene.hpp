@@ -122,6 +122,13 @@ struct IbmSpec {
   Coupling coupling = Coupling::uhlmann;
   double slip_tolerance = 1.0e-3;    // no_slip: largest slip left at the end of the step / U_ref [-]
   int max_coupling_iterations = 100; // no_slip: GMRES products (one Poisson solve each) per step at most [-]
+  // no_slip on "faces": how far a moving (prescribed or rigid) body's markers go, in cells, before
+  // its own preconditioner block is built again. 0 builds it at every move (fewest products); with
+  // many moving bodies the builds outweigh the few products a kept block adds, and 0.1 costs less.
+  // "auto" (the default): 0.1 when the blocks' unknowns, sum over those bodies of (2 n_b)^2,
+  // outnumber the grid's cells, else 0 (docs/method.md §3.7, the figures) [cells].
+  static constexpr double preconditioner_drift_auto = -1.0;
+  double preconditioner_drift = preconditioner_drift_auto;
   // no_slip: the velocity the constraint holds (docs/method.md §3.7):
   //  "cells"  J u^{n+1}, the cell-centred velocity of the momentum equation;
   //  "faces"  J_f U_f^{n+1}, the divergence-free face velocity that carries mass and momentum

@@ -140,6 +140,8 @@ void read_ibm(const TomlTableReader& table, IbmSpec& ibm) {
   table.read_choice("coupling", ibm.coupling);
   table.read_real("slip_tolerance", ibm.slip_tolerance, Need::optional, Bounds{0.0, true, 1.0, false});
   table.read_integer("max_coupling_iterations", ibm.max_coupling_iterations, Need::optional, /*lower=*/1);
+  table.read_real_or_auto("preconditioner_drift", ibm.preconditioner_drift, Bounds{0.0, false, 1.0, false},
+                          IbmSpec::preconditioner_drift_auto);
   table.read_choice("constrained_velocity", ibm.constrained_velocity);
   table.read_real("virtual_mass_coefficient", ibm.virtual_mass_coefficient, Need::optional, Bounds{0.0, false, 10.0, false});
   table.read_choice("rigid_response", ibm.rigid_response);

@@ -40,7 +40,7 @@ inline constexpr std::string_view open_side_keys[] = {"kind"};  // outflow, peri
 std::span<const std::string_view> keys_of_side_kind(WallSpec::Kind kind);
 inline constexpr std::string_view ibm_keys[] = {"kernel", "forcing_passes", "forcing_stage",
                                                 "inner_fluid_inertia", "sub_markers", "marker_retraction",
-                                                "coupling", "slip_tolerance", "max_coupling_iterations",
+                                                "coupling", "slip_tolerance", "max_coupling_iterations", "preconditioner_drift",
                                                 "constrained_velocity", "virtual_mass_coefficient", "rigid_response"};
 inline constexpr std::string_view body_keys[] = {
     "kind",          "centre",           "velocity",       "angular_velocity",

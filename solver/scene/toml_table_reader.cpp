@@ -143,6 +143,20 @@ bool TomlTableReader::read_integer(std::string_view key, int& out, Need need, lo
   return found;
 }
 
+bool TomlTableReader::read_real_or_auto(std::string_view key, double& out, const Bounds& bounds,
+                                        double auto_value) const {
+  const toml::node* node = find(key, Need::optional);
+  if (node == nullptr) return false;
+  if (const auto* text = node->as_string()) {
+    if (text->get() != "auto") fail(key, fmt::format("must be \"auto\" or a number {}, got '{}'", bounds.describe(), text->get()));
+    out = auto_value;
+    return true;
+  }
+  if (node->as_floating_point() == nullptr && node->as_integer() == nullptr)
+    fail_type(key, *node, "\"auto\" or a number");
+  return read_real(key, out, Need::optional, bounds);
+}
+
 bool TomlTableReader::read_bool(std::string_view key, bool& out) const {
   const toml::node* node = find(key, Need::optional);
   if (node == nullptr) return false;

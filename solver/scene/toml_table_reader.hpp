@@ -62,6 +62,8 @@ class TomlTableReader {
                     long upper = LONG_MAX) const;
   bool read_integer(std::string_view key, int& out, Need need, long lower,
                     long upper = INT_MAX) const;
+  // A number within bounds, or the string "auto" (out = auto_value).
+  bool read_real_or_auto(std::string_view key, double& out, const Bounds& bounds, double auto_value) const;
   bool read_bool(std::string_view key, bool& out) const;
   bool read_string(std::string_view key, std::string& out) const;
   // A string naming one value of Enum (scene_schema.hpp: Choices<Enum>); any other string fails

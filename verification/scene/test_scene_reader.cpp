@@ -93,6 +93,7 @@ void check_same_scene(const ibms::Scene& a, const ibms::Scene& b) {
   BOOST_TEST((a.ibm.forcing_stage == b.ibm.forcing_stage && a.ibm.inner_fluid_inertia == b.ibm.inner_fluid_inertia));
   BOOST_TEST(a.ibm.sub_markers == b.ibm.sub_markers);
   BOOST_TEST(a.ibm.marker_retraction == b.ibm.marker_retraction);
+  BOOST_TEST(a.ibm.preconditioner_drift == b.ibm.preconditioner_drift);
   BOOST_TEST_REQUIRE(a.bodies.size() == b.bodies.size());
   for (std::size_t k = 0; k < a.bodies.size(); ++k) {
     const ibms::BodySpec &x = a.bodies[k], &y = b.bodies[k];
@@ -143,6 +144,19 @@ BOOST_AUTO_TEST_CASE(resolved_scene_of_every_body_kind_reads_back_to_equal_value
   BOOST_TEST(first.bodies[3].oscillation_phase == 1.1);
   const ibms::Scene again = ibms::read_scene_string(first.resolved_text, "good.toml");
   check_same_scene(first, again);
+}
+
+// ibm.preconditioner_drift is "auto" (the default) or a number of cells in [0, 1]; both read back
+// from the resolved scene.
+BOOST_AUTO_TEST_CASE(preconditioner_drift_is_auto_or_a_number_and_reads_back) {
+  const ibms::Scene by_default = ibms::read_scene_string(good_scene_text(), "good.toml");
+  BOOST_TEST(by_default.ibm.preconditioner_drift == ibms::IbmSpec::preconditioner_drift_auto);
+  for (const std::string value : {"\"auto\"", "0", "0.1", "1"}) {
+    const ibms::Scene scene = ibms::read_scene_string(good_scene_text(), "good.toml", {"ibm.preconditioner_drift=" + value});
+    BOOST_TEST(scene.ibm.preconditioner_drift ==
+               (value == "\"auto\"" ? ibms::IbmSpec::preconditioner_drift_auto : std::stod(value)));
+    check_same_scene(scene, ibms::read_scene_string(scene.resolved_text, "good.toml"));
+  }
 }
 
 BOOST_AUTO_TEST_CASE(overrides_set_keys_absent_from_the_file) {

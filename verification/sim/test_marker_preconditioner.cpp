@@ -68,12 +68,12 @@ double round_trip_error(const Vec2& centre, bool periodic, bool on_faces, double
   for (std::size_t l = 0; l < n; ++l)
     for (int d = 0; d < 2; ++d) y[2 * l + d] = jsx[l][d];
   ibms::MarkerPreconditioner preconditioner;
-  preconditioner.reserve(coupling);
+  preconditioner.reserve(coupling, sim.scene().fluid.density, sim.scene().ibm.preconditioner_drift);
   const ibms::FluidSolver::FaceRange free_faces = sim.fluid_solver().corrected_faces();
   for (ibms::BodyCoupling& body : coupling) ibms::map_face_stencils(grid, sim.kernel(), body.marker, body.face_stencils);
   // Leaks to measure: the cells' blocks once, then kept while nothing moves; none on the faces.
-  BOOST_TEST(preconditioner.factorise(grid, sim.kernel(), on_faces, free_faces, coupling, {}) == !on_faces);
-  BOOST_TEST(!preconditioner.factorise(grid, sim.kernel(), on_faces, free_faces, coupling, {}));
+  BOOST_TEST(preconditioner.factorise(grid, sim.kernel(), on_faces, free_faces, coupling) == !on_faces);
+  BOOST_TEST(!preconditioner.factorise(grid, sim.kernel(), on_faces, free_faces, coupling));
   std::vector<double> no_leak(2 * n, 0.0);
   preconditioner.set_leaks(coupling, no_leak.data());
   preconditioner.apply(coupling, y.data(), z.data());
@@ -124,10 +124,30 @@ BOOST_AUTO_TEST_CASE(a_responding_rim_keeps_the_identity) {
   std::vector<double> v(n), x(n, 0.0);
   for (std::size_t k = 0; k < n; ++k) v[k] = 0.1 * static_cast<double>(k) - 1.0;
   ibms::MarkerPreconditioner preconditioner;
-  preconditioner.reserve(coupling);
+  preconditioner.reserve(coupling, sim.scene().fluid.density, sim.scene().ibm.preconditioner_drift);
   for (ibms::BodyCoupling& body : coupling) ibms::map_face_stencils(sim.grid(), sim.kernel(), body.marker, body.face_stencils);
-  preconditioner.factorise(sim.grid(), sim.kernel(), true, sim.fluid_solver().corrected_faces(), coupling, {});
+  preconditioner.factorise(sim.grid(), sim.kernel(), true, sim.fluid_solver().corrected_faces(), coupling);
   preconditioner.set_leaks(coupling, v.data());
   preconditioner.apply(coupling, v.data(), x.data());
   BOOST_TEST(x == v, boost::test_tools::per_element());
+}
+
+// ibm.preconditioner_drift = "auto" keeps the moving bodies' own blocks within 0.1 cell when their
+// unknowns, the sum of (2 n_b)^2, outnumber the grid's cells, and builds them at every move
+// otherwise; a number given in the scene is taken as it is. The run's stage description says which.
+BOOST_AUTO_TEST_CASE(automatic_drift_keeps_blocks_only_where_they_outnumber_the_cells) {
+  const auto description = [](int cells, const std::string& drift) {
+    ibms::Scene scene = ibms::read_scene_file(IBMS_SCENE_FALLING_WHEEL, {"ibm.preconditioner_drift=" + drift});
+    scene.bodies[0].kind = ibms::BodySpec::Kind::prescribed;  // a body with its own block
+    scene.domain.cells_x = scene.domain.cells_y = cells;
+    const ibms::Simulation sim(scene);
+    for (const std::string& stage : sim.stage_names())
+      if (stage.find("drift") != std::string::npos) return stage;
+    return std::string("(no stage names the drift)");
+  };
+  // One disk of 16 markers: (2 x 16)^2 = 1024 unknowns^2 against 32 x 32 = 1024 and 24 x 24 = 576 cells.
+  BOOST_TEST(description(32, "\"auto\"").find("drift 0 cells") != std::string::npos);
+  BOOST_TEST(description(24, "\"auto\"").find("drift 0.1 cells") != std::string::npos);
+  BOOST_TEST(description(24, "0").find("drift 0 cells") != std::string::npos);
+  BOOST_TEST(description(32, "0.25").find("drift 0.25 cells") != std::string::npos);
 }

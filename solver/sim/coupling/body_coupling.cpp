@@ -57,6 +57,7 @@ BodyCoupling::BodyCoupling(const MassSpringBody& body, std::size_t max_markers)
   marker_fraction.reserve(capacity);
   marker_volume.reserve(capacity);
   marker_fraction_work.reserve(capacity);
+  rigid_arm.reserve(capacity);
   resize_markers(*this, body.n_surface);
   for (int l = 0; l < body.n_surface; ++l) {
     marker_edge[l] = l;
@@ -153,31 +154,35 @@ void add_point_velocity_change(const MassSpringBody& body, const std::vector<Vec
     for (int d = 0; d < 2; ++d) c.target_velocity[l][d] += marker_value(change, centre, c, l, body.n_surface, d);
 }
 
-void rigid_response(const MassSpringBody& body, double fluid_density, const BodyCoupling& c,
-                    const std::vector<Vec2>& impulse, std::vector<Vec2>& change) {
+void rigid_arms(const MassSpringBody& body, const BodyCoupling& c, std::vector<Vec2>& arm) {
   const int n_rim = body.n_surface;
   const Vec2& x_c = body.position[body.centre_index()];
-  // The rim point of marker l relative to the centre: where its reaction acts on the body.
-  const auto arm = [&](std::size_t l) {
+  arm.resize(c.marker.size());  // capacity reserved: no allocation after the first step
+  for (std::size_t l = 0; l < c.marker.size(); ++l) {
     const int e0 = c.marker_edge[l], e1 = (e0 + 1) % n_rim;
     const double w = c.marker_fraction[l];
-    return Vec2{(1.0 - w) * body.position[e0][0] + w * body.position[e1][0] - x_c[0],
-                (1.0 - w) * body.position[e0][1] + w * body.position[e1][1] - x_c[1]};
-  };
+    arm[l] = {(1.0 - w) * body.position[e0][0] + w * body.position[e1][0] - x_c[0],
+              (1.0 - w) * body.position[e0][1] + w * body.position[e1][1] - x_c[1]};
+  }
+}
+
+void rigid_response(double fluid_density, const BodyCoupling& c, const std::vector<Vec2>& arm,
+                    const std::vector<double>& marker_volume, const std::vector<double>& radial_factor,
+                    const std::vector<Vec2>& impulse, std::vector<Vec2>& change) {
   Vec2 momentum{0.0, 0.0};
   double angular = 0.0;
-  for (std::size_t l = 0; l < c.marker.size(); ++l) {
-    const Vec2 r = arm(l);
-    const Vec2 p{-fluid_density * c.marker_volume[l] * impulse[l][0], -fluid_density * c.marker_volume[l] * impulse[l][1]};
+  for (std::size_t l = 0; l < arm.size(); ++l) {
+    const Vec2& r = arm[l];
+    const Vec2 p{-fluid_density * marker_volume[l] * impulse[l][0], -fluid_density * marker_volume[l] * impulse[l][1]};
     momentum[0] += p[0];
     momentum[1] += p[1];
     angular += r[0] * p[1] - r[1] * p[0];
   }
   const Vec2 du{momentum[0] / c.response_mass, momentum[1] / c.response_mass};
   const double dw = angular / c.response_inertia;
-  for (std::size_t l = 0; l < c.marker.size(); ++l) {
-    const Vec2 r = arm(l);
-    const double f = c.marker_fraction_work[l];
+  for (std::size_t l = 0; l < arm.size(); ++l) {
+    const Vec2& r = arm[l];
+    const double f = radial_factor[l];
     change[l] = {du[0] - f * dw * r[1], du[1] + f * dw * r[0]};
   }
 }

@@ -41,6 +41,7 @@ struct BodyCoupling {
   std::vector<double> marker_volume;       // dV_l = h s_l [length^2 per unit depth]
   std::vector<Vec2> target_velocity;       // U_target_l [length/time]
   std::vector<FaceStencils> face_stencils; // the markers' face stencils over one marker solve (work)
+  std::vector<Vec2> rigid_arm;             // a responding rigid body's arms over one step (rigid_arms)
   std::vector<Vec2> interpolated_velocity; // U~_l = J u~ [length/time]
   std::vector<Vec2> pass_force;            // F_l^(m) of one pass [length/time^2]
   std::vector<Vec2> pass_increment;        // dt F_l^(m), what one pass spreads [length/time]
@@ -130,8 +131,14 @@ void prepare_markers(const std::vector<MassSpringBody>& bodies,
 // -rho_f dV_l dt F_l goes to the rim points as compute_fluid_reaction sends it, its force and torque
 // about the centre point change U and omega, and marker l takes the change as its target does
 // (edge weights and radial factor) [length/time].
-void rigid_response(const MassSpringBody& body, double fluid_density, const BodyCoupling& c,
+// The response depends on the body through its markers' arms only (rigid_arms), which the marker
+// preconditioner keeps with the block it builds from them.
+void rigid_response(double fluid_density, const BodyCoupling& c, const std::vector<Vec2>& arm,
+                    const std::vector<double>& marker_volume, const std::vector<double>& radial_factor,
                     const std::vector<Vec2>& impulse, std::vector<Vec2>& change);
+// arm_l: the rim point of marker l (its edge's end points with the marker's weights) less the
+// centre point, where the marker's reaction acts on the body [length].
+void rigid_arms(const MassSpringBody& body, const BodyCoupling& c, std::vector<Vec2>& arm);
 
 void add_point_velocity_change(const MassSpringBody& body, const std::vector<Vec2>& change, BodyCoupling& c);
 

@@ -54,7 +54,17 @@ EndOfStepConstraint::EndOfStepConstraint(const Scene& scene, const Grid& grid, K
   std::size_t unknowns = 0;
   for (const BodyCoupling& c : markers) unknowns += 2 * c.marker.capacity();
   arrays_.work.reserve(unknowns);
-  arrays_.preconditioner.reserve(markers);
+  // The blocks' drift: as given, or "auto" from the blocks' sizes against the grid's (marker_preconditioner.hpp).
+  double block_unknowns_squared = 0.0;
+  for (std::size_t b = 0; b < bodies.size(); ++b)
+    if (markers[b].given_motion || markers[b].response_mass > 0.0) {
+      const double n = 2.0 * static_cast<double>(markers[b].marker.capacity());
+      block_unknowns_squared += n * n;
+    }
+  preconditioner_drift_ = scene.ibm.preconditioner_drift == IbmSpec::preconditioner_drift_auto
+                              ? automatic_preconditioner_drift(block_unknowns_squared, grid.nx * grid.ny)
+                              : scene.ibm.preconditioner_drift;
+  arrays_.preconditioner.reserve(markers, scene.fluid.density, preconditioner_drift_);
   arrays_.response_systems.resize(bodies.size());
   for (std::size_t b = 0; b < bodies.size(); ++b) {
     if (bodies[b].kind != BodyKind::mass_spring) continue;
@@ -112,7 +122,8 @@ bool EndOfStepConstraint::prepare_body_responses(const CouplingStep& step) {
     if (c.body_velocity_change.empty()) continue;
     const MassSpringBody& body = step.bodies[b];
     any = true;
-    if (c.response_mass > 0.0) {  // a rigid body: its buoyant weight over the step
+    if (c.response_mass > 0.0) {  // a rigid body: its buoyant weight over the step, its arms
+      rigid_arms(body, c, c.rigid_arm);
       const Vec2 weight = body.buoyant_weight(step.rigid[b].mass, fluid_density_, gravity_);
       for (Vec2& u : c.target_velocity)
         for (int d = 0; d < 2; ++d) u[d] += step.dt * weight[d] / c.response_mass;
@@ -141,7 +152,7 @@ CouplingWork EndOfStepConstraint::hold(const CouplingStep& step) {
                                               std::vector<Vec2>& change) {
     BodyCoupling& c = step.markers[b];
     if (c.response_mass > 0.0) {
-      rigid_response(step.bodies[b], fluid_density_, c, impulse, change);
+      rigid_response(fluid_density_, c, c.rigid_arm, c.marker_volume, c.marker_fraction_work, impulse, change);
       return;
     }
     std::vector<double>& x = c.response_work;
@@ -182,8 +193,9 @@ std::string EndOfStepConstraint::correction_stage() const {
   return "no-slip corrections (force corrections projected until the slip at t^{n+1} <= " +
          fmt::format("{:g}", slip_tolerance_) +
          " U_ref; GMRES preconditioned body by body: " +
-         (on_faces_ ? "prescribed and responding rigid bodies by their own operator (lattice Green's function), "
-                      "others by J S and the rim's leak"
+         (on_faces_ ? fmt::format("prescribed and responding rigid bodies by their own operator (lattice Green's "
+                                  "function, built again when their markers drift {:g} cells), others by J S and the "
+                                  "rim's leak", preconditioner_drift_)
                     : "J S and the rim's leak") +
          (has_responding_rigid_ ? "; rigid bodies: target at t^{n+1}, their response in the marker system" : "") +
          (has_mass_spring_ ? "; mass-spring rims: target at t^{n+1}, their linearised response in the marker system)"
@@ -195,6 +207,16 @@ void EndOfStepConstraint::write_checkpoint(const std::vector<BodyCoupling>& mark
     std::vector<double> forces;
     for (const Vec2& force : markers[b].previous_force) forces.insert(forces.end(), {force[0], force[1]});
     append_body_array(arrays, "bodies_previous_force", b, forces);
+    // What the body's own preconditioner block was built from, so that a restart builds the block
+    // in use (it is kept while the markers drift less than exact_block_drift cells).
+    const ExactBlockInputs& inputs = arrays_.preconditioner.exact_inputs(b);
+    std::vector<double> block_markers, block_arms;
+    for (const Vec2& x : inputs.marker) block_markers.insert(block_markers.end(), {x[0], x[1]});
+    for (const Vec2& r : inputs.arm) block_arms.insert(block_arms.end(), {r[0], r[1]});
+    append_body_array(arrays, "bodies_block_markers", b, block_markers);
+    append_body_array(arrays, "bodies_block_volumes", b, inputs.volume);
+    append_body_array(arrays, "bodies_block_radial_factors", b, inputs.radial);
+    append_body_array(arrays, "bodies_block_arms", b, block_arms);
   }
 }
 
@@ -208,6 +230,26 @@ void EndOfStepConstraint::read_checkpoint(const CheckpointReader& read, std::vec
                                                      b, values.size, c.previous_force.capacity()));
     c.previous_force.resize(values.size / 2);
     for (std::size_t l = 0; l < c.previous_force.size(); ++l) c.previous_force[l] = {values.data[2 * l], values.data[2 * l + 1]};
+    // The preconditioner block's inputs: none, or n markers (2 n values), n volumes, n radial
+    // factors and no arms or n arms (2 n values), n no more than the markers' capacity.
+    const BodySlice block_markers = read.body_array("bodies_block_markers", b, markers.size());
+    const std::size_t n = block_markers.size / 2;
+    if (block_markers.size % 2 != 0 || n > c.marker.capacity())
+      read.fail("bodies_block_markers", fmt::format("body {}: {} values are not two per marker for at most {} markers",
+                                                    b, block_markers.size, c.marker.capacity()));
+    const BodySlice volumes = read.body_array("bodies_block_volumes", b, markers.size(), n);
+    const BodySlice radial = read.body_array("bodies_block_radial_factors", b, markers.size(), n);
+    const BodySlice arms = read.body_array("bodies_block_arms", b, markers.size());
+    if (arms.size != 0 && arms.size != 2 * n)
+      read.fail("bodies_block_arms", fmt::format("body {}: {} values, expected 0 or {}", b, arms.size, 2 * n));
+    ExactBlockInputs& inputs = restored_inputs_;
+    inputs.marker.resize(n);
+    inputs.arm.resize(arms.size / 2);
+    inputs.volume.assign(volumes.data, volumes.data + n);
+    inputs.radial.assign(radial.data, radial.data + n);
+    for (std::size_t l = 0; l < n; ++l) inputs.marker[l] = {block_markers.data[2 * l], block_markers.data[2 * l + 1]};
+    for (std::size_t l = 0; l < inputs.arm.size(); ++l) inputs.arm[l] = {arms.data[2 * l], arms.data[2 * l + 1]};
+    arrays_.preconditioner.restore_inputs(b, inputs);
   }
 }
 

@@ -30,7 +30,8 @@ class EndOfStepConstraint final : public Coupling {
   std::string correction_stage() const override;
   bool counts_products() const override { return true; }
   // The latest forces, the next step's predictor: "bodies_previous_force", two values per marker
-  // (none before the first step).
+  // (none before the first step); what each body's own preconditioner block was built from
+  // ("bodies_block_markers", "_volumes", "_radial_factors", "_arms"; none before it is built).
   void write_checkpoint(const std::vector<BodyCoupling>& markers, CheckpointArrays& arrays) const override;
   void read_checkpoint(const CheckpointReader& read, std::vector<BodyCoupling>& markers) override;
 
@@ -47,9 +48,11 @@ class EndOfStepConstraint final : public Coupling {
   bool on_faces_;              // ibm.constrained_velocity = "faces": J_f U_f^{n+1}, cells from faces
   bool has_mass_spring_;       // a mass-spring body responds in the marker system
   bool has_responding_rigid_ = false;  // a rigid body responds in the marker system
+  double preconditioner_drift_ = 0.0;  // ibm.preconditioner_drift, "auto" resolved [cells]
   double fluid_density_;       // rho_f [mass/length^3]
   Vec2 gravity_;               // g [length/time^2]
   NoSlipArrays arrays_;
+  ExactBlockInputs restored_inputs_;  // read_checkpoint's work
   FaceForcing balanced_;
 };
 

@@ -6,7 +6,9 @@
 
 namespace ibms {
 
-void MarkerPreconditioner::reserve(const std::vector<BodyCoupling>& coupling) {
+void MarkerPreconditioner::reserve(const std::vector<BodyCoupling>& coupling, double fluid_density, double drift) {
+  fluid_density_ = fluid_density;
+  drift_ = drift;
   blocks_.resize(coupling.size());
   std::size_t largest = 0;
   for (std::size_t b = 0; b < coupling.size(); ++b) {
@@ -22,10 +24,14 @@ void MarkerPreconditioner::reserve(const std::vector<BodyCoupling>& coupling) {
     if (coupling[b].given_motion || coupling[b].response_mass > 0.0) {  // may take its own operator
       blocks_[b].local.resize(2 * n, 2 * n);
       blocks_[b].local_factor.compute(Eigen::MatrixXd::Identity(2 * n, 2 * n));
+      ExactBlockInputs& inputs = blocks_[b].inputs;
+      for (auto* v : {&inputs.marker, &inputs.arm}) v->reserve(coupling[b].marker.capacity());
+      for (auto* v : {&inputs.volume, &inputs.radial}) v->reserve(coupling[b].marker.capacity());
     }
     blocks_[b].normal.reserve(coupling[b].marker.capacity());
     blocks_[b].factorised_at.reserve(coupling[b].marker.capacity());
   }
+  stencils_.reserve(largest);
   weights_.resize(2 * largest);
   for (auto& w : weights_) w.reserve(36);
   cells_.resize(2 * largest);
@@ -65,7 +71,7 @@ double mean_normal(const std::vector<Vec2>& normal, const double* v) {
 
 bool MarkerPreconditioner::factorise(const Grid& grid, KernelKind kernel, bool on_faces,
                                      const FluidSolver::FaceRange& free_faces,
-                                     std::vector<BodyCoupling>& coupling, const BodyResponse& response) {
+                                     std::vector<BodyCoupling>& coupling) {
   cell_area_ = grid.dx() * grid.dy();
   // Markers farther apart than the kernel's support in x or y share no node, unless a periodic
   // image brings them together (the node lists hold the wrapped nodes).
@@ -73,7 +79,7 @@ bool MarkerPreconditioner::factorise(const Grid& grid, KernelKind kernel, bool o
   const bool wraps = grid.periodic_x || grid.periodic_y;
   bool moved = false;
   for (std::size_t b = 0; b < coupling.size(); ++b) {
-    const BodyCoupling& c = coupling[b];
+    BodyCoupling& c = coupling[b];
     const Eigen::Index n = static_cast<Eigen::Index>(c.marker.size());
     Block& block = blocks_[b];
     // A rigid body that responds in the marker system takes A_b less its response. A mass-spring
@@ -87,14 +93,34 @@ bool MarkerPreconditioner::factorise(const Grid& grid, KernelKind kernel, bool o
       block.leak = 0.0;
       continue;
     }
+    block.exact = on_faces && (c.given_motion || rigid) && n > 0;
+    if (block.exact) {
+      block.leak = 0.0;
+      ExactBlockInputs& inputs = block.inputs;
+      if (block.restored) {  // a restarted run: the block in use when the checkpoint was written
+        build_local(grid, kernel, free_faces, c, block);
+        block.restored = false;
+      }
+      if (inputs.marker.size() == c.marker.size()) {
+        double drift = 0.0;
+        for (Eigen::Index k = 0; k < n; ++k)
+          drift = std::max({drift, std::abs(c.marker[k][0] - inputs.marker[k][0]) / grid.dx(),
+                            std::abs(c.marker[k][1] - inputs.marker[k][1]) / grid.dy()});
+        if (drift <= drift_) continue;
+      }
+      inputs.marker.assign(c.marker.begin(), c.marker.end());
+      inputs.volume.assign(c.marker_volume.begin(), c.marker_volume.end());
+      inputs.radial.assign(c.marker_fraction_work.begin(), c.marker_fraction_work.end());
+      if (rigid)
+        inputs.arm.assign(c.rigid_arm.begin(), c.rigid_arm.end());
+      else
+        inputs.arm.clear();
+      build_local(grid, kernel, free_faces, c, block);
+      continue;
+    }
     if (block.factorised_at == c.marker) continue;
     block.factorised_at.assign(c.marker.begin(), c.marker.end());
     block.leak = 0.0;
-    block.exact = on_faces && (c.given_motion || rigid) && n > 0;
-    if (block.exact) {
-      build_local(grid, free_faces, b, coupling, rigid ? response : BodyResponse{}, block);
-      continue;
-    }
     moved = true;
     for (int d = 0; d < 2; ++d) {
       for (Eigen::Index k = 0; k < n; ++k) marker_node_weights(grid, c.face_stencils[k], on_faces, d, weights_[k]);
@@ -136,12 +162,21 @@ bool MarkerPreconditioner::factorise(const Grid& grid, KernelKind kernel, bool o
   return moved;
 }
 
-// A_b = J_f P_0 S_f of one body on the unbounded grid (marker_preconditioner.hpp).
-void MarkerPreconditioner::build_local(const Grid& grid, const FluidSolver::FaceRange& free_faces,
-                                       std::size_t body, std::vector<BodyCoupling>& coupling,
-                                       const BodyResponse& response, Block& block) {
-  BodyCoupling& c = coupling[body];
-  const int n = static_cast<int>(c.marker.size());
+void MarkerPreconditioner::restore_inputs(std::size_t body, const ExactBlockInputs& inputs) {
+  Block& block = blocks_[body];
+  block.inputs.marker.assign(inputs.marker.begin(), inputs.marker.end());
+  block.inputs.volume.assign(inputs.volume.begin(), inputs.volume.end());
+  block.inputs.radial.assign(inputs.radial.begin(), inputs.radial.end());
+  block.inputs.arm.assign(inputs.arm.begin(), inputs.arm.end());
+  block.restored = !inputs.marker.empty();
+}
+
+// A_b = J_f P_0 S_f of one body on the unbounded grid at block.inputs (marker_preconditioner.hpp).
+void MarkerPreconditioner::build_local(const Grid& grid, KernelKind kernel, const FluidSolver::FaceRange& free_faces,
+                                       BodyCoupling& c, Block& block) {
+  const ExactBlockInputs& inputs = block.inputs;
+  const int n = static_cast<int>(inputs.marker.size());
+  map_face_stencils(grid, kernel, inputs.marker, stencils_);
   const int nx = grid.nx, ny = grid.ny;
   const double dx = grid.dx(), dy = grid.dy();
   // Offsets between two cells of the body, the nearest periodic image.
@@ -156,7 +191,7 @@ void MarkerPreconditioner::build_local(const Grid& grid, const FluidSolver::Face
   for (int k = 0; k < n; ++k)
     for (int d = 0; d < 2; ++d) {
       std::vector<NodeWeight>& nodes = weights_[2 * k + d];
-      marker_node_weights(grid, c.face_stencils[k], /*on_faces=*/true, d, nodes);
+      marker_node_weights(grid, stencils_[k], /*on_faces=*/true, d, nodes);
       std::vector<CellWeight>& r = cells_[2 * k + d];
       r.clear();
       std::size_t corrected = 0;  // the nodes kept for C: the corrected faces only
@@ -274,15 +309,15 @@ void MarkerPreconditioner::build_local(const Grid& grid, const FluidSolver::Face
       // C: the kernels' overlap on the corrected faces of one component.
       double sum = p % 2 == q % 2 ? overlap(weights_[p], weights_[q]) : 0.0;
       for (std::size_t e = 0; e < cells_[p].size(); ++e) sum += cells_[p][e].weight * band_potential_[band_index_[p][e]];
-      A(p, q) = sum * c.marker_volume[q / 2] * inv_cell;
+      A(p, q) = sum * inputs.volume[q / 2] * inv_cell;
     }
   }
-  // A body that responds: less its response to each unit impulse (the product's y -= R x).
-  if (response) {
+  // A rigid body that responds: less its response to each unit impulse (the product's y -= R x).
+  if (!inputs.arm.empty()) {
     for (int q = 0; q < 2 * n; ++q) {
       for (Vec2& v : c.pass_increment) v = {0.0, 0.0};
       c.pass_increment[q / 2][q % 2] = 1.0;
-      response(body, c.pass_increment, c.pass_force);
+      rigid_response(fluid_density_, c, inputs.arm, inputs.volume, inputs.radial, c.pass_increment, c.pass_force);
       for (int p = 0; p < 2 * n; ++p) A(p, q) -= c.pass_force[p / 2][p % 2];
     }
   }

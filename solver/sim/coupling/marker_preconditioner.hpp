@@ -23,10 +23,14 @@
 //      normal velocity at the markers mu_b times the force, mu_b ~ 3e-4 at D/h = 20, which J S does
 //      not see. The preconditioner adds z_b <v . n>_b / mu_b, z_b the body's normal pattern and
 //      mu_b measured by one product per step for all bodies together.
-// Both are kept while a body's markers stay where they were (a fixed body: once per run). A body
-// whose rim responds in the marker system (mass-spring, docs/method.md §3.7) keeps the identity: its
-// rim's inertia and springs dominate that part of the system, and J S there doubled the products
-// (16 swelling wheels in the two-sided cavity: 5.2 a step without it, 10.4 with it).
+// The J S block and the leak are kept while a body's markers stay where they were (a fixed body:
+// once per run). A moving body's own operator is kept while its markers stay within
+// ibm.preconditioner_drift cells of where it was built (0: built again at every move); it is built
+// from what it was built with (the markers, their volumes and radial factors, a rigid body's arms),
+// which the checkpoint keeps, so that a restarted run builds the same block (docs/method.md §3.7).
+// A body whose rim responds in the marker system (mass-spring, docs/method.md §3.7) keeps the
+// identity: its rim's inertia and springs dominate that part of the system, and J S there doubled
+// the products (16 swelling wheels in the two-sided cavity: 5.2 a step without it, 10.4 with it).
 #pragma once
 #include <array>
 #include <cstddef>
@@ -45,19 +49,43 @@
 
 namespace ibms {
 
+// ibm.preconditioner_drift = "auto": a moving body's block costs about (2 n_b)^2 times a kernel
+// stencil's work to build, a product about a Poisson solve on the grid; a block kept within a tenth
+// of a cell adds one or two products a step. So the blocks are kept within 0.1 cell when the sum over
+// the moving bodies of (2 n_b)^2 exceeds the grid's cells, and built at every move otherwise
+// (docs/method.md §3.7: an oscillating cylinder, 0.6 of the cells, 1.0 products a step at 0 and 2.7
+// at 0.1; 16-1024 rigid disks, 15 times the cells, coupling 2.5-4.5 → 1.0-1.5 the fluid stages).
+inline double automatic_preconditioner_drift(double block_unknowns_squared, long cells) {
+  return block_unknowns_squared > static_cast<double>(cells) ? 0.1 : 0.0;
+}
+
+// What a body's own operator was built from: its markers, their volumes and radial factors, and a
+// responding rigid body's arms (empty otherwise). Empty before the first build.
+struct ExactBlockInputs {
+  std::vector<Vec2> marker;
+  std::vector<double> volume, radial;
+  std::vector<Vec2> arm;
+};
+
 class MarkerPreconditioner {
  public:
   // Storage for bodies with up to marker capacity markers each (the own-operator blocks for the
-  // prescribed and the responding rigid bodies only).
-  void reserve(const std::vector<BodyCoupling>& coupling);
+  // prescribed and the responding rigid bodies only); fluid_density for the rigid bodies' response,
+  // drift: ibm.preconditioner_drift [cells].
+  void reserve(const std::vector<BodyCoupling>& coupling, double fluid_density, double drift);
   // The blocks of every body whose markers moved since they were last factorised (faces: the local
   // operator; cells: C and the outward normals), free_faces the faces the projection corrects;
   // returns whether leaks must be measured again (a body with a J S block moved).
-  // response: the bodies' response in the marker system (rigid bodies' columns join A_b; the
-  // impulses and changes are built in pass_increment and pass_force). The markers' face_stencils
-  // must be mapped at the current markers (map_face_stencils; hold_no_slip maps them).
+  // A responding rigid body (response_mass > 0, its rigid_arm filled for the step) takes A_b less
+  // its response (the impulses and changes are built in pass_increment and pass_force). The
+  // markers' face_stencils must be mapped at the current markers (map_face_stencils; hold_no_slip
+  // maps them).
   bool factorise(const Grid& grid, KernelKind kernel, bool on_faces, const FluidSolver::FaceRange& free_faces,
-                 std::vector<BodyCoupling>& coupling, const BodyResponse& response);
+                 std::vector<BodyCoupling>& coupling);
+  // The inputs of body b's own operator (empty: none built), for the checkpoint; restore_inputs
+  // gives them back to a restarted run, whose next factorise builds the block from them.
+  const ExactBlockInputs& exact_inputs(std::size_t body) const { return blocks_[body].inputs; }
+  void restore_inputs(std::size_t body, const ExactBlockInputs& inputs);
   // z: every body's markers pushed along their outward normals n_l (unknowns 2l + d of each body in
   // turn), the pattern whose image under the marker system gives the leaks.
   void normal_pattern(const std::vector<BodyCoupling>& coupling, double* z) const;
@@ -84,10 +112,16 @@ class MarkerPreconditioner {
     double leak = 0.0;                   // mu_b [-]; 0: no leak part
     std::vector<Vec2> factorised_at;     // the markers of the factorisation and the leak
     bool identity = false;               // a responding (mass-spring) rim: no block, no leak
+    ExactBlockInputs inputs;             // what local was built from (exact blocks)
+    bool restored = false;               // inputs given back by a restart, block not yet built
   };
   std::vector<Block> blocks_;
-  void build_local(const Grid& grid, const FluidSolver::FaceRange& free_faces,
-                   std::size_t body, std::vector<BodyCoupling>& coupling, const BodyResponse& response, Block& block);
+  // A_b (less a rigid body's response) from block.inputs.
+  void build_local(const Grid& grid, KernelKind kernel, const FluidSolver::FaceRange& free_faces, BodyCoupling& c,
+                   Block& block);
+  double fluid_density_ = 0.0;
+  double drift_ = 0.0;  // ibm.preconditioner_drift [cells]
+  std::vector<FaceStencils> stencils_;            // the face stencils of block.inputs.marker (work)
   std::vector<std::vector<NodeWeight>> weights_;  // the nodes of each marker of the largest body
   std::vector<std::vector<CellWeight>> cells_;    // R of each marker and component (2k + d) of the largest body
   LatticeGreensFunction green_;

@@ -146,7 +146,7 @@ NoSlipResult hold_no_slip(const Grid& grid, KernelKind kernel, const WallVelocit
     // each body's leak from one product for all bodies (the leak of one body at another's markers
     // is left out; the product overwrites pass_increment, read above), both kept while no body moves.
     if (preconditioner != nullptr && !prepared) {
-      if (preconditioner->factorise(grid, kernel, on_faces, solver.corrected_faces(), coupling, response)) {
+      if (preconditioner->factorise(grid, kernel, on_faces, solver.corrected_faces(), coupling)) {
         preconditioner->normal_pattern(coupling, work.solution.data());
         product(work.solution.data(), work.residual.data());
         preconditioner->set_leaks(coupling, work.residual.data());

@@ -24,7 +24,7 @@
 namespace ibms {
 
 // Bumped whenever the meaning or the set of stored names changes; a reader refuses others.
-inline constexpr int checkpoint_format_version = 3;  // 3: per-body arrays in one dataset each (bodies_*)
+inline constexpr int checkpoint_format_version = 4;  // 4: the no-slip preconditioner blocks' inputs (bodies_block_*)
 
 // Replaces /checkpoint of `out` with the state of `sim`; next_snapshot_time is the run loop's.
 void write_simulation_checkpoint(OutputFile& out, const Simulation& sim, double next_snapshot_time);
