@@ -396,26 +396,29 @@ ProjectionStats FluidSolver::project(FluidState& state, double dt, const FaceFor
   return stats;
 }
 
-void FluidSolver::homogeneous_projection(double dt, CellField& increment_x, CellField& increment_y,
-                                         const FaceField* face_increment_x, const FaceField* face_increment_y) {
-  // The projection is affine in u*: of u* + g it gives P(u*) + P_0(g), P_0 the projection with
-  // homogeneous data (no flux through the faces with a given flux; p^n's gradient is in P(u*)).
-  phi_ = increment_x;
-  work_ = increment_y;
-  fill_neumann_ghosts(grid_, phi_);
-  fill_neumann_ghosts(grid_, work_);
+void FluidSolver::homogeneous_face_projection(double dt, const FaceField& face_increment_x,
+                                              const FaceField& face_increment_y) {
+  project_faces(dt, face_increment_x, face_increment_y);
+}
+
+// star_face_ = the given face increments on the corrected faces (0 on faces with a given flux),
+// then projected (project_star_faces).
+void FluidSolver::project_faces(double dt, const FaceField& face_increment_x, const FaceField& face_increment_y) {
   const FaceRange faces = corrected_faces();
   star_face_x_.fill(0.0);  // faces with a given flux: no increment
   star_face_y_.fill(0.0);
-  const bool balanced = face_increment_x != nullptr && face_increment_y != nullptr;
   IBMS_PARALLEL_ROWS
   for (int j = 0; j < grid_.ny; ++j)
-    for (int i = faces.x_first; i <= faces.x_last; ++i)
-      star_face_x_(i, j) = balanced ? (*face_increment_x)(i, j) : 0.5 * (phi_(i - 1, j) + phi_(i, j));
+    for (int i = faces.x_first; i <= faces.x_last; ++i) star_face_x_(i, j) = face_increment_x(i, j);
   IBMS_PARALLEL_ROWS
   for (int j = faces.y_first; j <= faces.y_last; ++j)
-    for (int i = 0; i < grid_.nx; ++i)
-      star_face_y_(i, j) = balanced ? (*face_increment_y)(i, j) : 0.5 * (work_(i, j - 1) + work_(i, j));
+    for (int i = 0; i < grid_.nx; ++i) star_face_y_(i, j) = face_increment_y(i, j);
+  project_star_faces(dt);
+}
+
+// star_face_ -= dt G_f phi with L phi = D star_face_ / dt on the corrected faces; phi_ keeps phi.
+void FluidSolver::project_star_faces(double dt) {
+  const FaceRange faces = corrected_faces();
   sync_periodic_faces(grid_, star_face_x_, star_face_y_);
   divergence(grid_, star_face_x_, star_face_y_, 1.0 / dt, buffer_.data());
   poisson_->solve(/*a=*/0.0, /*b=*/1.0, buffer_.data(), buffer_.data());
@@ -430,6 +433,31 @@ void FluidSolver::homogeneous_projection(double dt, CellField& increment_x, Cell
   for (int j = faces.y_first; j <= faces.y_last; ++j)
     for (int i = 0; i < grid_.nx; ++i) star_face_y_(i, j) -= dt * (phi_(i, j) - phi_(i, j - 1)) * inv_dy;
   sync_periodic_faces(grid_, star_face_x_, star_face_y_);
+}
+
+void FluidSolver::homogeneous_projection(double dt, CellField& increment_x, CellField& increment_y,
+                                         const FaceField* face_increment_x, const FaceField* face_increment_y) {
+  // The projection is affine in u*: of u* + g it gives P(u*) + P_0(g), P_0 the projection with
+  // homogeneous data (no flux through the faces with a given flux; p^n's gradient is in P(u*)).
+  const bool balanced = face_increment_x != nullptr && face_increment_y != nullptr;
+  if (balanced) {
+    project_faces(dt, *face_increment_x, *face_increment_y);
+  } else {
+    phi_ = increment_x;
+    work_ = increment_y;
+    fill_neumann_ghosts(grid_, phi_);
+    fill_neumann_ghosts(grid_, work_);
+    const FaceRange faces = corrected_faces();
+    star_face_x_.fill(0.0);  // faces with a given flux: no increment
+    star_face_y_.fill(0.0);
+    IBMS_PARALLEL_ROWS
+    for (int j = 0; j < grid_.ny; ++j)
+      for (int i = faces.x_first; i <= faces.x_last; ++i) star_face_x_(i, j) = 0.5 * (phi_(i - 1, j) + phi_(i, j));
+    IBMS_PARALLEL_ROWS
+    for (int j = faces.y_first; j <= faces.y_last; ++j)
+      for (int i = 0; i < grid_.nx; ++i) star_face_y_(i, j) = 0.5 * (work_(i, j - 1) + work_(i, j));
+    project_star_faces(dt);
+  }
   centre_gradient(grid_, phi_, grad_x_, grad_y_);
   IBMS_PARALLEL_ROWS
   for (int j = 0; j < grid_.ny; ++j)

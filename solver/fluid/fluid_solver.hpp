@@ -157,6 +157,10 @@ class FluidSolver {
   // With face_increment_x/y given, the faces take them instead of mean(g) (the balanced form).
   void homogeneous_projection(double dt, CellField& increment_x, CellField& increment_y,
                               const FaceField* face_increment_x = nullptr, const FaceField* face_increment_y = nullptr);
+  // The face part of the balanced form alone: the face increment U_g - dt G_f phi with
+  // L phi = D U_g / dt, the same bits as homogeneous_projection's with these face increments (the
+  // marker system's products under the face constraint read nothing else).
+  void homogeneous_face_projection(double dt, const FaceField& face_increment_x, const FaceField& face_increment_y);
   // After project: adds the projection of a cell increment g (dt S dF of a forcing correction) to
   // the fields of level n+1: u += P_0 g, U_f += mean(g) - dt G_f phi, p += phi (g is overwritten
   // by P_0 g). Returns max |P_0 g| over the cells and both components.
@@ -188,6 +192,10 @@ class FluidSolver {
   // wall cells of out_x, out_y (FluidSchemes::quadratic_wall).
   void add_wall_closure(const CellField& u, const CellField& v, double t, double scale, CellField& out_x,
                         CellField& out_y) const;
+  // star_face_ = the face increments on the corrected faces, then project_star_faces.
+  void project_faces(double dt, const FaceField& face_increment_x, const FaceField& face_increment_y);
+  // star_face_ -= dt G_f phi with L phi = D star_face_ / dt (phi in phi_).
+  void project_star_faces(double dt);
   std::unique_ptr<SpectralSolver> poisson_;    // Neumann/periodic
   // Dirichlet/periodic, one per velocity component: the same transforms (FFTW reuses the first
   // plan's wisdom), so that with two threads the two solves run side by side.

@@ -94,10 +94,21 @@ NoSlipResult hold_no_slip(const Grid& grid, KernelKind kernel, const WallVelocit
   };
   // y = J P_0 S (U_ref x) / U_ref: the cell or face part of the projected increment at the markers,
   // less the rim's response to it where the body responds.
+  // Under the face constraint with the cells from the faces the product reads the projected faces
+  // only: the cells' increment is left to the correction at the end.
+  const bool faces_only = on_faces && cells_from_faces;
   const auto product = [&](const double* x, double* y) {
     scatter(x, coupling);
-    spread_increment();
-    solver.homogeneous_projection(dt, increment_x, increment_y, &face_increment_x, &face_increment_y);
+    if (faces_only) {
+      face_increment_x.fill(0.0);
+      face_increment_y.fill(0.0);
+      for (BodyCoupling& c : coupling)
+        spread_to_faces(grid, c.face_stencils, c.pass_increment, c.marker_volume, face_increment_x, face_increment_y);
+      solver.homogeneous_face_projection(dt, face_increment_x, face_increment_y);
+    } else {
+      spread_increment();
+      solver.homogeneous_projection(dt, increment_x, increment_y, &face_increment_x, &face_increment_y);
+    }
     std::size_t k = 0;
     for (std::size_t b = 0; b < coupling.size(); ++b) {
       BodyCoupling& c = coupling[b];
