@@ -40,9 +40,11 @@ printf '{"level": "%s", "cores": %s, "started": %s}\n' "$level" "$jobs" "$start"
 /usr/bin/python3 workflow/ibms_workflow.py forget-failed "$build"
 echo "== workflow (level $level, $jobs cores)"
 status=0
-# Runs and checks side by side on all cores, one OpenMP thread each (the runner sets it).
+# Runs and checks side by side on all cores, one OpenMP thread each (the runner sets it). The
+# `run:` jobs run in threads of this process (--force-use-threads): each would otherwise start a
+# snakemake process of its own that parses the workflow again (about a second a job).
 snakemake -s workflow/Snakefile --directory "$build" --configfile "workflow/config/$level.yaml" \
-  --config build="$build" --cores "$jobs" --keep-going --rerun-incomplete "$@" || status=1
+  --config build="$build" --cores "$jobs" --keep-going --rerun-incomplete --force-use-threads "$@" || status=1
 echo
 echo "validation checks (case, metric, tolerance, measured, result):"
 cat "$build/validation/results.csv" 2>/dev/null || true

@@ -74,10 +74,11 @@ ONE_CORE_BENCHES = {
 # cylinders (173 s); the verification `ctest -j 2 -L "unit|convergence"` 150 s. Quick: the same
 # cylinder grids as default, the fluid cases 1 min (bench/README.md), bench_forcing_passes a guess
 # (a third of its grids); full: bench/README.md's "adds 39 min" for the cylinders, forcing passes a
-# guess.
+# guess. bench_forcing_passes at default: 105 s measured alone on one core (the disk at 1 and 3
+# passes).
 FALLBACK_SECONDS = {
     ("bench", "default"): {"work_precision": 100, "work_precision_bodies": 173, "fluid_stability": 202,
-                           "forcing_passes": 175, "stability": 8, "overhead": 2},
+                           "forcing_passes": 105, "stability": 8, "overhead": 2},
     ("bench", "quick"): {"work_precision": 60, "work_precision_bodies": 173, "fluid_stability": 201,
                          "forcing_passes": 30, "stability": 40, "overhead": 5},
     ("bench", "full"): {"work_precision": 600, "work_precision_bodies": 2600, "fluid_stability": 201,
