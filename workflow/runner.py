@@ -126,6 +126,34 @@ def _finish(job, build, status, rc, seconds, output, timed_out=False):
     print("%-50s %-8s %8.1f s" % (name, status, seconds), flush=True)
 
 
+def junit_to_ctest_log(junit_path, log_path):
+    """ctest's JUnit file (--output-junit) as a log in LastTest.log's layout, one entry per test
+    (name, time, output, verdict), which the report reads (reports/report_data.read_ctest_logs).
+    ctest's own LastTest.log cannot serve: any `ctest` started in the build directory meanwhile
+    (a test that lists the tests, `ctest --show-only`) rewrites it. Returns the number of tests."""
+    import xml.etree.ElementTree as ET
+    cases = ET.parse(junit_path).getroot().iter("testcase")
+    verdicts = {"run": "Test Passed.", "fail": "Test Failed.", "disabled": "Test Not Run.",
+                "notrun": "Test Not Run."}
+    count = 0
+    with open(log_path, "w") as f:
+        f.write("ctest --output-junit %s, in LastTest.log's layout (workflow/runner.py)\n" % junit_path)
+        f.write("----------------------------------------------------------\n")
+        cases = list(cases)
+        for k, case in enumerate(cases, 1):
+            name = case.get("name")
+            out = case.findtext("system-out") or ""
+            f.write("%d/%d Test: %s\n" % (k, len(cases), name))
+            f.write("Output:\n----------------------------------------------------------\n")
+            f.write(out.rstrip("\n") + "\n")
+            f.write("<end of output>\n")
+            f.write("Test time = %8.2f sec\n" % float(case.get("time") or "nan"))
+            f.write("----------------------------------------------------------\n")
+            f.write(verdicts.get(case.get("status"), "Test Failed.") + "\n")
+            count += 1
+    return count
+
+
 def run_command(name, command, cwd, status_path, log_path, env_extra=None, accept=(0,)):
     """A bench or another plain command: pass when its exit code is in `accept`."""
     rc, timed_out, output, seconds = _execute(command, cwd, env_extra or {}, 0, log_path)

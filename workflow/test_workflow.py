@@ -139,6 +139,18 @@ def main():
     check(logs == {"settling_disk_100_run": "pass", "settling_disk_check": "pass", "dkt_two_disks_run_160": "FAIL",
                    "dkt_two_disks_check_160": "skipped"} or logs.get("dkt_two_disks_run_160") == "FAIL"
           and logs.get("settling_disk_check") == "pass", "the report reads the runner's logs: %s" % logs)
+    # The verification job's verdicts come from ctest's JUnit file, in LastTest.log's layout.
+    junit = os.path.join(work, "verification_junit.xml")
+    with open(junit, "w") as f:
+        f.write('<?xml version="1.0"?>\n<testsuite tests="3">\n'
+                '<testcase name="test_a" time="1.5" status="run"><system-out>ok</system-out></testcase>\n'
+                '<testcase name="test_b" time="0.25" status="fail"><failure message="Failed"/></testcase>\n'
+                '<testcase name="test_c" time="0" status="notrun"/>\n</testsuite>\n')
+    n = runner.junit_to_ctest_log(junit, os.path.join(build, "Testing", "Temporary", "LastTest_verification.log"))
+    read = {t["name"]: (t["status"], t["seconds"]) for t in report_data.read_ctest_logs(build)}
+    check(n == 3 and read.get("test_a") == ("pass", 1.5) and read.get("test_b") == ("FAIL", 0.25)
+          and read.get("test_c", ("?",))[0] == "skipped",
+          "the verification's JUnit verdicts reach the report's reader: %s" % {k: read.get(k) for k in ("test_a", "test_b", "test_c")})
 
     # -- collect and the report's figure
     pts = []

@@ -7,6 +7,10 @@
 
 namespace ibms {
 
+// The steps of docs/method.md §7 by the same names: schedules (1), predictor (2, the fluid's part),
+// projection (3), bodies (6); ib_forcing is the immersed-boundary work of steps 2 and 4 (the
+// prediction's force, the slip and its corrections); the clock (5) is not timed; diagnostics and
+// output follow the step.
 // `contacts` (DEM forces incl. the CDS pair search, once per solid sub-step) runs inside `bodies`,
 // so its time is also part of the bodies time.
 enum class Stage { schedules, predictor, ib_forcing, projection, bodies, diagnostics, output, contacts, count };

@@ -26,7 +26,7 @@ BOOST_AUTO_TEST_CASE(square_cells_take_the_potential_kernels_values) {
   BOOST_TEST(g(0, -1) / (h * h) == 0.25, boost::test_tools::tolerance(1e-8));
   BOOST_TEST(g(1, 1) / (h * h) == 1.0 / pi, boost::test_tools::tolerance(1e-8));
   const double gamma = 0.57721566490153286;
-  for (const auto [m, n] : {std::pair{40, 0}, std::pair{30, 30}, std::pair{60, 17}}) {
+  for (const auto& [m, n] : {std::pair{40, 0}, std::pair{30, 30}, std::pair{60, 17}}) {
     const double r = std::hypot(m, n);
     const double far = (std::log(r) + gamma + 1.5 * std::log(2.0)) / (2.0 * pi);
     BOOST_TEST_MESSAGE("(" << m << ", " << n << "): " << g(m, n) / (h * h) << " against " << far);
