@@ -191,6 +191,23 @@ def grids_text(params, rows):
     return ("$D/h$ = " + ", ".join(sorted(found, key=float))) if found else "--"
 
 
+def grid_statement(params):
+    """What the grids this level ran allow: one grid (no estimate), two (a difference only), or
+    three and more (orders and GCIs, in the results, where the sequence converges)."""
+    grids = sorted({(p["nx"], p["ny"]) for p in params if p["nx"] and p["ny"]}, key=lambda g: g[0] * g[1])
+    if not grids:
+        return None
+    if len(grids) == 1:
+        return ("One grid (%d$\\times$%d): no grid study and no GCI at this level; the case README gives what "
+                "is known beyond it (finer grids at the paper level, or why there are none)." % grids[0])
+    if len(grids) == 2:
+        return ("Two grids (%s): their difference only; an observed order and a GCI need three." %
+                ", ".join("%d$\\times$%d" % g for g in grids))
+    return ("%d grids (%s): observed orders, Richardson values and GCIs (Roache %s) in the results above where "
+            "the sequence converges (none where it does not)." %
+            (len(grids), ", ".join("%d$\\times$%d" % g for g in grids), cases_mod.cite("roache1994")))
+
+
 # ---------------------------------------------------------------- title and page 1
 def title_block(out, env, build):
     get = dict(env)
@@ -550,6 +567,9 @@ def case_section(out, case, meta, build, source, judged, params, fig_dir):
     if summary:
         out.append(r"\noindent{\small\emph{From validation/%s/README.md:} %s}" % (esc(case), esc(summary)) + "\n")
     parameter_table(out, params)
+    statement = grid_statement(params)
+    if statement:
+        out.append(r"\noindent\textbf{Numerical uncertainty at this level.} " + statement + "\n")
     if not c:
         out.append(r"\emph{Not run: no lines for this case in \texttt{validation/results.csv}.}" + "\n")
     case_dir = os.path.join(build, "validation", case)

@@ -297,13 +297,19 @@ def _settling_speed(ctx, m):
     grid = float(m.group("grid"))
     if abs(grid - ctx["finest"].get(ctx["row_case"], -1)) > 1e-6:
         return None, "target applies at the finest grid"
+    # The published figure with its stated uncertainty (Wan & Turek's curve, read to +-0.05 cm/s),
+    # not the case check's own 3 % (case_criteria.hpp), which the ctest gate keeps.
     ref = ctx["refs"].get("settling_disk", {}).get("max_settling_speed")
-    tol = ctx["crit"].get("settling_speed_tolerance")
-    if not ref or tol is None:
+    if not ref:
         return None, None
-    v = ref["value"]
-    return Target("band", lo=v * (1 - tol), hi=v * (1 + tol), unit=" cm/s", reference=v,
-                  source="%.3g\\,\\%% of %s cm/s %s (case\\_criteria.hpp)" % (100 * tol, num(v), cite("wan2006"))), None
+    v, u = ref["value"], ref.get("reading_uncertainty", 0.0)
+    fine = ctx["refs"].get("settling_disk", {}).get("max_settling_speed_glowinski", {}).get("value")
+    return Target("band", lo=v - u, hi=v + u, unit=" cm/s", explicit=False, published=True, reference=v,
+                  source="%s $\\pm$ %s cm/s: the reading uncertainty of %s's curve%s; the ctest check's own "
+                         "limit is 3\\,\\%% (case\\_criteria.hpp)"
+                         % (num(v), num(u), cite("wan2006"),
+                            (" (Glowinski et al.'s fine meshes: %s cm/s %s)" % (num(fine), cite("glowinski2001")))
+                            if fine else "")), None
 
 
 # (case folder, regex on the metric, rule(ctx, match) -> (Target or None, note)). Only `info`
@@ -333,15 +339,21 @@ CAUSES = [
      "Under the papers' coupling the slip left at the end of the step and, on the collocated grid, the momentum "
      "interpolation's flux through the body, proportional to $\\Delta t$, raise max $c_D$ by 11--12\\,\\% on every "
      "grid. The shipped scene holds no-slip on the face velocities with the cells forced by the face mean "
-     "(\\texttt{ibm.coupling = \"no\\_slip\"}, \\texttt{constrained\\_velocity = \"faces\"}): max $c_D$ $-1.6$\\,\\% "
-     "at $D/h=20$ and $+0.17$\\,\\% at 40, moving by $-0.014$\\,\\% from CFL 0.5 to 0.125 (README)."),
+     "(\\texttt{ibm.coupling = \"no\\_slip\"}, \\texttt{constrained\\_velocity = \"faces\"}): max $c_D$ 3.2499 "
+     "at $D/h=20$ and 3.2403 at 40, 0.3\\,\\% and 0.01\\,\\% above the published upper bound 3.24, moving by "
+     "$+0.07$\\,\\% from CFL 0.5 to 0.125; the cause of the excess is not established (README)."),
     ("dfg_cylinder_2d1", r"^drag_coefficient at",
      "The diffuse interface's body acts about $0.285h$ larger than its rim; the shipped scene retracts the markers "
      "by $0.25h$ under the no-slip coupling ($+0.79$, $+0.42$, $+0.38$\\,\\% at $D/h = 20, 30, 40$); the papers' "
      "coupling converges at first order and reaches 1\\,\\% only from $D/h = 60$ (README)."),
-    ("dfg_cylinder_2d", r"lift_coefficient",
-     "$c_L$ is a small asymmetry of the flow that the smeared interface does not resolve at these grids "
-     "(README)."),
+    ("dfg_cylinder_2d2", r"lift_coefficient",
+     "Max $c_L$ is not converged in the time step under the face constraint: 0.9725, 0.9779, 0.9863, 0.9986 at "
+     "\\texttt{run.cfl} 0.5, 0.25, 0.125, 0.0625 ($D/h=20$), each halving adding more than the one before, and "
+     "the grids do not reduce the deficit at the shipped CFL (0.9725, 0.9713, 0.9735 at $D/h = 20, 30, 40$); the "
+     "mechanism is not established (README, docs/method.md \\S3.7)."),
+    ("dfg_cylinder_2d1", r"lift_coefficient",
+     "$c_L$ at Re 20 is a small asymmetry of the flow (about 1\\,\\% of $c_D$) that the smeared interface does "
+     "not resolve at these grids (README)."),
     ("dfg_cylinder_2d", r"pressure_difference",
      "$\\Delta p$ is extrapolated through the smeared pressure jump of the diffuse boundary (README)."),
     ("dfg_cylinder_2d", r"observed order",
@@ -353,10 +365,11 @@ CAUSES = [
      "(README)."),
     ("settling_disk", r"Richardson|observed order",
      "Recorded, not gated: under the end-of-step coupling with the markers retracted by $0.3h$ the diffuse "
-     "interface's first-order term is cancelled and three grids give no rate (observed order 3.1, value "
-     "5.579\\,cm/s); the papers' coupling with the $\\nu\\Delta t/h^2$ cap and the face constraint with and "
-     "without $0.25h$ retraction extrapolate to 5.588--5.593\\,cm/s from both sides, so it is not the coupling; "
-     "Glowinski et al.'s own cited fine-mesh values extrapolate to 5.578\\,cm/s (README)."),
+     "interface's first-order term is cancelled, and three grids give an order above the scheme's (the wheel's "
+     "and the rigid disk's differ, see the results above), so the Richardson value and the GCI computed with it "
+     "understate the uncertainty; the papers' coupling with the $\\nu\\Delta t/h^2$ cap and the face constraint "
+     "with and without $0.25h$ retraction extrapolate to 5.588--5.593\\,cm/s from both sides, so it is not the "
+     "coupling; Glowinski et al.'s own cited fine-mesh values extrapolate to 5.578\\,cm/s (README)."),
 ]
 
 # Lines compared with ibms itself inside a case compared with the literature.
@@ -426,10 +439,17 @@ def _judge_row(r, row_case, folder, crit, refs, finest):
         if out["verdict"] == "fail":
             out["severity"] = max(out["severity"], 1e9)
             return out
-        # A passing check on a quantity with published bounds: judged on the bounds.
-        target = _rule_target(dict(folder=folder, row_case=row_case, crit=crit, refs=refs, finest=finest), r)[0]
+        # A passing check on a quantity with published bounds: judged on the bounds; on a grid
+        # coarser than the finest that ran, not judged (the published target applies at the
+        # finest), the check's own pass kept as a note, not counted as a pass.
+        target, note = _rule_target(dict(folder=folder, row_case=row_case, crit=crit, refs=refs, finest=finest), r)
         if target is not None and target.published:
             _judge_on(out, target, measured, "%s; ibms's %s" % (target.text(), out["target_text"]))
+        elif note and out["verdict"] == "pass":
+            out["verdict"] = "info"
+            out["severity"] = 0.0
+            out["note"] = note
+            out["target_text"] = "%s (ibms's %s passes)" % (esc(note), out["target_text"])
         return out
     out["gate"] = "report"
     ctx = dict(folder=folder, row_case=row_case, crit=crit, refs=refs, finest=finest)
