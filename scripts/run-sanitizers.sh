@@ -22,10 +22,16 @@ built=$SECONDS
 echo "run-sanitizers: ASan+UBSan build ($jobs jobs) took $((built - start)) s"
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
-(cd "$asan" && OMP_NUM_THREADS=1 ctest -L "unit|convergence" --output-on-failure -j"$jobs")
+# Every test's output in ctest's JUnit file: Testing/Temporary/LastTest.log cannot serve, a test
+# that lists the tests (workflow_helpers runs `ctest --show-only`) rewrites it meanwhile.
+junit=$(realpath -m "$asan")/sanitizer_tests.xml
+(cd "$asan" && OMP_NUM_THREADS=1 ctest -L "unit|convergence" --output-on-failure -j"$jobs" --output-junit "$junit")
 unset ASAN_OPTIONS UBSAN_OPTIONS
 # A report from a process whose exit code a test does not check would not fail that test: count them.
-reports=$(grep -c -E "ERROR: (AddressSanitizer|LeakSanitizer)|runtime error:" "$asan/Testing/Temporary/LastTest.log" || true)
+reports=$(grep -c -E "ERROR: (AddressSanitizer|LeakSanitizer)|runtime error:" "$junit" || true)
+outputs=$(grep -c "<testcase" "$junit" || true)
+echo "run-sanitizers: $outputs tests' output searched"
+if ((outputs == 0)); then echo "run-sanitizers: no test output to search"; exit 1; fi
 echo "run-sanitizers: sanitizer reports in the test log: $reports; tests took $((SECONDS - built)) s"
 if ((reports > 0)); then exit 1; fi
 
