@@ -431,8 +431,9 @@ def verification_section(out, conv, tests, fig_dir):
     out.append("Each table is written by a convergence test (\\texttt{verification/common/convergence.hpp}) "
                "with the test's claim: the formal order of the scheme and the band the test asserts the "
                "fitted order in. The order is the least-squares slope of $\\log e$ against $\\log h$ (or "
-               "$\\log\\Delta t$) over the finest three levels with its standard error (the tests also "
-               "require the standard error $\\le 0.1$); the report fits nothing. Verdict: \\emph{pass} "
+               "$\\log\\Delta t$) over the finest three levels with its standard error (most of the order tests "
+               "also require the standard error $\\le 0.1$, \\texttt{max\\_order\\_standard\\_error}; "
+               "a table whose test does not shows a larger one); the report fits nothing. Verdict: \\emph{pass} "
                "inside the asserted band, \\emph{FAIL} outside; \\emph{info} where the test asserts no "
                "order (it asserts something else, e.g. a decreasing difference).\n")
     rows, studies = [], OrderedDict()

@@ -5,13 +5,15 @@ import os
 _SPECIAL = {"\\": r"\textbackslash{}", "&": r"\&", "%": r"\%", "$": r"\$", "#": r"\#",
             "_": r"\_", "{": r"\{", "}": r"\}", "~": r"\textasciitilde{}",
             "^": r"\textasciicircum{}", "<": r"\textless{}", ">": r"\textgreater{}",
-            "|": r"\textbar{}", '"': r"\textquotedbl{}"}
+            "|": r"\textbar{}", '"': r"\textquotedbl{}",
+            # a hyphen stays one ("--set" is no en dash), a backtick no opening quote
+            "-": "-{}", "`": r"\textasciigrave{}"}
 _UNICODE = {"≤": r"$\le$", "≥": r"$\ge$", "±": r"$\pm$", "°": r"$^\circ$", "×": r"$\times$",
             "µ": r"$\mu$", "μ": r"$\mu$", "²": r"$^2$", "³": r"$^3$", "–": "--", "—": "---",
             "−": "-", "‘": "`", "’": "'", "“": "``", "”": "''", "·": r"$\cdot$", "≈": r"$\approx$",
             "∞": r"$\infty$", "Δ": r"$\Delta$", "ρ": r"$\rho$", "ν": r"$\nu$", "§": r"\S{}",
             "∈": r"$\in$", "→": r"$\to$", "⁻": r"$^-$", "¹": r"$^1$", "⁴": r"$^4$", "⁷": r"$^7$", "⁶": r"$^6$", "⁰": r"$^0$",
-            "√": r"$\surd$", "ζ": r"$\zeta$", "ω": r"$\omega$", "δ": r"$\delta$",
+            "√": r"$\surd$", "ζ": r"$\zeta$", "ω": r"$\omega$", "δ": r"$\delta$", "π": r"$\pi$",
             "é": r"\'e", "ü": r"\"u", "ö": r"\"o", "ä": r"\"a", "…": "..."}
 
 

@@ -54,11 +54,26 @@ def test_sources(name, command, source):
         program = os.path.basename(command[0])
         found += glob.glob(os.path.join(source, "verification", "**", program + ".cpp"), recursive=True)
         found += glob.glob(os.path.join(source, "bench", program + ".cpp"))
-        if program.endswith("_check"):
-            case_dir = os.path.join(source, "validation", "*")
-            found += [p for p in glob.glob(os.path.join(case_dir, "check.cpp"))
-                      if program.split("_")[0] in p]
+        found += validation_programs(source).get(program, [])
     return sorted(set(found))
+
+
+_programs = {}
+
+
+def validation_programs(source):
+    """program -> its source files, from the add_executable lines of validation/**/CMakeLists.txt
+    (a check program is named after no case folder in particular: cavity_check serves four)."""
+    if source not in _programs:
+        found = {}
+        for cmake in glob.glob(os.path.join(source, "validation", "**", "CMakeLists.txt"), recursive=True):
+            with open(cmake, encoding="utf-8", errors="replace") as f:
+                text = f.read()
+            for m in re.finditer(r"add_executable\(\s*(\w+)\s+([^)]*)\)", text):
+                found[m.group(1)] = [os.path.join(os.path.dirname(cmake), src) for src in m.group(2).split()
+                                     if src.endswith(".cpp")]
+        _programs[source] = found
+    return _programs[source]
 
 
 def first_claim(paths):
@@ -78,10 +93,11 @@ def first_claim(paths):
             if not m:
                 break
             text.append(m.group(2))
-        claim = " ".join(text).strip()
+        claim = re.sub(r"\s+", " ", " ".join(text)).strip()
         claim = re.sub(r"^Claims?(,? labels? \w+)?( \([^)]*\))?:\s*(- )?", "", claim)
         if claim:
-            sentence = re.split(r"(?<=[.;])\s", claim, 1)[0]
+            # the first full stop or semicolon after a word, not after an item number ("1.")
+            sentence = re.split(r"(?<=[^0-9\s][.;])\s", claim, 1)[0]
             return sentence if len(sentence) <= 220 else sentence[:217].rsplit(" ", 1)[0] + " ..."
     return ""
 
