@@ -78,6 +78,11 @@ BIBLIOGRAPHY = OrderedDict([
                          "\\texttt{bench/reference/basilisk\\_cavity.csv})."),
     ("kempe2012", "T. Kempe, J. Fr\\\"ohlich. An improved immersed boundary method with direct forcing for the "
                   "simulation of particle laden flows. J. Comput. Phys. 231 (2012) 3663--3684."),
+    ("stokes1851", "G. G. Stokes. On the effect of the internal friction of fluids on the motion of "
+                   "pendulums. Trans. Cambridge Philos. Soc. 9 (1851) 8--106 (the oscillating cylinder of the "
+                   "verification tests)."),
+    ("openlb", "M. J. Krause et al. OpenLB -- open source lattice Boltzmann code. Comput. Math. Appl. 81 "
+               "(2021) 258--288; its example \\texttt{dkt2d}, whose start the DKT case follows."),
     ("breugem2012", "W.-P. Breugem. A second-order accurate immersed boundary method for fully resolved "
                     "simulations of particle-laden flows. J. Comput. Phys. 231 (2012) 4469--4498."),
 ])

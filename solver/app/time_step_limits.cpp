@@ -24,12 +24,15 @@ double grid_spacing(const Scene& scene) {
 
 std::vector<TimeStepLimit> time_step_limits(const Scene& scene, const Simulation& sim) {
   std::vector<TimeStepLimit> limits;
-  const double h = grid_spacing(scene), speed = sim.speed_scale();
+  // The run's own limits at the first step (sim/time_step_limits.hpp), not derived again here.
+  const StepLimits run = step_limits(sim, scan_velocity(sim.grid(), sim.fluid()));
+  const double h = grid_spacing(scene);
   // Advective: dt max(|u|/dx + |v|/dy) <= 1 is the run's blow-up guard (run.max_cfl); the adaptive
   // step targets run.cfl of it, docs/method.md §2.3.
-  limits.push_back({"CFL (advective, |u| dt / h <= 1)", speed > 0 ? h / speed : HUGE_VAL, scene.run.cfl, false,
-                    speed > 0 ? fmt::format("h / U with U = {:.4g} (walls, inflows, body points at the start)", speed)
-                              : "no velocity scale before the run (fluid at rest): checked every step"});
+  limits.push_back({"CFL (advective, |u| dt / h <= 1)", run.rate > 0 ? 1.0 / run.rate : HUGE_VAL, scene.run.cfl, false,
+                    run.rate > 0 ? fmt::format("1 / max(|u|/dx + |v|/dy over the cells, U_walls / h) = 1 / {:.4g} "
+                                               "at the start", run.rate)
+                                 : "no velocity scale before the run (fluid at rest): checked every step"});
   const double nu = scene.fluid.kinematic_viscosity;
   if (scene.run.max_viscous_number > 0)
     limits.push_back({"viscous number (h^2 / nu)", nu > 0 ? h * h / nu : HUGE_VAL, scene.run.max_viscous_number, false,
@@ -40,13 +43,12 @@ std::vector<TimeStepLimit> time_step_limits(const Scene& scene, const Simulation
                                        : "not binding: Crank-Nicolson diffusion"});
   if (!sim.has_bodies()) return limits;
   // The speed the run's first step sees: prescribed bodies at their largest over that step.
-  const double t0 = sim.fluid().time;
-  const double body_speed = body_travel_speed(sim, t0, t0 + planned_time_step(sim));
   const double dx = sim.grid().dx();  // the run's marker travel is in cells of dx (bodies need dx = dy)
-  limits.push_back({"marker travel (h / max|U_body|)", body_speed > 0 ? dx / body_speed : HUGE_VAL,
+  limits.push_back({"marker travel (h / max|U_body|)", run.body_speed > 0 ? dx / run.body_speed : HUGE_VAL,
                     max_marker_travel_cells, false,
-                    body_speed > 0 ? fmt::format("fastest body point over the first step {:.4g}; adaptive runs check it every step", body_speed)
-                                   : "bodies start at rest: checked every step by the adaptive step"});
+                    run.body_speed > 0 ? fmt::format("fastest body point over the first step {:.4g}; adaptive runs "
+                                                     "check it every step", run.body_speed)
+                                       : "bodies start at rest: checked every step by the adaptive step"});
   for (std::size_t b = 0; b < sim.bodies().size(); ++b) {
     const MassSpringBody& body = sim.bodies()[b];
     if (body.kind != BodyKind::mass_spring) continue;  // rigid and prescribed bodies have no springs
@@ -121,12 +123,20 @@ std::string describe_time_step_limits(const Scene& scene, const Simulation& sim)
                           cfl, fixed ? "time_step" : "cfl");
   }
   if (sim.has_bodies()) {
+    // The springs' sub-step as the run takes it (group_substeps): bodies whose springs are implicit
+    // at this step (forced, or chosen by uses_implicit_springs) set none.
     double solid_substep = HUGE_VAL;
-    for (const MassSpringBody& body : sim.bodies()) solid_substep = std::min(solid_substep, stable_substep(body, 0.5));
+    for (const MassSpringBody& body : sim.bodies()) {
+      if (body.integrator == SpringIntegrator::implicit_euler) continue;
+      const double substep = stable_substep(body, 0.5);
+      if (std::isfinite(dt) && uses_implicit_springs(body, dt, substep)) continue;
+      solid_substep = std::min(solid_substep, substep);
+    }
     const double contact_limit =
         sim.has_contacts() && std::isfinite(dt) ? contact_substep(sim.contact_model().for_fluid_step(dt), sim.bodies())
                                                 : HUGE_VAL;
-    text += fmt::format("solid sub-step: springs {:.4g}{}\n", solid_substep,
+    text += fmt::format("solid sub-step: springs {}{}\n",
+                        std::isfinite(solid_substep) ? fmt::format("{:.4g}", solid_substep) : "none (no explicit springs)",
                         sim.has_contacts() ? fmt::format(", contacts {:.4g} (only while a contact is possible within "
                                                          "the step)", contact_limit)
                                            : "");

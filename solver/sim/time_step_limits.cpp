@@ -55,27 +55,37 @@ static double step_to_end(double limit, double previous, double time_left) {
   return time_left / std::ceil(time_left / limit);
 }
 
-double next_time_step(const Simulation& sim, const VelocityScan& scan) {
+StepLimits step_limits(const Simulation& sim, const VelocityScan& scan) {
   const RunSpec& run = sim.scene().run;
   const double time_left = run.end_time - sim.fluid().time;
-  const double previous = sim.fluid().time_step_prev;
-  if (run.time_step > 0.0) return step_to_end(run.time_step, previous, time_left);
+  StepLimits limits;
   // Moving walls and inflows set the velocity scale of a fluid at rest (lid-driven start).
   const double wall_speed = boundary_speed_scale(sim.scene().walls);
-  const double rate = std::max(scan.max_rate, wall_speed / std::min(sim.grid().dx(), sim.grid().dy()));
-  double dt = rate > 0.0 ? run.cfl / rate : run.max_time_step;
   const double h = std::min(sim.grid().dx(), sim.grid().dy());
-  dt = std::min({dt, viscous_time_step_limit(run, h, sim.fluid_solver().kinematic_viscosity()), run.max_time_step});
+  limits.rate = std::max(scan.max_rate, wall_speed / h);
+  limits.advective = limits.rate > 0.0 ? run.cfl / limits.rate : run.max_time_step;
+  limits.viscous = viscous_time_step_limit(run, h, sim.fluid_solver().kinematic_viscosity());
+  limits.max_time_step = run.max_time_step;
   if (sim.has_bodies()) {
     // The speed over the coming step: the bodies' points as they move now, and a prescribed body's
     // largest speed from its motion law over [t, t + dt] of the step the other limits allow (a
     // body that starts at rest sees the speed it is about to reach). With dt' <= dt the travel
     // dt' max_[t, t + dt'] |U| <= dt' max_[t, t + dt] |U| stays within the limit: one pass suffices.
+    const double dt = run.time_step > 0.0 ? run.time_step
+                                          : std::min({limits.advective, limits.viscous, limits.max_time_step});
     const double time = sim.fluid().time;
-    const double body_speed = body_travel_speed(sim, time, time + std::min(dt, time_left));
-    if (body_speed > 0.0) dt = std::min(dt, max_marker_travel_cells * sim.grid().dx() / body_speed);
+    limits.body_speed = body_travel_speed(sim, time, time + std::min(dt, time_left));
+    if (limits.body_speed > 0.0) limits.marker_travel = max_marker_travel_cells * sim.grid().dx() / limits.body_speed;
   }
-  return step_to_end(dt, previous, time_left);
+  return limits;
+}
+
+double next_time_step(const Simulation& sim, const VelocityScan& scan) {
+  const RunSpec& run = sim.scene().run;
+  const double time_left = run.end_time - sim.fluid().time;
+  const double previous = sim.fluid().time_step_prev;
+  if (run.time_step > 0.0) return step_to_end(run.time_step, previous, time_left);
+  return step_to_end(step_limits(sim, scan).adaptive(), previous, time_left);
 }
 
 double body_travel_speed(const Simulation& sim, double t0, double t1) {

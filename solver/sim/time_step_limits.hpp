@@ -2,6 +2,9 @@
 // the next step from the CFL number, the marker travel, the viscous number, run.max_time_step and
 // the approach to run.end_time. `ibms info` prints the limits it plans with.
 #pragma once
+#include <algorithm>
+#include <cmath>
+
 #include "sim/simulation.hpp"
 
 namespace ibms {
@@ -18,6 +21,24 @@ struct VelocityScan {
   double kinetic_energy = 0.0;   // E = sum |u|^2 dx dy / 2 [length^4/time^2 per unit density and depth]
 };
 VelocityScan scan_velocity(const Grid& grid, const FluidState& fluid);
+
+// The limits of the step as the run takes them (docs/method.md §7 step 7), computed once here for
+// next_time_step and for `ibms info`, which prints them.
+struct StepLimits {
+  double rate = 0.0;                // max(scan's |u|/dx + |v|/dy, U_walls / min(dx, dy)) [1/time]
+  double advective = HUGE_VAL;      // run.cfl / rate; run.max_time_step while rate is 0 [time]
+  double viscous = HUGE_VAL;        // viscous_time_step_limit [time]
+  double max_time_step = HUGE_VAL;  // run.max_time_step [time]
+  double body_speed = 0.0;          // body_travel_speed over the coming step (below) [length/time]
+  double marker_travel = HUGE_VAL;  // max_marker_travel_cells dx / body_speed [time]
+  double adaptive() const {         // the adaptive step before the approach to end_time [time]
+    return std::min(std::min({advective, viscous, max_time_step}), marker_travel);
+  }
+};
+// The coming step is the fixed run.time_step, or the adaptive one the other limits allow; the
+// bodies' speed is taken over it (a prescribed body at its largest from its motion law), both cut
+// at the time left to run.end_time.
+StepLimits step_limits(const Simulation& sim, const VelocityScan& scan);
 
 // The time step for the next step: fixed, or cfl / max rate (with moving walls counted), capped
 // by run.max_viscous_number and run.max_time_step, and, with bodies, marker travel <= 0.5 h over

@@ -170,7 +170,7 @@ int main(int argc, char** argv) {
         const bool finest = g + 1 == grids.size();
         bool check = false;
         double tolerance = NAN;
-        if ((finest && gated("drag_finest") || gated("drag_every")) && mode == "steady" && keys[q] == "drag_coefficient") { check = true; tolerance = criteria::dfg_steady_drag_tolerance; }
+        if (((finest && gated("drag_finest")) || gated("drag_every")) && mode == "steady" && keys[q] == "drag_coefficient") { check = true; tolerance = criteria::dfg_steady_drag_tolerance; }
         if (finest && mode == "periodic" && keys[q] == "strouhal_number" && gated("strouhal")) { check = true; tolerance = criteria::dfg_strouhal_tolerance; }
         if (finest && mode == "periodic" && keys[q] == "drag_coefficient_max" && gated("drag_max")) { check = true; tolerance = criteria::dfg_drag_max_tolerance; }
         ok = report(name, label, figures[g][q], ref.at(keys[q]), tolerance, check) && ok;

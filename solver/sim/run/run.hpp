@@ -16,7 +16,7 @@ namespace ibms {
 struct RunOptions {
   std::string output_path;   // HDF5 file; empty: scene.output.file
   bool quiet = false;        // no progress line
-  std::string restart_file;  // continue from this file's /checkpoint; empty: start at t = 0
+  std::string restart_file{};  // continue from this file's /checkpoint; empty: start at t = 0
   const volatile std::sig_atomic_t* stop_requested = nullptr;  // non-zero: checkpoint and stop
   bool govern_threads = false;  // the thread count is the default: a ThreadGovernor may use one thread
 };
