@@ -66,7 +66,8 @@ std::string describe_scene(const Scene& scene) {
       text += fmt::format("  body {}: {}: {}\n", b, scene_schema::name_of(spec.kind), cost);
     }
   }
-  text += "\n" + describe_time_step_limits(scene, sim);
+  text += '\n';
+  text += describe_time_step_limits(scene, sim);
   if (std::isfinite(dt) && dt > 0) {
     const double steps = std::ceil(scene.run.end_time / dt);
     text += fmt::format("estimated steps to end_time {:.6g}: {:.0f}{}\n", scene.run.end_time, steps,
