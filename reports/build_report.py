@@ -335,7 +335,7 @@ def quantities_summary_section(out, order, metas, judged, fig_dir):
                "reference $v$ is drawn as $v(1+x)$. Below, the bias (mean of prediction / reference $-1$) and "
                "its scatter (standard deviation) per class of evidence." % len(points))
     import matplotlib.pyplot as plt
-    fig, ax = plt.subplots(figsize=(5.2, 4.4))
+    fig, (ax, dax) = plt.subplots(1, 2, figsize=(7.2, 3.6), gridspec_kw=dict(width_ratios=[1, 1.3]))
     colours = {"pass": "tab:green", "miss": "tab:orange", "fail": "tab:red"}
     for case, metric, v, y, lo, hi, verdict in points:
         ax.errorbar([v], [y], xerr=[[max(v - lo, 0.0)], [max(hi - v, 0.0)]], fmt="o", ms=4,
@@ -347,30 +347,57 @@ def quantities_summary_section(out, order, metas, judged, fig_dir):
         ax.plot([lo_v, hi_v], [f * lo_v, f * hi_v], "k:", lw=0.6)
     ax.set_xscale("log")
     ax.set_yscale("log")
-    ax.set_xlabel("reference value (its units)")
-    ax.set_ylabel("ibms (same units)")
+    ax.set_xlabel("reference value (its units)", fontsize=8)
+    ax.set_ylabel("ibms (same units)", fontsize=8)
     for verdict, colour in colours.items():
         ax.plot([], [], "o", color=colour, label=verdict)
     ax.plot([], [], "k:", label="$\\pm$10 %")
-    ax.legend(loc="upper left", fontsize=8)
-    ax.tick_params(labelsize=8)
+    ax.legend(loc="upper left", fontsize=7)
+    ax.tick_params(labelsize=7)
+    # The same figures as deviations from their references, numbered as in the table below, the
+    # target's band as the bar: per-cent misses that the log-log panel cannot show.
+    for k, (case, metric, v, y, lo, hi, verdict) in enumerate(points, 1):
+        if v == 0:
+            continue
+        d, dlo, dhi = 100 * (y / v - 1), 100 * (lo / v - 1), 100 * (hi / v - 1)
+        dax.errorbar([k], [d], yerr=[[max(d - dlo, 0.0)], [max(dhi - d, 0.0)]], fmt="none", ecolor="0.6",
+                     elinewidth=3, alpha=0.6)
+        dax.plot([k], [d], "o", ms=4, color=colours.get(verdict, "grey"))
+    dax.axhline(0.0, color="k", lw=0.6)
+    dax.set_xticks(range(1, len(points) + 1))
+    dax.set_xlabel("figure (table below)", fontsize=8)
+    dax.set_ylabel("ibms / reference $-$ 1 [%] (bar: target band)", fontsize=8)
+    dax.set_yscale("symlog", linthresh=1.0)
+    dax.tick_params(labelsize=7)
+    fig.tight_layout()
     path = os.path.join(fig_dir, "quantities_summary.pdf")
     fig.savefig(path)
     plt.close(fig)
-    out.append(figure(path, "Every quantity with a reference value against it (green pass, orange miss, red "
-                            "FAIL; bars: the target's band; dotted: $\\pm$10\\,\\%).", height=0.4))
+    out.append(figure(path, "Left: every quantity with a reference value against it (green pass, orange miss, red "
+                            "FAIL; bars: the target's band; dotted: $\\pm$10\\,\\%). Right: the same figures as "
+                            "per-cent deviations from their references (linear within $\\pm$1\\,\\%, logarithmic "
+                            "beyond), grey bars the target bands, numbered as in the table below.", height=0.28))
+    out.append(longtable("rlp{6.4cm}rrrl", ["\\#", "case", "figure", "reference", "ibms", "deviation", "verdict"],
+                         [[str(k), tt(case), esc(metric), num(v, 5), num(y, 5),
+                           "%+.3g\\,\\%%" % (100 * (y / v - 1)) if v else "--", cases_mod.verdict_cell(verdict)]
+                          for k, (case, metric, v, y, lo, hi, verdict) in enumerate(points, 1)],
+                         caption="The figures of the summary plot.", size="scriptsize"))
     rows = []
     for key, name in EVIDENCE_CLASSES:
         dev = [p[3] / p[2] - 1.0 for p in points
                if p[2] != 0 and evidence_class(metas.get(p[0], dict(mark="own", detail=""))) == key]
         if not dev:
+            rows.append([esc(name), "0", "--", "--"])
             continue
         mean = float(np.mean(dev))
         spread = float(np.std(dev)) if len(dev) > 1 else 0.0
         rows.append([esc(name), str(len(dev)), cases_mod.fmt_value(mean, True, True),
                      cases_mod.fmt_value(spread, True)])
     out.append(r"{\fontsize{8}{9}\selectfont" + "\n" +
-               longtable("lrrr", ["class of evidence", "figures", "bias", "scatter"], rows, size=None) + "}")
+               longtable("lrrr", ["class of evidence", "figures with a reference value", "bias", "scatter"], rows,
+                         size=None,
+                         caption="Bias (mean of ibms / reference $-$ 1) and scatter per class; a class without "
+                                 "figures judges differences or claims, not values (the tables of \\S1).") + "}")
 
 
 def checks_by_case_section(out, order, metas, judged):
