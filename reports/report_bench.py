@@ -515,7 +515,8 @@ def run_times_section(out, tests):
     """Wall time per validation case: the sum of its ctest runs and check."""
     cases = OrderedDict()
     for t in tests:
-        m = re.match(r"(.+?)_(run(_\w+)?|check(_\w+)?)$", t["name"])
+        # <case>[_<grid>]_run[_...], _check[_...], _gate[_...], _compare: one row per case, its grids together
+        m = re.match(r"(.+?)(?:_\d+)?_(run(_\w+)?|check(_\w+)?|gate(_\w+)?|compare)$", t["name"])
         if not m or math.isnan(t["seconds"]):
             continue
         c = cases.setdefault(m.group(1), [0.0, 0, True])
