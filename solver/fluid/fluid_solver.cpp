@@ -396,14 +396,10 @@ ProjectionStats FluidSolver::project(FluidState& state, double dt, const FaceFor
   return stats;
 }
 
-void FluidSolver::homogeneous_face_projection(double dt, const FaceField& face_increment_x,
-                                              const FaceField& face_increment_y) {
-  project_faces(dt, face_increment_x, face_increment_y);
-}
-
 // star_face_ = the given face increments on the corrected faces (0 on faces with a given flux),
 // then projected (project_star_faces).
-void FluidSolver::project_faces(double dt, const FaceField& face_increment_x, const FaceField& face_increment_y) {
+void FluidSolver::homogeneous_face_projection(double dt, const FaceField& face_increment_x,
+                                              const FaceField& face_increment_y) {
   const FaceRange faces = corrected_faces();
   star_face_x_.fill(0.0);  // faces with a given flux: no increment
   star_face_y_.fill(0.0);
@@ -441,7 +437,7 @@ void FluidSolver::homogeneous_projection(double dt, CellField& increment_x, Cell
   // homogeneous data (no flux through the faces with a given flux; p^n's gradient is in P(u*)).
   const bool balanced = face_increment_x != nullptr && face_increment_y != nullptr;
   if (balanced) {
-    project_faces(dt, *face_increment_x, *face_increment_y);
+    homogeneous_face_projection(dt, *face_increment_x, *face_increment_y);
   } else {
     phi_ = increment_x;
     work_ = increment_y;

@@ -192,8 +192,6 @@ class FluidSolver {
   // wall cells of out_x, out_y (FluidSchemes::quadratic_wall).
   void add_wall_closure(const CellField& u, const CellField& v, double t, double scale, CellField& out_x,
                         CellField& out_y) const;
-  // star_face_ = the face increments on the corrected faces, then project_star_faces.
-  void project_faces(double dt, const FaceField& face_increment_x, const FaceField& face_increment_y);
   // star_face_ -= dt G_f phi with L phi = D star_face_ / dt (phi in phi_).
   void project_star_faces(double dt);
   std::unique_ptr<SpectralSolver> poisson_;    // Neumann/periodic

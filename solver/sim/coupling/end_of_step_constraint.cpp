@@ -57,7 +57,7 @@ EndOfStepConstraint::EndOfStepConstraint(const Scene& scene, const Grid& grid, K
   // The blocks' drift: as given, or "auto" from the blocks' sizes against the grid's (marker_preconditioner.hpp).
   double block_unknowns_squared = 0.0;
   for (std::size_t b = 0; b < bodies.size(); ++b)
-    if (markers[b].given_motion || markers[b].response_mass > 0.0) {
+    if (may_take_own_operator(markers[b])) {
       const double n = 2.0 * static_cast<double>(markers[b].marker.capacity());
       block_unknowns_squared += n * n;
     }
@@ -208,7 +208,7 @@ void EndOfStepConstraint::write_checkpoint(const std::vector<BodyCoupling>& mark
     for (const Vec2& force : markers[b].previous_force) forces.insert(forces.end(), {force[0], force[1]});
     append_body_array(arrays, "bodies_previous_force", b, forces);
     // What the body's own preconditioner block was built from, so that a restart builds the block
-    // in use (it is kept while the markers drift less than exact_block_drift cells).
+    // in use (it is kept while the markers drift less than ibm.preconditioner_drift cells).
     const ExactBlockInputs& inputs = arrays_.preconditioner.exact_inputs(b);
     std::vector<double> block_markers, block_arms;
     for (const Vec2& x : inputs.marker) block_markers.insert(block_markers.end(), {x[0], x[1]});

@@ -21,7 +21,7 @@ void MarkerPreconditioner::reserve(const std::vector<BodyCoupling>& coupling, do
       blocks_[b].factor[d].compute(Eigen::MatrixXd::Identity(n, n));
     }
     blocks_[b].rhs.resize(n);
-    if (coupling[b].given_motion || coupling[b].response_mass > 0.0) {  // may take its own operator
+    if (may_take_own_operator(coupling[b])) {
       blocks_[b].local.resize(2 * n, 2 * n);
       blocks_[b].local_factor.compute(Eigen::MatrixXd::Identity(2 * n, 2 * n));
       ExactBlockInputs& inputs = blocks_[b].inputs;
@@ -93,7 +93,7 @@ bool MarkerPreconditioner::factorise(const Grid& grid, KernelKind kernel, bool o
       block.leak = 0.0;
       continue;
     }
-    block.exact = on_faces && (c.given_motion || rigid) && n > 0;
+    block.exact = on_faces && may_take_own_operator(c) && n > 0;
     if (block.exact) {
       block.leak = 0.0;
       ExactBlockInputs& inputs = block.inputs;

@@ -49,6 +49,10 @@
 
 namespace ibms {
 
+// Whether a body may take its own operator (faces): prescribed, or rigid and responding in the
+// marker system (response_mass set).
+inline bool may_take_own_operator(const BodyCoupling& c) { return c.given_motion || c.response_mass > 0.0; }
+
 // ibm.preconditioner_drift = "auto": a moving body's block costs about (2 n_b)^2 times a kernel
 // stencil's work to build, a product about a Poisson solve on the grid; a block kept within a tenth
 // of a cell adds one or two products a step. So the blocks are kept within 0.1 cell when the sum over

@@ -69,17 +69,23 @@ NoSlipResult hold_no_slip(const Grid& grid, KernelKind kernel, const WallVelocit
   for (BodyCoupling& c : coupling) map_face_stencils(grid, kernel, c.marker, c.face_stencils);
   const int m_max = NoSlipWorkspace::restart;
   const WallVelocities at_rest{};  // the increments have homogeneous wall data
-  // dt S dF onto the cells and the faces, dt dF in pass_increment.
+  // dt S_f dF onto the faces, dt dF in pass_increment.
+  const auto spread_face_increment = [&]() {
+    face_increment_x.fill(0.0);
+    face_increment_y.fill(0.0);
+    for (BodyCoupling& c : coupling)
+      spread_to_faces(grid, c.face_stencils, c.pass_increment, c.marker_volume, face_increment_x, face_increment_y);
+  };
+  // ... and onto the cells: by the kernel, or the faces' mean (cells_from_faces).
   const auto spread_increment = [&]() {
     increment_x.fill(0.0);
     increment_y.fill(0.0);
-    face_increment_x.fill(0.0);
-    face_increment_y.fill(0.0);
-    for (BodyCoupling& c : coupling) {
-      if (!cells_from_faces) spread(grid, kernel, c.marker, c.pass_increment, c.marker_volume, increment_x, increment_y);
-      spread_to_faces(grid, c.face_stencils, c.pass_increment, c.marker_volume, face_increment_x, face_increment_y);
-    }
-    if (cells_from_faces) average_faces_to_cells(grid, face_increment_x, face_increment_y, increment_x, increment_y);
+    spread_face_increment();
+    if (cells_from_faces)
+      average_faces_to_cells(grid, face_increment_x, face_increment_y, increment_x, increment_y);
+    else
+      for (BodyCoupling& c : coupling)
+        spread(grid, kernel, c.marker, c.pass_increment, c.marker_volume, increment_x, increment_y);
   };
   // body_velocity_change of the responding bodies from the forces so far (pass_force: scratch).
   const auto update_body_change = [&]() {
@@ -100,10 +106,7 @@ NoSlipResult hold_no_slip(const Grid& grid, KernelKind kernel, const WallVelocit
   const auto product = [&](const double* x, double* y) {
     scatter(x, coupling);
     if (faces_only) {
-      face_increment_x.fill(0.0);
-      face_increment_y.fill(0.0);
-      for (BodyCoupling& c : coupling)
-        spread_to_faces(grid, c.face_stencils, c.pass_increment, c.marker_volume, face_increment_x, face_increment_y);
+      spread_face_increment();
       solver.homogeneous_face_projection(dt, face_increment_x, face_increment_y);
     } else {
       spread_increment();
