@@ -132,14 +132,12 @@ def junit_to_ctest_log(junit_path, log_path):
     ctest's own LastTest.log cannot serve: any `ctest` started in the build directory meanwhile
     (a test that lists the tests, `ctest --show-only`) rewrites it. Returns the number of tests."""
     import xml.etree.ElementTree as ET
-    cases = ET.parse(junit_path).getroot().iter("testcase")
+    cases = list(ET.parse(junit_path).getroot().iter("testcase"))
     verdicts = {"run": "Test Passed.", "fail": "Test Failed.", "disabled": "Test Not Run.",
                 "notrun": "Test Not Run."}
-    count = 0
     with open(log_path, "w") as f:
         f.write("ctest --output-junit %s, in LastTest.log's layout (workflow/runner.py)\n" % junit_path)
         f.write("----------------------------------------------------------\n")
-        cases = list(cases)
         for k, case in enumerate(cases, 1):
             name = case.get("name")
             out = case.findtext("system-out") or ""
@@ -150,8 +148,7 @@ def junit_to_ctest_log(junit_path, log_path):
             f.write("Test time = %8.2f sec\n" % float(case.get("time") or "nan"))
             f.write("----------------------------------------------------------\n")
             f.write(verdicts.get(case.get("status"), "Test Failed.") + "\n")
-            count += 1
-    return count
+    return len(cases)
 
 
 def run_command(name, command, cwd, status_path, log_path, env_extra=None, accept=(0,)):
