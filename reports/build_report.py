@@ -209,21 +209,50 @@ def grid_statement(params):
 
 
 # ---------------------------------------------------------------- title and page 1
-def title_block(out, env, build):
+def commit_flag(commits, state):
+    """LaTeX text: whether the outputs' commit (HDF5 root attribute git_commit, which carries no
+    dirty flag) is the code that ran: one commit across the outputs, and the build's source tree at
+    report time at that commit with no tracked file changed (clean), else dirty, another commit, or
+    a mix of commits."""
+    if not commits:
+        return "no HDF5 output"
+    flags = []
+    if len(commits) > 1:
+        flags.append(r"\textcolor{red}{\textbf{mixed}}: outputs of %d commits (environment section)" % len(commits))
+    main = max(commits, key=commits.get)
+    if state is None:
+        flags.append("dirty flag unknown (the build's source tree is not found)")
+    elif not re.fullmatch(r"[0-9a-f]{7,40}", main):
+        flags.append("the outputs record no commit")
+    elif main[:min(len(main), len(state["head"]))] != state["head"][:len(main)]:
+        flags.append(r"\textcolor{red}{\textbf{not the build's tree}}: its HEAD is \texttt{%s}" % esc(state["head"]))
+    elif state["changed"]:
+        flags.append(r"\textcolor{red}{\textbf{dirty}}: \texttt{%s} at report time, %d tracked file(s) changed"
+                     % (esc(state["describe"]), len(state["changed"])))
+    else:
+        flags.append(r"\textcolor{passgreen}{\textbf{clean}}: \texttt{%s} at report time, no tracked file changed"
+                     % esc(state["describe"]))
+    return r"\texttt{%s} (%s)" % (esc(main), "; ".join(flags))
+
+
+def title_block(out, env, build, commits=None, state=None, peers=()):
     get = dict(env)
     threads = ("1 per run (workflow jobs, \\texttt{OMP\\_NUM\\_THREADS=1})"
                if os.path.isdir(os.path.join(build, "workflow_state", "tests")) else "not recorded")
-    rows = [["ibms version / commit", "%s / \\texttt{%s}" % (esc(get.get("ibms version (from outputs)", "--")),
-                                                          esc(get.get("git commit (from outputs)", "--")))],
-            ["source tree at report time", "\\texttt{%s}" % esc(get.get("source tree at report time", "--"))],
+    rows = [["ibms version", esc(get.get("ibms version (from outputs)", "--"))],
+            ["outputs' commit", commit_flag(commits or {}, state)],
+            ["report's source tree", "\\texttt{%s} (reference data, case READMEs, this report's code)"
+             % esc(get.get("source tree at report time", "--"))],
             ["date", esc(get.get("report date", "--"))],
             ["main job level / time", "%s / %s" % (esc(get.get("main job level", "--")),
                                                    esc(get.get("main job time to this report", "--")))],
             ["machine", esc(get.get("CPU", "--"))],
             ["newest output", esc(get.get("newest output started", "--"))],
             ["threads / build type", "%s / %s" % (threads, esc(get.get("build type", "--")))]]
+    for name, text in peers:
+        rows.append(["peer: " + esc(name), text])
     out.append(r"\begin{center}{\LARGE ibms verification and validation report}\\[0.5ex]")
-    out.append(r"{\footnotesize\begin{tabular}{@{}ll@{}}" +
+    out.append(r"{\footnotesize\begin{tabular}{@{}lp{13.2cm}@{}}" +
                "\n".join("%s: & %s\\\\" % (a, b) for a, b in rows) + r"\end{tabular}}\end{center}")
 
 
@@ -261,8 +290,8 @@ def summary_page(out, order, metas, judged, params, not_run=()):
                          r">{\raggedright\arraybackslash}p{3.5cm}>{\raggedright\arraybackslash}p{1.5cm}c"
                          r">{\raggedright\arraybackslash}p{4.6cm}",
                          ["case", "validates", "against (P published, E exact, O ibms's own)", "grid(s)",
-                          "verdict", "headline: worst figure against its target"], rows, size=None) + "}")
-    out.append(r"{\small Cases: %s. \emph{pass}: every judged figure meets its target; \emph{miss}: a figure "
+                          "verdict", "headline: the principal published figure, else the worst, against its target"], rows, size=None) + "}")
+    out.append(r"{\small Cases (one verdict per case): %s. \emph{pass}: every judged figure meets its target; \emph{miss}: a figure "
                r"misses its published bounds (judged on them even where ibms's own gate passes) or, where no "
                r"published figure exists, a target the case sets (tolerance in \texttt{case\_criteria.hpp} or the "
                r"README), without a gated check failing; \emph{FAIL}: a gated check failed. Figures "
@@ -306,19 +335,23 @@ def evidence_class(meta, row=None):
 
 
 def class_counts_table(order, metas, judged):
-    """Cases and judged figures per class of evidence, with their verdicts."""
+    """Judged figures per class of evidence, with their verdicts: one unit (figures, the
+    results.csv lines judged against a target), since a case holds figures of several classes (its
+    GCI and wheel-against-rigid lines are ibms against itself inside a published case)."""
     rows = []
     for key, name in EVIDENCE_CLASSES:
-        cases = [c for c in order if evidence_class(metas[c]) == key]
-        case_verdicts = [judged.get(c, {}).get("verdict", "not run") for c in cases]
         figures = [r["verdict"] for c in order for r in judged.get(c, {}).get("rows", [])
                    if evidence_class(metas[c], r) == key and r["verdict"] != "info"]
-        count = lambda vs: ", ".join("%d %s" % (vs.count(v), v) for v in ("pass", "miss", "fail", "not run")
-                                     if vs.count(v)) or "--"
-        rows.append([esc(name), str(len(cases)), count(case_verdicts), str(len(figures)), count(figures)])
+        rows.append([esc(name), str(len(figures))] + [str(figures.count(v)) for v in ("pass", "miss", "fail")])
+    total = [sum(int(r[k]) for r in rows) for k in range(1, 5)]
+    rows.append([r"	extbf{all classes}"] + [str(n) for n in total])
     return (r"{\fontsize{8}{9}\selectfont" + "\n" +
-            longtable("lrlrl", ["class of evidence", "cases", "case verdicts", "judged figures", "figure verdicts"],
-                      rows, size=None) + "}")
+            longtable("lrrrr", ["class of evidence", "judged figures", "pass", "miss", "FAIL"], rows, size=None,
+                      caption=r"Counts per class of evidence, in \emph{figures}: the lines of "
+                              r"\texttt{validation/results.csv} judged against a target (\emph{info} lines not "
+                              r"counted; \S\ref{sec:checks}). A case holds several figures, and a figure of ibms "
+                              r"against itself (GCI, wheel against rigid) counts as such inside a published case; "
+                              r"the cases' verdicts are counted above.") + "}")
 
 
 def quantities_summary_section(out, order, metas, judged, fig_dir):
@@ -734,7 +767,8 @@ def document(build, source, fig_dir):
     h5s = glob.glob(os.path.join(build, "validation", "**", "*.h5"), recursive=True)
     env = data.environment(build, source, h5s)
     out = [PREAMBLE]
-    title_block(out, env, build)
+    title_block(out, env, build, data.output_commits(h5s), data.build_source_state(build),
+                bench.peer_versions(build, source))
     defined = trace.ctest_tests(build)  # every test the build defines, read once
     summary_page(out, order, metas, judged, params, slow_checks_not_run(build, defined))
     out.append(r"\newpage\tableofcontents\newpage")

@@ -115,6 +115,23 @@ def _basilisk_points(source, name):
             if "cavity_re" + r["re"] == name]
 
 
+def peer_versions(build, source):
+    """(peer, LaTeX text) of every other code this report compares ibms with: Basilisk, where the
+    build has a cavity work-precision table (its figure draws Basilisk's points). The version is the
+    one the reference file's '#' lines name (a line with 'version', 'darcs' or 'commit'), else it
+    says that none is recorded, with the date the figures were measured."""
+    path = os.path.join(source or "", "bench", "reference", "basilisk_cavity.csv")
+    if not glob.glob(os.path.join(build, "bench", "work_precision_cavity_re*.csv")) or not os.path.isfile(path):
+        return []
+    comments = " ".join(_comments(path))
+    version = re.search(r"[^.;]*\b(?:version|darcs|commit)\b[^.;]*", comments, re.I)
+    date = re.search(r"recorded (\d{4}-\d{2}-\d{2})", comments)
+    text = (esc(version.group(0).strip()) if version else r"\textbf{version not recorded}") + \
+        " (lid-driven cavity work-precision, \\texttt{bench/reference/basilisk\\_cavity.csv}%s; not re-run by " \
+        "the workflow)" % (", measured %s on this project's machine" % date.group(1) if date else "")
+    return [("Basilisk", text)]
+
+
 def work_precision_section(out, build, fig_dir, source=None):
     out.append(r"\section{Work-precision: error against run time}")
     files = sorted(glob.glob(os.path.join(build, "bench", "work_precision_*.csv")))

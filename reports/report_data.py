@@ -203,6 +203,56 @@ def h5_root_attributes(h5_paths):
     return {}
 
 
+def output_commits(h5_paths):
+    """commit -> number of HDF5 outputs recording it (root attribute git_commit): outputs of more
+    than one commit in a build directory are a mix of builds."""
+    try:
+        import h5py
+    except ImportError:
+        return {}
+    commits = {}
+    for path in h5_paths:
+        try:
+            with h5py.File(path, "r") as f:
+                v = f.attrs.get("git_commit", "not recorded")
+        except OSError:
+            continue
+        v = v.decode() if isinstance(v, bytes) else str(v)
+        commits[v] = commits.get(v, 0) + 1
+    return commits
+
+
+def build_source_state(build):
+    """The source tree the build directory was configured from (CMAKE_HOME_DIRECTORY of
+    BUILD/CMakeCache.txt) at report time: (path, its HEAD, `git describe --dirty`, the tracked files
+    changed against HEAD), or None when the cache or git cannot say. The outputs record their
+    commit only (git_commit), without a dirty flag: the tree they were built from, read right after
+    the run (the report is the main job's last step), is the evidence whether that commit is the
+    code that ran."""
+    path = None
+    try:
+        with open(os.path.join(build, "CMakeCache.txt"), errors="replace") as f:
+            for line in f:
+                if line.startswith("CMAKE_HOME_DIRECTORY:"):
+                    path = line.split("=", 1)[1].strip()
+    except OSError:
+        return None
+    if not path or not os.path.isdir(path):
+        return None
+    try:
+        head = subprocess.run(["git", "-C", path, "rev-parse", "--short=12", "HEAD"], capture_output=True,
+                              text=True, timeout=20)
+        status = subprocess.run(["git", "-C", path, "status", "--porcelain", "--untracked-files=no"],
+                                capture_output=True, text=True, timeout=60)
+    except (OSError, subprocess.SubprocessError):
+        return None
+    if head.returncode != 0 or status.returncode != 0:
+        return None
+    changed = [line[3:] for line in status.stdout.splitlines() if line.strip()]
+    describe = _run(["git", "-C", path, "describe", "--always", "--dirty", "--abbrev=12"])
+    return dict(path=path, head=head.stdout.strip(), describe=describe, changed=changed)
+
+
 def main_job(build):
     """(level, time from the main job's start to now) from BUILD/workflow_state/main_job.json, which
     scripts/run-main.sh writes when it starts (before the install and the build); the report is the
@@ -230,6 +280,19 @@ def environment(build, source, h5_paths):
         env.append(("newest output started", attrs["start_time"] + " on " + attrs.get("host", "?")))
     else:
         env.append(("newest output started", "no HDF5 output; report made on " + platform.node()))
+    commits = output_commits(h5_paths)
+    if commits:
+        env.append(("commits of the outputs", "; ".join("%s (%d output%s)" % (c, n, "s" if n > 1 else "")
+                                                         for c, n in sorted(commits.items(), key=lambda x: -x[1]))))
+    state = build_source_state(build)
+    if state:
+        env.append(("build's source tree at report time", "%s: %s, %s" % (
+            state["path"], state["describe"],
+            "%d tracked file(s) changed against HEAD: %s" % (len(state["changed"]), ", ".join(state["changed"][:6]) +
+                                                           (", ..." if len(state["changed"]) > 6 else ""))
+            if state["changed"] else "no tracked file changed against HEAD")))
+    else:
+        env.append(("build's source tree at report time", "not found (no CMakeCache.txt or no git tree)"))
     env.append(("source tree at report time", _run(["git", "-C", source, "describe", "--always",
                                                     "--dirty", "--abbrev=12"])))
     cache = os.path.join(build, "CMakeCache.txt")
