@@ -18,6 +18,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
+import report_figures as figs  # noqa: E402
 from report_latex import esc, num, figure, longtable  # noqa: E402
 import report_cases  # noqa: E402
 
@@ -195,8 +196,7 @@ def work_precision_section(out, build, fig_dir, source=None):
             ax.legend()
         path = os.path.join(fig_dir, "work_precision.pdf")
         fig.tight_layout()
-        fig.savefig(path)
-        plt.close(fig)
+        figs.save(fig, path)
         out.append(figure(path, "Error against wall time; labels: grid N; dashed: least-squares fit. Squares "
                                 "(B$N$): Basilisk %s on the same cavity and error rule, one core of this machine, "
                                 "recorded 2026-12-03 (\\texttt{bench/reference/basilisk\\_cavity.csv}; "
@@ -255,8 +255,7 @@ def body_work_precision(out, build, fig_dir, source, cases):
         ax.legend(fontsize=7)
     path = os.path.join(fig_dir, "work_precision_bodies.pdf")
     fig.tight_layout()
-    fig.savefig(path)
-    plt.close(fig)
+    figs.save(fig, path)
     caption = "; ".join("%s: %s" % (_BODY_FAMILIES[f][0], _reference_text(source, f)) for f in families)
     out.append(figure(path, "Error (its absolute value) against wall time of the DFG cylinders, both couplings "
                       "(labels: $D/h$). " +
@@ -326,8 +325,7 @@ def stability_section(out, build, fig_dir):
         axes[0].set_ylabel(quantity.replace("_", " "))
         path = os.path.join(fig_dir, "stability_%s.pdf" % name)
         fig.tight_layout()
-        fig.savefig(path)
-        plt.close(fig)
+        figs.save(fig, path)
         out.append(figure(path, "Stability map \\texttt{%s} (\\texttt{bench/stability\\_%s.csv})." %
                           (esc(name), esc(name)), height=0.3))
         for mode in ("auto", "fixed"):
@@ -414,8 +412,7 @@ def fluid_stability_maps(out, files, fig_dir):
         axes[0][0].set_ylabel("$\\mathrm{Re}_h = Uh/\\nu$")
         path = os.path.join(fig_dir, "stability_fluid_%s.pdf" % name)
         fig.tight_layout()
-        fig.savefig(path)
-        plt.close(fig)
+        figs.save(fig, path)
         out.append(r"{\small %s.}" % esc("; ".join(_comments(f))) + "\n")
         out.append(figure(path, "Fluid stability map \\texttt{%s} (\\texttt{bench/stability\\_fluid\\_%s.csv})." %
                           (esc(name), esc(name)), height=0.3))

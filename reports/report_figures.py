@@ -4,6 +4,8 @@ import glob
 import math
 import os
 import re
+import textwrap
+import warnings
 
 import matplotlib
 
@@ -12,10 +14,37 @@ import matplotlib.pyplot as plt  # noqa: E402
 import matplotlib.ticker  # noqa: E402
 import numpy as np  # noqa: E402
 
+import matplotlib.patheffects  # noqa: E402
+import matplotlib.text  # noqa: E402
 import report_data as data  # noqa: E402
+from report_latex import FIGURE_TEXT, TEXT_WIDTH_PT, pdf_size  # noqa: E402
 
 plt.rcParams.update({"font.size": 9, "axes.titlesize": 9, "legend.fontsize": 7,
                      "pdf.fonttype": 42, "figure.dpi": 100, "savefig.bbox": "tight"})
+
+
+def save(fig, path):
+    """Writes the figure (vector PDF, tight bounding box) and closes it. A figure wider than the
+    text is narrowed (its text kept at its size, the layout redone) until it fits, so that LaTeX
+    prints it at full size; records its smallest visible text size (tick labels, legends,
+    annotations, titles) for the print-size check of report_latex.figure()."""
+    fig.savefig(path)  # draws the figure: its tick labels exist from here on
+    for _ in range(4):
+        width = pdf_size(path)[0]
+        if width is None or width <= TEXT_WIDTH_PT + 0.5:
+            break
+        w_in, h_in = fig.get_size_inches()
+        fig.set_size_inches(max(w_in - 1.02 * (width - TEXT_WIDTH_PT) / 72.0, 1.5), h_in)
+        with warnings.catch_warnings():  # figures whose layout tight_layout cannot redo keep theirs
+            warnings.simplefilter("ignore")
+            fig.tight_layout()
+        fig.savefig(path)
+    sizes = [t.get_fontsize() for t in fig.findobj(matplotlib.text.Text)
+             if t.get_visible() and t.get_text().strip() and t.get_figure() is fig]
+    plt.close(fig)
+    if sizes:
+        FIGURE_TEXT[path] = min(sizes)
+    return path
 
 
 _CGS = {"length": "cm", "time": "s", "mass": "g"}
@@ -150,8 +179,7 @@ def cavity_profiles(case_dir, case, ref_dir, out, labels=None):
         dax.grid(alpha=0.3)
         ax.legend(loc="best", fontsize=7)
     fig.tight_layout()
-    fig.savefig(out)
-    plt.close(fig)
+    save(fig, out)
     return out
 
 
@@ -163,8 +191,19 @@ def _finest_h5(case_dir, case):
 
 
 def _body_outlines(group):
-    """Point arrays (x, y) of every body group in a snapshot group, if the output has them."""
+    """Closed rims (x, y) of every body in a snapshot group: `bodies/x`, `bodies/y` split at
+    `bodies/first_point` (docs/output.md; all points one rim without it), or per-body groups
+    `body*` with `x`, `y` or an (n, 2) `positions` / `points` / `position` array."""
     outlines = []
+    if "bodies" in group and hasattr(group["bodies"], "keys"):
+        g = group["bodies"]
+        if "x" in g and "y" in g:
+            x, y = np.asarray(g["x"]), np.asarray(g["y"])
+            first = np.asarray(g["first_point"]).astype(int) if "first_point" in g else np.array([0, len(x)])
+            for a, b in zip(first[:-1], first[1:]):
+                if b - a >= 2:
+                    outlines.append((np.append(x[a:b], x[a]), np.append(y[a:b], y[a])))
+        return outlines
     for key in sorted(group.keys()):
         if not key.startswith("body"):
             continue
@@ -249,8 +288,10 @@ def snapshots(case_dir, case, out, max_panels=3, path=None, vlim=None, system=No
                 sy = max(1, int(round(sx * (yc[1] - yc[0]) / (xc[1] - xc[0])))) if len(yc) > 1 else 1
                 ax.quiver(xc[::sx], yc[::sy], u[::sy, ::sx], v[::sy, ::sx], color="k", width=0.003,
                           scale=None)
+            # rims black on a white halo: visible over the colours and the black vectors alike
             for bx, by in _body_outlines(g):
-                ax.fill(bx, by, facecolor="none", edgecolor="k", lw=1)
+                ax.plot(bx, by, color="k", lw=0.9, zorder=4,
+                        path_effects=[matplotlib.patheffects.withStroke(linewidth=2.2, foreground="w")])
             t = g.attrs.get("time", None)
             tu = real_units("time", system)
             ax.set_title("t = %.4g%s" % (float(t), " " + tu if tu else "") if t is not None else "step " + step)
@@ -261,8 +302,7 @@ def snapshots(case_dir, case, out, max_panels=3, path=None, vlim=None, system=No
             fig.colorbar(cs, ax=[a for a in axes.flat if a.get_visible()], shrink=0.85,
                          label=_axis_label("vorticity", "1/time", system), format="%.3g",
                          ticks=np.linspace(-lim, lim, 5))
-        fig.savefig(out)
-        plt.close(fig)
+        save(fig, out)
     return out, path
 
 
@@ -375,8 +415,7 @@ def body_histories(case_dir, out, literature=None):
     fig.legend(handles, labels, loc="lower center", ncol=min(3, len(labels)), fontsize=7,
                bbox_to_anchor=(0.5, 1.0), frameon=False)
     fig.tight_layout()
-    fig.savefig(out)
-    plt.close(fig)
+    save(fig, out)
     return out, files
 
 
@@ -399,8 +438,7 @@ def trajectories(path, out):
     ax.set_title("%.3g <= t <= %.3g" % (arr[:, 0].min(), arr[:, 0].max()))
     ax.grid(alpha=0.3)
     fig.tight_layout()
-    fig.savefig(out)
-    plt.close(fig)
+    save(fig, out)
     return out
 
 
@@ -418,8 +456,7 @@ def generic_csv(path, out):
     ax.grid(alpha=0.3)
     ax.legend(loc="best")
     fig.tight_layout()
-    fig.savefig(out)
-    plt.close(fig)
+    save(fig, out)
     return out
 
 
@@ -450,7 +487,7 @@ def convergence_study(name, refined, items, out):
         slope = t.get("fit_order", math.nan)
         # the set-up is the figure's title: the legend names what differs (variable and norm)
         rest = title[len(name):].lstrip(", ") if title.startswith(name + ",") else title.split(": ", 1)[-1]
-        lab = "(%d) %s" % (k, _short(rest, 52))
+        lab = "(%d) %s" % (k, _wrap(rest, 40))
         if np.isfinite(slope):
             lab += ": %.2f" % slope
         line, = ax.loglog(h[ok], e[ok], "o-", ms=3.5, lw=1, label=lab)
@@ -472,11 +509,10 @@ def convergence_study(name, refined, items, out):
     ax.grid(alpha=0.3, which="both")
     ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize=7, frameon=False)
     fig.tight_layout()
-    fig.savefig(out)
-    plt.close(fig)
+    save(fig, out)
     return out
 
 
-def _short(title, width=48):
-    title = title.replace("_", " ")
-    return title if len(title) <= width else title[:width - 3] + "..."
+def _wrap(title, width=40):
+    """A legend entry in full, broken into lines of at most `width` characters at spaces."""
+    return "\n".join(textwrap.wrap(title.replace("_", " "), width)) or title

@@ -1,6 +1,7 @@
 """LaTeX helpers: escaping of strings read from files, number formatting, tables, figures."""
 import math
 import os
+import re
 
 _SPECIAL = {"\\": r"\textbackslash{}", "&": r"\&", "%": r"\%", "$": r"\$", "#": r"\#",
             "_": r"\_", "{": r"\{", "}": r"\}", "~": r"\textasciitilde{}",
@@ -88,7 +89,47 @@ def longtable(spec, header, rows, caption=None, size="small"):
     return "\n".join(lines)
 
 
+# Figure text at print size: no figure text below MIN_PRINT_PT once LaTeX scales the figure into
+# its box (\\textwidth wide, `height` of \\textheight high, aspect kept). FIGURE_TEXT holds the
+# smallest font size of each saved figure at its own size (report_figures.save); figure() records
+# every figure printed with smaller text in SMALL_TEXT, which build_report reports as an error.
+MIN_PRINT_PT = 7.0
+TEXT_WIDTH_PT, TEXT_HEIGHT_PT = 504.6, 756.8  # A4 less the preamble's geometry margins
+FIGURE_TEXT = {}
+SMALL_TEXT = []
+
+
+def pdf_size(path):
+    """(width, height) in pt of a one-page PDF (its MediaBox), or (None, None)."""
+    try:
+        with open(path, "rb") as f:
+            text = f.read()
+    except OSError:
+        return None, None
+    m = re.search(rb"/MediaBox\s*\[\s*([-0-9.]+)\s+([-0-9.]+)\s+([-0-9.]+)\s+([-0-9.]+)\s*\]", text)
+    if not m:
+        return None, None
+    return float(m.group(3)) - float(m.group(1)), float(m.group(4)) - float(m.group(2))
+
+
+def print_scale(path, height):
+    """The factor LaTeX scales a figure PDF by in figure(): its page fitted into \\textwidth by
+    `height` \\textheight, aspect kept."""
+    w, h = pdf_size(path)
+    return min(TEXT_WIDTH_PT / w, height * TEXT_HEIGHT_PT / h) if w and h else None
+
+
 def figure(path, caption, height=0.42):
+    """A figure at full text width, at most `height` of the text height, aspect kept; the height
+    allowance grows (to 0.9 at most) where the figure's smallest text would print below
+    MIN_PRINT_PT, which is recorded in SMALL_TEXT where even that does not suffice."""
+    smallest, scale = FIGURE_TEXT.get(path), print_scale(path, height)
+    if smallest is not None and scale is not None and smallest * scale < MIN_PRINT_PT - 0.05:
+        w, h = pdf_size(path)
+        height = max(height, min(0.9, 1.005 * MIN_PRINT_PT / smallest * h / TEXT_HEIGHT_PT))
+        scale = print_scale(path, height)
+        if smallest * scale < MIN_PRINT_PT - 0.05:
+            SMALL_TEXT.append((os.path.basename(path), smallest * scale))
     return "\n".join([r"\begin{figure}[H]", r"\centering",
                       r"\includegraphics[width=\textwidth,height=%.2f\textheight,keepaspectratio]{%s}"
                       % (height, os.path.basename(path)),

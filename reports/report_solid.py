@@ -18,6 +18,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import matplotlib.ticker  # noqa: E402
 
+import report_figures as figs  # noqa: E402
 from report_latex import esc, num, figure, longtable  # noqa: E402
 
 
@@ -138,8 +139,7 @@ def energy_subsection(out, results, fig_dir):
     ax.legend(loc="center right", fontsize=7)
     path = os.path.join(fig_dir, "wheel_energy.pdf")
     fig.tight_layout()
-    fig.savefig(path)
-    plt.close(fig)
+    figs.save(fig, path)
     out.append(figure(path, "Relative energy error of the undamped wheel against time, its maximum "
                             "over each period (\\texttt{wheel\\_energy\\_history.csv}), one line per "
                             "sub-step; dotted: the test's bound for that sub-step. Flat lines: no "
@@ -206,8 +206,7 @@ def restitution_subsection(out, results, fig_dir):
             ax.grid(alpha=0.3)
         path = os.path.join(fig_dir, "restitution.pdf")
         fig.tight_layout()
-        fig.savefig(path)
-        plt.close(fig)
+        figs.save(fig, path)
         out.append(figure(path, "Left: measured against target restitution, on the diagonal within "
                                 "the grey tolerance band. Right: the signed relative error, the "
                                 "same points enlarged (from \\texttt{restitution.csv}).", height=0.36))
@@ -258,8 +257,7 @@ def contact_history_subsection(out, results, fig_dir):
     axes[0][0].legend(loc="center right", fontsize=7)
     path = os.path.join(fig_dir, "contact_history.pdf")
     fig.tight_layout()
-    fig.savefig(path)
-    plt.close(fig)
+    figs.save(fig, path)
     extra = "" if len(cases) <= ncol else " (first %d of %d cases)" % (ncol, len(cases))
     out.append(figure(path, "Through each collision%s, from \\texttt{contact\\_history.csv}: top, the "
                             "normal relative velocity over the approach speed, from $-1$ at impact "

@@ -16,6 +16,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 from report_bench import _float  # noqa: E402
+import report_figures as figs  # noqa: E402
 from report_latex import esc, figure, longtable  # noqa: E402
 
 
@@ -100,8 +101,7 @@ def plot_sweep(plot, rows, path):
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=7)
     fig.tight_layout()
-    fig.savefig(path)
-    plt.close(fig)
+    figs.save(fig, path)
     return path
 
 

@@ -200,9 +200,23 @@ def build_report(*args):
     print(proc.stdout, proc.stderr)
     if proc.returncode != 0:
         fail("build_report.py %s exited %d" % (" ".join(args), proc.returncode))
+    if "figure text below" in proc.stderr:  # every figure's text >= 7 pt as printed
+        fail("figure text below 7 pt at print size (stderr above)")
 
 
 if stage == "tex":
+    # Body rims of a snapshot (docs/output.md: bodies/x, bodies/y split at bodies/first_point): two
+    # closed rims, as the vorticity snapshots draw them.
+    sys.path.insert(0, here)
+    import report_figures  # noqa: E402
+    with h5py.File(os.path.join(work, "rims.h5"), "w") as h5:
+        g = h5.create_group("snapshots/000010")
+        g["bodies/x"] = [0.0, 1.0, 0.0, 2.0, 3.0, 3.0, 2.0]
+        g["bodies/y"] = [0.0, 0.0, 1.0, 2.0, 2.0, 3.0, 3.0]
+        g["bodies/first_point"] = [0, 3, 7]
+        rims = report_figures._body_outlines(g)
+    if [len(x) for x, _ in rims] != [4, 5] or rims[1][0][-1] != 2.0 or rims[1][1][0] != 2.0:
+        fail("the snapshot's body rims are not read as two closed rims: %r" % (rims,))
     tex_dir = os.path.join(work, "tex")
     build_report("--tex-dir", tex_dir)
     with open(os.path.join(tex_dir, "report.tex"), encoding="utf-8") as f:
