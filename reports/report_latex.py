@@ -74,9 +74,11 @@ def status_cell(status):
     return esc(s) if s else "--"
 
 
-def longtable(spec, header, rows, caption=None, size="small"):
-    """A longtable in the given font size environment (None: the surrounding size)."""
-    lines = ([r"\begin{%s}" % size, r"\setlength{\tabcolsep}{4pt}"] if size else []) + \
+def longtable(spec, header, rows, caption=None, size="small", tabcolsep="4pt"):
+    """A longtable in the given font size environment (None: the surrounding size) with the given
+    column separation (None: the surrounding one)."""
+    lines = ([r"\begin{%s}" % size] + ([r"\setlength{\tabcolsep}{%s}" % tabcolsep] if tabcolsep else [])
+             if size else []) + \
         [r"\begin{longtable}{%s}" % spec]
     if caption:
         lines.append(r"\caption{%s}\\" % caption)

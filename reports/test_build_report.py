@@ -202,6 +202,8 @@ def build_report(*args):
         fail("build_report.py %s exited %d" % (" ".join(args), proc.returncode))
     if "figure text below" in proc.stderr:  # every figure's text >= 7 pt as printed
         fail("figure text below 7 pt at print size (stderr above)")
+    if "overfull lines" in proc.stderr:  # no table column or text line beyond the text width
+        fail("text or table columns wider than the page's text (stderr above)")
 
 
 if stage == "tex":
