@@ -631,7 +631,11 @@ def case_section(out, case, meta, build, source, judged, params, fig_dir):
                 meta["compared"], cases_mod.verdict_cell(c["verdict"] if c else "not run")) + "\n")
     summary = readme_summary(source, case)
     if summary:
-        out.append(r"\noindent{\small\emph{From validation/%s/README.md:} %s}" % (esc(case), esc(summary)) + "\n")
+        # The README's own words, set apart and labelled: figures in it were measured in the runs its
+        # authors made, not in this one (this run's are in the tables and figures below).
+        out.append(r"\begin{quote}\small\textbf{The case README's text} (\texttt{validation/%s/README.md}, its "
+                   r"first paragraph; any figure in it is the README's, from an earlier run, not this run's "
+                   r"result): ``%s''\end{quote}" % (esc(case), esc(summary)) + "\n")
     parameter_table(out, params)
     statement = grid_statement(params)
     if statement:
@@ -712,9 +716,11 @@ def known_limitations(out, order, judged):
         out.append("No judged figure misses its target in this build.\n")
         return
     out.append("Every figure of this build that misses its target (\\emph{miss}) or fails its check "
-               "(\\emph{FAIL}), with its cause as the case README states it.\n")
+               "(\\emph{FAIL}), with its cause as the case README states it: the figures in a cause are the "
+               "README's, measured in the runs it reports, not this run's (which are in the third column).\n")
     out.append(longtable(r"p{2.5cm}p{4.6cm}p{2.4cm}p{6.9cm}",
-                                              ["case", "figure", "measured (target)", "cause"],
+                                              ["case", "figure", "measured (target)",
+                                               "cause (the README's text and figures)"],
                                               [[tt(r["row_case"]),
                                                 esc(r["metric"]),
                                                 "%s (%s) %s" % (cases_mod.measured_text(r), r["target_text"],

@@ -269,6 +269,15 @@ if stage == "tex":
         fail("the time study's order 0.777 is not shown against formal order 2 and band [1.8, inf] as FAIL")
     if "time step $\\Delta t$" not in tex:
         fail("the time study's figure caption does not name the time step")
+    # README excerpts: labelled as the README's text with its path (their figures are not this
+    # run's), and each ends at a sentence or with an ellipsis after a whole word.
+    excerpts = re.findall(r"\\textbf\{The case README's text\} \(\\texttt\{validation/([^}]*)/README\.md\}.*?``(.*?)''"
+                          r"\\end\{quote\}", tex, re.S)
+    if not any(c == "lid\\_driven\\_cavity\\_re100" for c, _ in excerpts):
+        fail("the README excerpt of lid_driven_cavity_re100 is not labelled as the README's text with its path")
+    for c, text in excerpts:
+        if not re.search(r"([.!?)]|\w \.\.\.)\}?$", text.strip()):
+            fail("the README excerpt of %s ends mid-sentence without an ellipsis: ...%r" % (c, text[-60:]))
     if "Known limitations" not in tex or "momentum interpolation" not in tex:
         fail("the Known limitations section does not list the miss with its cause")
     # A case without a source mark (no README with a Compared-with line) stops the build.
