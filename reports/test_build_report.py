@@ -9,9 +9,12 @@ figures and the LaTeX source (build_report.py --tex-dir) -- every figure the sou
 and is a PDF, environments and braces balance, the computed figures are in the text and a stale
 rerun row is not; a DFG 2D-2 max c_D of +12.34 % filed as info by its check is a miss in its
 page-1 row (its headline, though a max c_L of -60 % misses by more), in the page-1 list of misses and in Known limitations; a time study's order below its
-asserted band is FAIL against its formal order; and a results.csv case without a README source
-mark stops the build with an error naming it. Stage `pdf` (skipped without LaTeX): the whole report compiles to a PDF whose
-text holds the same figures.
+asserted band is FAIL against its formal order; the title block gives the outputs' commit with its
+dirty flag and Basilisk's version; a snapshot's body rims are read as closed rims; README excerpts
+are labelled with their path and end at a sentence or with an ellipsis; no figure text prints below
+7 pt; and a results.csv case without a README source mark stops the build with an error naming it.
+Stage `pdf` (skipped without LaTeX): the whole report compiles to a PDF whose text holds the same
+figures, with no overfull line in LaTeX's log.
 usage: test_build_report.py tex|pdf WORK_DIR     exit 0 pass, 1 fail, 77 skipped (pdf stage, no LaTeX)"""
 import math
 import os
