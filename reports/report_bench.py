@@ -176,8 +176,13 @@ def work_precision_section(out, build, fig_dir, source=None):
                          caption="Work-precision slopes."))
     fluid = [c for c in cases if _body_case(c[0]) is None]
     if fluid:
-        fig, axes = plt.subplots(1, len(fluid), figsize=(3.0 * len(fluid), 2.8), squeeze=False)
-        for ax, (name, pts, slope) in zip(axes[0], fluid):
+        # at most three panels a row: each wide enough for its tick labels and grid labels at 7 pt
+        ncol = min(3, len(fluid))
+        nrow = -(-len(fluid) // ncol)
+        fig, axes = plt.subplots(nrow, ncol, figsize=(2.4 * ncol, 2.4 * nrow), squeeze=False)
+        for ax in axes.flat[len(fluid):]:
+            ax.set_visible(False)
+        for ax, (name, pts, slope) in zip(axes.flat, fluid):
             t, e = [p[0] for p in pts], [p[1] for p in pts]
             ax.loglog(t, e, "o-", ms=4)
             for p in pts:
