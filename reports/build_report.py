@@ -476,8 +476,8 @@ def verification_section(out, conv, tests, fig_dir):
         n_fail = sum(t["status"] == "FAIL" for t in ver)
         out.append("Unit and convergence tests from ctest's logs: %d tests, %d failed. Each program passes "
                    "only if all its claims (Boost test cases) hold.\n" % (len(ver), n_fail))
-        rows = [[r"\texttt{%s}" % esc(t["name"]), status_cell(t["status"]), num(t["seconds"])] for t in ver]
-        out.append(longtable(r"p{10cm}cr", ["test", "verdict", "time [s]"], rows,
+        rows = [[tt(t["name"]), status_cell(t["status"]), num(t["seconds"])] for t in ver]
+        out.append(longtable(r">{\raggedright\arraybackslash}p{10cm}cr", ["test", "verdict", "time [s]"], rows,
                                                   caption="Unit and convergence tests (ctest).", size="footnotesize"))
     else:
         out.append(r"\emph{Unit and convergence tests: none in ctest's logs (\texttt{Testing/Temporary/LastTest*.log}) "
@@ -735,9 +735,8 @@ def environment_section(out, env, tests):
         out.append(r"\emph{Run times: not available (no \texttt{Testing/Temporary/LastTest.log}).}")
         return
     total = sum(t["seconds"] for t in tests if not math.isnan(t["seconds"]))
-    rows = [[r"\texttt{%s}" % esc(t["name"]), status_cell(t["status"]), num(t["seconds"]),
-             esc(t["log"])] for t in tests]
-    out.append(longtable(r"p{8.5cm}crp{3.5cm}", ["ctest test", "result", "time [s]", "log"], rows,
+    rows = [[tt(t["name"]), status_cell(t["status"]), num(t["seconds"]), tt(t["log"])] for t in tests]
+    out.append(longtable(r">{\raggedright\arraybackslash}p{8.5cm}cr>{\raggedright\arraybackslash}p{4.5cm}", ["ctest test", "result", "time [s]", "log"], rows,
                                               caption="Per-test wall times from ctest's logs (sum %.1f s; tests ran "
                                                       "in parallel, so wall time is lower)." % total, size="footnotesize"))
 

@@ -41,6 +41,22 @@ def tt(text):
     return r"\texttt{%s}" % esc(text).replace(r"\_", r"\_\allowbreak{}").replace("/", r"/\allowbreak{}")
 
 
+def stacked_tt(text, width=12):
+    """A typewriter table header broken after '_' or '.' into lines of about `width` characters,
+    right-aligned (long column names of numeric tables, whose r columns do not wrap)."""
+    parts = re.findall(r"[^_.]+[_.]?|[_.]", str(text))
+    lines, line = [], ""
+    for part in parts:
+        if line and len(line) + len(part) > width:
+            lines.append(line)
+            line = ""
+        line += part
+    lines.append(line)
+    if len(lines) == 1:
+        return r"\texttt{%s}" % esc(text)
+    return r"\begin{tabular}[b]{@{}r@{}}%s\end{tabular}" % r"\\".join(r"\texttt{%s}" % esc(x) for x in lines)
+
+
 def num(value, digits=4):
     """Numbers as read (strings) or floats, printed compactly; empty -> '--'."""
     if value is None:

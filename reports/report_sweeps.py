@@ -17,7 +17,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 from report_bench import _float  # noqa: E402
 import report_figures as figs  # noqa: E402
-from report_latex import esc, figure, longtable  # noqa: E402
+from report_latex import esc, figure, longtable, stacked_tt  # noqa: E402
 
 
 def read_sweep(path):
@@ -129,7 +129,7 @@ def sweeps_section(out, build, fig_dir):
             continue
         table = [[_status_cell(r) if h == "status" else _cell(r.get(h, "")) for h in header] for r in rows]
         spec = "".join("r" for _ in header)
-        out.append(longtable(spec, [r"\texttt{%s}" % esc(h) for h in header], table,
+        out.append(longtable(spec, [stacked_tt(h) for h in header], table, size="footnotesize",
                              caption="Sweep \\texttt{%s}: one row per grid point.%s" %
                                      (esc(os.path.basename(path)),
                                       (" The " + esc(shared_note(path)) + ".") if shared_note(path) else "")))
