@@ -678,8 +678,9 @@ def case_section(out, case, meta, build, source, judged, params, fig_dir):
                                    max_panels=4 if run else 3, path=run, vlim=vlim, system=system)
             if p:
                 made += 1
-                out.append(figure(p, "Vorticity with velocity vectors (every few cells) and body outlines where "
-                                     "present, from \\texttt{%s}; one colour scale for every snapshot of the case "
+                out.append(figure(p, "Vorticity with velocity vectors (every few cells) and the bodies' rims "
+                                     "(black on white) where the run has bodies, from \\texttt{%s}; one colour "
+                                     "scale for every snapshot of the case "
                                      "(98th percentile of $|\\omega|$, clipped beyond)." % esc(os.path.basename(h5)),
                                   height=0.6 if run else 0.34))
         for k, f in enumerate(sorted(glob.glob(os.path.join(case_dir, "trajectories_*.csv")))):
