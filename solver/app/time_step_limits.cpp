@@ -123,15 +123,12 @@ std::string describe_time_step_limits(const Scene& scene, const Simulation& sim)
                           cfl, fixed ? "time_step" : "cfl");
   }
   if (sim.has_bodies()) {
-    // The springs' sub-step as the run takes it (group_substeps): bodies whose springs are implicit
-    // at this step (forced, or chosen by uses_implicit_springs) set none.
+    // The springs' sub-step as the run takes it (spring_stepping): bodies whose springs are implicit
+    // at this step set none (without a finite step: only those forced implicit).
     double solid_substep = HUGE_VAL;
-    for (const MassSpringBody& body : sim.bodies()) {
-      if (body.integrator == SpringIntegrator::implicit_euler) continue;
-      const double substep = stable_substep(body, 0.5);
-      if (std::isfinite(dt) && uses_implicit_springs(body, dt, substep)) continue;
-      solid_substep = std::min(solid_substep, substep);
-    }
+    SpectralWorkspace scratch;
+    for (const MassSpringBody& body : sim.bodies())
+      solid_substep = std::min(solid_substep, spring_stepping(body, std::isfinite(dt) ? dt : 0.0, scratch).substep);
     const double contact_limit =
         sim.has_contacts() && std::isfinite(dt) ? contact_substep(sim.contact_model().for_fluid_step(dt), sim.bodies())
                                                 : HUGE_VAL;

@@ -58,6 +58,7 @@ ContactSubcycleResult ContactSubcycler::advance(const ContactModel& model, const
     walls_.reserve(2 * offset_.back());
     active_.reserve(10 * offset_.back());
     shares_.reserve(8 * bodies.size() + 8);  // body pairs and body-wall pairs in touch
+    share_factor_.reserve(8 * bodies.size() + 8);
     spheres_.centre.reserve(offset_.back());
     spheres_.radius.reserve(offset_.back());
     spheres_.body.reserve(offset_.back());

@@ -51,6 +51,7 @@
 #include "contact/cds_pair_search.hpp"
 #include "contact/contact_forces.hpp"
 #include "contact/contact_model.hpp"
+#include "contact/normal_contact_law.hpp"
 #include "solid/mass_spring_body.hpp"
 
 namespace ibms {
@@ -125,14 +126,6 @@ class ContactSubcycler {
     double radius_rate = 0.0;  // dr/dt [length/time]
     int share = 0;
   };
-  struct Share {     // S = sum (n_p . N)^2 over the active pairs of one body pair (contact_forces.hpp)
-    int body_a = 0, partner = 0;  // partner: a body, or -1 - wall
-    Vec normal_sum{};
-    int n_active = 0;
-    double length = 0.0;          // |sum of normals| (0: the normals cancel, no common direction)
-    double parallel = 0.0;        // S being summed
-    double inverse_sqrt_s = 1.0;
-  };
   struct Active {    // one touching pair or wall in the current inner step, with its law
     int a = 0, b = -1;  // candidates (b = -1: a wall)
     int share = 0;
@@ -145,7 +138,6 @@ class ContactSubcycler {
                   const std::vector<MassSpringBody>& bodies, double time);
   void release_list(std::vector<MassSpringBody>& bodies);  // candidates' state back into the bodies
   int candidate(int body, int point, const std::vector<MassSpringBody>& bodies);
-  int share_of(int body_a, int partner);
   // moved: the largest displacement of a candidate since the list was built [length].
   void contact_forces(const ContactModel& model, double time, double moved, ContactStats& stats);
   // A touching pair or wall into this inner step's list, its normal into its share's sum.
@@ -175,7 +167,8 @@ class ContactSubcycler {
   double near_reach_floor_ = 0.0; // smallest near_reach_ picked (a sixteenth of the skin) [length]
   double radius_rate_max_ = 0.0;  // largest |d(r_a + r_b)/dt| of the pairs [length/time]
   std::vector<Wall> walls_;
-  std::vector<Share> shares_;
+  DashpotGroups shares_;               // per body pair or body and wall in the list: its S (normal_contact_law.hpp)
+  std::vector<double> share_factor_;   // per share: 1 / sqrt(S) in the current inner step
   std::vector<Active> active_;
   std::vector<int> slot_;         // per body and point (offset_[b] + p): candidate index or -1
   std::vector<int> offset_;

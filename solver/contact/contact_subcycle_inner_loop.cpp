@@ -46,11 +46,9 @@ void kick_and_drift_candidates(int n, double dt, double drift_time, double kick_
 
 void ContactSubcycler::activate(const Active& a) {
   active_.push_back(a);
-  Share& s = shares_[a.share];
-  if (s.n_active == 0) touched_.push_back(a.share);
-  s.normal_sum[0] += a.normal[0];
-  s.normal_sum[1] += a.normal[1];
-  ++s.n_active;
+  ParallelPairs& s = shares_[a.share];
+  if (s.n_pairs == 0) touched_.push_back(a.share);
+  s.add(a.normal);
 }
 
 // DEM forces on the candidates at their current state (contact_forces.cpp, restricted to the list),
@@ -109,18 +107,11 @@ void ContactSubcycler::contact_forces(const ContactModel& model, double time, do
   stats.n_wall_contacts = std::max(stats.n_wall_contacts, static_cast<int>(active_.size()) - n_pairs);
   pair_checks_ += static_cast<long>(near_.size());
   if (active_.empty()) return;
-  // S of each share (normal_contact_law.hpp: mean_normal_length, parallel_share).
+  // S of each share, and its pairs' dashpot factor (normal_contact_law.hpp).
   if (model.share_damping_among_active_pairs) {
-    for (const int k : touched_) {
-      Share& s = shares_[k];
-      s.length = mean_normal_length(s.normal_sum, s.n_active);
-      if (s.length == 0.0) s.parallel = static_cast<double>(s.n_active);
-    }
-    for (const Active& a : active_) {
-      Share& s = shares_[a.share];
-      if (s.length != 0.0) s.parallel += parallel_share(a.normal, s.normal_sum, s.length);
-    }
-    for (const int k : touched_) shares_[k].inverse_sqrt_s = 1.0 / std::sqrt(shares_[k].parallel);
+    for (const int k : touched_) shares_[k].close();
+    for (const Active& a : active_) shares_[a.share].add_share(a.normal);
+    for (const int k : touched_) share_factor_[k] = shares_[k].damping_factor();
   }
   double* const force_x = points_.force_x.data();
   double* const force_y = points_.force_y.data();
@@ -135,7 +126,7 @@ void ContactSubcycler::contact_forces(const ContactModel& model, double time, do
       relative_v += v[a.b];
     }
     double damping = a.damping;
-    if (model.share_damping_among_active_pairs) damping *= shares_[a.share].inverse_sqrt_s;
+    if (model.share_damping_among_active_pairs) damping *= share_factor_[a.share];
     const Vec force = contact_force_on_first({a.stiffness, damping}, {a.overlap, a.normal, {relative_u, relative_v}});
     force_x[a.a] += force[0];
     force_y[a.a] += force[1];
@@ -147,12 +138,7 @@ void ContactSubcycler::contact_forces(const ContactModel& model, double time, do
     }
   }
   // The shares' sums back to zero for the next inner step.
-  for (const int k : touched_) {
-    Share& s = shares_[k];
-    s.normal_sum = {0.0, 0.0};
-    s.n_active = 0;
-    s.parallel = 0.0;
-  }
+  for (const int k : touched_) shares_[k] = ParallelPairs{};
   touched_.clear();
   // The points with a force, each once, in candidate order (the work sums in that order).
   std::sort(forced_.begin(), forced_.end());

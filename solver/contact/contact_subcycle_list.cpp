@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "contact/normal_contact_law.hpp"
 #include "solid/spring_dashpot.hpp"
 
 namespace ibms {
@@ -51,16 +52,6 @@ int ContactSubcycler::candidate(int body, int point, const std::vector<MassSprin
   return slot;
 }
 
-int ContactSubcycler::share_of(int body_a, int partner) {
-  for (std::size_t s = 0; s < shares_.size(); ++s)
-    if (shares_[s].body_a == body_a && shares_[s].partner == partner) return static_cast<int>(s);
-  Share share;
-  share.body_a = body_a;
-  share.partner = partner;
-  shares_.push_back(share);
-  return static_cast<int>(shares_.size()) - 1;
-}
-
 void ContactSubcycler::release_list(std::vector<MassSpringBody>& bodies) {
   for (int i = 0; i < points_.size(); ++i) {
     const int body = points_.body[i], point = points_.point[i];
@@ -87,7 +78,7 @@ void ContactSubcycler::build_list(const ContactModel& model, const WallBox& box,
   near_reach_floor_ = skin / 16.0;
   radius_rate_max_ = 0.0;
   const double half_skin = 0.5 * skin;
-  const double zeta_factor = 2.0 * damping_ratio_from_restitution(model.restitution_coefficient);
+  const double zeta = damping_ratio_from_restitution(model.restitution_coefficient);
   // Pairs of different bodies closer than the skin: the pair search on CDS grown by s / 2.
   gather_contact_spheres(model, bodies, spheres_, members);
   for (int s = 0; s < spheres_.n_spheres(); ++s) spheres_.radius[s] += time * radius_rate_[spheres_.body[s]];
@@ -111,8 +102,8 @@ void ContactSubcycler::build_list(const ContactModel& model, const WallBox& box,
       pair.radius_rate = radius_rate_[body_s] + radius_rate_[body_t];
       const double m_eff = contact_effective_mass(model, bodies, body_s, spheres_.point[s], body_t, spheres_.point[t]);
       pair.stiffness = model.pair_stiffness(m_eff);
-      pair.damping = zeta_factor * std::sqrt(m_eff * pair.stiffness);
-      pair.share = share_of(std::min(body_s, body_t), std::max(body_s, body_t));
+      pair.damping = dashpot_constant(zeta, m_eff, pair.stiffness);
+      pair.share = shares_.index(contact_group_key(body_s, body_t));
       pairs_.push_back(pair);
       gap_.push_back(std::sqrt(d[0]*d[0] + d[1]*d[1]) - pair.radius_sum);
       radius_rate_max_ = std::max(radius_rate_max_, std::abs(pair.radius_rate));
@@ -123,32 +114,24 @@ void ContactSubcycler::build_list(const ContactModel& model, const WallBox& box,
     for (std::size_t i = 0; i < members.count(bodies.size()); ++i) {
       const int b = static_cast<int>(members.at(i));
       const double radius = model.cds_radius_of(bodies[b]) + time * radius_rate_[b];
-      for (int k = 0; k < bodies[b].n_surface; ++k) {
-        for (int c = 0; c < 2; ++c) {
-          if (box.periodic[c]) continue;
-          const double x = bodies[b].position[k][c];
-          const double wall_coordinate[2] = {box.origin[c], box.origin[c] + box.length[c]};
-          for (int side = 0; side < 2; ++side) {
-            if (!box.is_wall(c, side)) continue;
-            const double distance = side == 0 ? x - wall_coordinate[0] : wall_coordinate[1] - x;
-            if (!(distance - radius < half_skin)) continue;
-            Wall wall;
-            wall.a = candidate(b, k, bodies);
-            wall.axis = c;
-            wall.side = side;
-            wall.radius = radius;
-            wall.radius_rate = radius_rate_[b];
-            wall.coordinate = wall_coordinate[side];
-            const double m_eff = contact_effective_mass(model, bodies, b, k, -1, 0);
-            wall.stiffness = model.pair_stiffness(m_eff);
-            wall.damping = zeta_factor * std::sqrt(m_eff * wall.stiffness);
-            wall.share = share_of(b, -1 - (2*c + side));
-            walls_.push_back(wall);
-          }
-        }
-      }
+      for_each_point_near_walls(bodies[b].position, bodies[b].n_surface, box, radius, half_skin,
+                                [&](int k, int c, int side, double /*distance*/) {
+                                  Wall wall;
+                                  wall.a = candidate(b, k, bodies);
+                                  wall.axis = c;
+                                  wall.side = side;
+                                  wall.radius = radius;
+                                  wall.radius_rate = radius_rate_[b];
+                                  wall.coordinate = side == 0 ? box.origin[c] : box.origin[c] + box.length[c];
+                                  const double m_eff = contact_effective_mass(model, bodies, b, k, -1, 0);
+                                  wall.stiffness = model.pair_stiffness(m_eff);
+                                  wall.damping = dashpot_constant(zeta, m_eff, wall.stiffness);
+                                  wall.share = shares_.index(wall_group_key(b, 2 * c + side));
+                                  walls_.push_back(wall);
+                                });
     }
   }
+  share_factor_.resize(static_cast<std::size_t>(shares_.size()));
 }
 
 

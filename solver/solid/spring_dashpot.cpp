@@ -19,7 +19,7 @@ double damping_ratio_from_restitution(double restitution) {
 double damping_from_restitution(double restitution, double m_eff, double stiffness) {
   if (!(m_eff > 0.0) || !(stiffness >= 0.0))
     throw std::invalid_argument("damping_from_restitution: need m_eff > 0 and stiffness >= 0");
-  return 2.0 * damping_ratio_from_restitution(restitution) * std::sqrt(m_eff * stiffness);
+  return dashpot_constant(damping_ratio_from_restitution(restitution), m_eff, stiffness);
 }
 
 double restitution_from_damping(double damping, double m_eff, double stiffness) {

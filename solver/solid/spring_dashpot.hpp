@@ -4,6 +4,7 @@
 //   t_c = pi / omega_d = sqrt(m_eff/k) sqrt(pi^2 + ln^2 e),  delta_max ~ v0 sqrt(m_eff/k).
 // Units per unit depth: k [force/length^2], c [force time/length^2], m_eff [mass/length].
 #pragma once
+#include <cmath>
 
 namespace ibms {
 
@@ -12,6 +13,10 @@ double damping_ratio_from_restitution(double restitution);
 
 // Dashpot constant c = 2 zeta sqrt(m_eff k) (docs/method.md §1.5, A8).
 double damping_from_restitution(double restitution, double m_eff, double stiffness);
+// The same from zeta = damping_ratio_from_restitution(e), for callers that build many pairs.
+inline double dashpot_constant(double damping_ratio, double m_eff, double stiffness) {
+  return 2.0 * damping_ratio * std::sqrt(m_eff * stiffness);
+}
 
 // Inverse: e = exp(-pi zeta / sqrt(1 - zeta^2)) with zeta = c / (2 sqrt(m_eff k)); 0 if zeta >= 1.
 double restitution_from_damping(double damping, double m_eff, double stiffness);

@@ -44,6 +44,13 @@ bool uses_implicit_springs(const MassSpringBody& body, double dt, double spring_
   return false;
 }
 
+SpringStepping spring_stepping(const MassSpringBody& body, double dt, SpectralWorkspace& scratch) {
+  const bool forced_implicit = body.integrator == SpringIntegrator::implicit_euler;
+  const double substep = forced_implicit ? HUGE_VAL : stable_substep(body, /*safety=*/0.5, scratch);
+  if (uses_implicit_springs(body, dt, substep)) return {true, HUGE_VAL};
+  return {false, substep};
+}
+
 namespace {
 
 // Rigid body: total force and torque about X_c of the frozen hydrodynamic load, this sub-step's
@@ -175,11 +182,9 @@ int group_substeps(const SolidStepInputs& in, SubstepGroups& groups, int g, cons
   for (std::size_t i = 0; i < members.count(bodies.size()); ++i) {
     const std::size_t b = members.at(i);
     ++n_members;
-    // The spectral bound only where it decides something (explicit or automatic springs).
-    const bool forced_implicit = bodies[b].integrator == SpringIntegrator::implicit_euler;
-    const double spring_substep = forced_implicit ? HUGE_VAL : stable_substep(bodies[b], /*safety=*/0.5, scratch);
-    groups.implicit_of_body[b] = uses_implicit_springs(bodies[b], in.dt, spring_substep) ? 1 : 0;
-    if (!groups.implicit_of_body[b]) spring_dt = std::min(spring_dt, spring_substep);
+    const SpringStepping springs = spring_stepping(bodies[b], in.dt, scratch);
+    groups.implicit_of_body[b] = springs.implicit ? 1 : 0;
+    spring_dt = std::min(spring_dt, springs.substep);
     // Rigid and prescribed bodies move all their points at once; implicit springs are not slow.
     if (bodies[b].kind != BodyKind::mass_spring || groups.implicit_of_body[b]) inner_loop_fits = false;
   }

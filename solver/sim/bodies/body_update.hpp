@@ -90,6 +90,15 @@ inline constexpr double implicit_springs_above_substeps = 50.0;
 // Whether body b's springs take the implicit step in a fluid step of length dt, given their
 // explicit stable sub-step (only mass_spring bodies with springs can).
 bool uses_implicit_springs(const MassSpringBody& body, double dt, double spring_substep);
+// How a body's springs are stepped in a fluid step of length dt (the run's rule, which `ibms info`
+// prints): implicit (forced by spring_integrator, or chosen by uses_implicit_springs), or explicit
+// in sub-steps of at most `substep`, the springs' stable sub-step (safety 0.5; the spectral bound
+// is computed only where it decides something). substep is infinity when implicit.
+struct SpringStepping {
+  bool implicit = false;
+  double substep = HUGE_VAL;  // [time]
+};
+SpringStepping spring_stepping(const MassSpringBody& body, double dt, SpectralWorkspace& scratch);
 
 // What advance_bodies did: the most sub-steps of any group, and the sub-steps summed over bodies
 // (the work of the springs: with one group, n_bodies * max_substeps).
