@@ -86,14 +86,21 @@ struct ParallelPairs {
 // vector whose capacity is reused (no allocation once grown).
 class DashpotGroups {
  public:
-  void clear() { groups_.clear(); }
+  void clear() {
+    groups_.clear();
+    last_ = 0;
+  }
   void reserve(std::size_t n) { groups_.reserve(n); }
   // The group of this key (contact_group_key, wall_group_key), added with empty sums if it is new.
+  // Consecutive look-ups often ask for the same group (the pair search lists a body pair's pairs
+  // together), so the last group found is tried first.
   int index(const std::array<int, 2>& key) {
-    for (std::size_t g = 0; g < groups_.size(); ++g)
-      if (groups_[g].key == key) return static_cast<int>(g);
+    const auto is = [&key](const Group& g) { return g.key[0] == key[0] && g.key[1] == key[1]; };
+    if (last_ < groups_.size() && is(groups_[last_])) return static_cast<int>(last_);
+    for (last_ = 0; last_ < groups_.size(); ++last_)
+      if (is(groups_[last_])) return static_cast<int>(last_);
     groups_.push_back({key, {}});
-    return static_cast<int>(groups_.size()) - 1;
+    return static_cast<int>(last_);
   }
   ParallelPairs& operator[](int g) { return groups_[g].sums; }
   const ParallelPairs& operator[](int g) const { return groups_[g].sums; }
@@ -105,6 +112,7 @@ class DashpotGroups {
     ParallelPairs sums;
   };
   std::vector<Group> groups_;
+  std::size_t last_ = 0;  // the group of the last look-up
 };
 
 // The key of a contact's dashpot group: {min, max} of two bodies; a body and wall w (0..3) give
