@@ -354,6 +354,25 @@ def class_counts_table(order, metas, judged):
                               r"the cases' verdicts are counted above.") + "}")
 
 
+def deviation_rows(points):
+    """(number, deviation, band low, band high, verdict) in per cent of the reference for each
+    point of predicted_against_reference with a non-zero reference: the band is the target's
+    own (its bounds over the reference), independent of where the figure lies."""
+    rows = []
+    for k, (case, metric, v, y, lo, hi, verdict) in enumerate(points, 1):
+        if v == 0:
+            continue
+        d, dlo, dhi = 100 * (y / v - 1), 100 * (lo / v - 1), 100 * (hi / v - 1)
+        rows.append((k, d, min(dlo, dhi), max(dlo, dhi), verdict))
+    return rows
+
+
+def _symlog_margin(x):
+    """An axis limit beyond x >= 0 on a symlog axis with linear range +-1: 1.5 inside it, else
+    about half a decade beyond x."""
+    return 1.5 if x < 1.0 else x * 3.0
+
+
 def quantities_summary_section(out, order, metas, judged, fig_dir):
     """All quantities with a reference value: predicted against reference (one scatter plot, the
     reference's band as an error bar), and the bias and scatter per class of evidence (as the NIST
@@ -370,9 +389,14 @@ def quantities_summary_section(out, order, metas, judged, fig_dir):
     import matplotlib.pyplot as plt
     fig, (ax, dax) = plt.subplots(1, 2, figsize=(7.2, 3.6), gridspec_kw=dict(width_ratios=[1, 1.3]))
     colours = {"pass": "tab:green", "miss": "tab:orange", "fail": "tab:red"}
+    # The target's band on the ibms axis at the reference (grey, capped), the figure as its point:
+    # a miss lies off its bar. Bands narrower than the marker (most published ones on a log axis)
+    # hide behind it; the right panel shows them in per cent.
     for case, metric, v, y, lo, hi, verdict in points:
-        ax.errorbar([v], [y], xerr=[[max(v - lo, 0.0)], [max(hi - v, 0.0)]], fmt="o", ms=4,
-                    color=colours.get(verdict, "grey"), elinewidth=1, capsize=2)
+        if v > 0 and lo > 0:
+            ax.vlines([v], [lo], [hi], colors="0.5", linewidth=3, alpha=0.7)
+            ax.plot([v, v], [lo, hi], "_", color="0.3", ms=6)
+        ax.plot([v], [y], "o", ms=4, color=colours.get(verdict, "grey"), zorder=3)
     values = [abs(p[2]) for p in points] + [abs(p[3]) for p in points]
     lo_v, hi_v = max(min(values) * 0.5, 1e-6), max(values) * 2
     ax.plot([lo_v, hi_v], [lo_v, hi_v], "k-", lw=0.8)
@@ -387,30 +411,35 @@ def quantities_summary_section(out, order, metas, judged, fig_dir):
     ax.plot([], [], "k:", label="$\\pm$10 %")
     ax.legend(loc="upper left", fontsize=7)
     ax.tick_params(labelsize=7)
-    # The same figures as deviations from their references, numbered as in the table below, the
-    # target's band as the bar: per-cent misses that the log-log panel cannot show.
-    for k, (case, metric, v, y, lo, hi, verdict) in enumerate(points, 1):
-        if v == 0:
-            continue
-        d, dlo, dhi = 100 * (y / v - 1), 100 * (lo / v - 1), 100 * (hi / v - 1)
-        dax.errorbar([k], [d], yerr=[[max(d - dlo, 0.0)], [max(dhi - d, 0.0)]], fmt="none", ecolor="0.6",
-                     elinewidth=3, alpha=0.6)
-        dax.plot([k], [d], "o", ms=4, color=colours.get(verdict, "grey"))
+    # The same figures as deviations from their references, numbered as in the table below: each
+    # target's band drawn from its lower to its upper bound and the figure as its own point, so a
+    # miss shows outside its band (per-cent misses that the log-log panel cannot show).
+    rows = deviation_rows(points)
+    for k, d, dlo, dhi, verdict in rows:
+        dax.vlines([k], [dlo], [dhi], colors="0.6", linewidth=4, alpha=0.6)
+        dax.plot([k], [d], "o", ms=4, color=colours.get(verdict, "grey"), zorder=3)
     dax.axhline(0.0, color="k", lw=0.6)
     dax.set_xticks(range(1, len(points) + 1))
+    dax.set_xlim(0.3, len(points) + 0.7)
     dax.set_xlabel("figure (table below)", fontsize=8)
     dax.set_ylabel("ibms / reference $-$ 1 [%] (bar: target band)", fontsize=8)
     dax.set_yscale("symlog", linthresh=1.0)
+    # Every point and band inside the frame: the axis reaches half a decade beyond the largest
+    # value on either side (symlog: logarithmic beyond +-1 %).
+    ext = [v for _, d, dlo, dhi, _ in rows for v in (d, dlo, dhi) if math.isfinite(v)] or [0.0]
+    dax.set_ylim(-_symlog_margin(-min(ext)), _symlog_margin(max(ext)))
     dax.tick_params(labelsize=7)
     fig.tight_layout()
     path = os.path.join(fig_dir, "quantities_summary.pdf")
     figs.save(fig, path)
     out.append(figure(path, "Left: every quantity with a reference value against it (green pass, orange miss, red "
-                            "FAIL; bars: the target's band; dotted: $\\pm$10\\,\\%). Right: the same figures as "
-                            "per-cent deviations from their references (linear within $\\pm$1\\,\\%, logarithmic "
-                            "beyond), grey bars the target bands, numbered as in the table below.", height=0.28))
+                            "FAIL; grey bars: the target's band on the ibms axis, most narrower than the marker; dotted: "
+                            "$\\pm$10\\,\\%). Right: the same figures as per-cent deviations from their references "
+                            "(linear within $\\pm$1\\,\\%, logarithmic beyond), numbered as in the table below; each "
+                            "grey bar spans its target's band from its lower to its upper bound, the point is the "
+                            "figure itself (outside its bar: a miss).", height=0.28))
     out.append(longtable("rlp{6.4cm}rrrl", ["\\#", "case", "figure", "reference", "ibms", "deviation", "verdict"],
-                         [[str(k), tt(case), esc(metric), num(v, 5), num(y, 5),
+                         [[str(k), tt(case), md_text(metric), num(v, 5), num(y, 5),
                            "%+.3g\\,\\%%" % (100 * (y / v - 1)) if v else "--", cases_mod.verdict_cell(verdict)]
                           for k, (case, metric, v, y, lo, hi, verdict) in enumerate(points, 1)],
                          caption="The figures of the summary plot.", size="scriptsize"))

@@ -78,6 +78,32 @@ double orientation(const Vec& o, const Vec& p, const Vec& q) {
   return (p[0] - o[0]) * (q[1] - o[1]) - (p[1] - o[1]) * (q[0] - o[0]);
 }
 
+// Two edges p0-p1 and q0-q1 cross (properly: each separates the other's end points).
+bool edges_cross(const Vec& p0, const Vec& p1, const Vec& q0, const Vec& q1) {
+  const double o1 = orientation(p0, p1, q0), o2 = orientation(p0, p1, q1);
+  const double o3 = orientation(q0, q1, p0), o4 = orientation(q0, q1, p1);
+  return ((o1 > 0 && o2 < 0) || (o1 < 0 && o2 > 0)) && ((o3 > 0 && o4 < 0) || (o3 < 0 && o4 > 0));
+}
+
+// Pairs of non-adjacent edges of the rim that cross.
+int rim_self_crossings(const MassSpringBody& body) {
+  const int n = body.n_surface;
+  int crossings = 0;
+  for (int l = 0; l < n; ++l) {
+    const Vec& p0 = body.position[l];
+    const Vec& p1 = body.position[(l + 1) % n];
+    const Box edge{{std::min(p0[0], p1[0]), std::min(p0[1], p1[1])}, {std::max(p0[0], p1[0]), std::max(p0[1], p1[1])}};
+    for (int m = l + 2; m < n; ++m) {
+      if (l == 0 && m == n - 1) continue;  // the edge before l = 0 shares its point
+      const Vec& q0 = body.position[m];
+      const Vec& q1 = body.position[(m + 1) % n];
+      const Box other{{std::min(q0[0], q1[0]), std::min(q0[1], q1[1])}, {std::max(q0[0], q1[0]), std::max(q0[1], q1[1])}};
+      if (boxes_overlap(edge, other) && edges_cross(p0, p1, q0, q1)) ++crossings;
+    }
+  }
+  return crossings;
+}
+
 }  // namespace
 
 BodySeparation body_separation(const std::vector<MassSpringBody>& bodies, std::array<double, 2> lower,
@@ -96,6 +122,7 @@ BodySeparation body_separation(const std::vector<MassSpringBody>& bodies, std::a
           s.min_wall_distance = std::min({s.min_wall_distance, body.position[l][d] - lower[d], upper[d] - body.position[l][d]});
     box[b] = rim_box(body);
     extent = std::max({extent, box[b].high[0] - box[b].low[0], box[b].high[1] - box[b].low[1]});
+    if (body.kind == BodyKind::mass_spring) s.n_self_crossings += rim_self_crossings(body);
   }
   if (n < 2) return s;
   // The shift that brings body b next to body a: the minimum image of their boxes' centres (a
@@ -169,10 +196,7 @@ BodySeparation body_separation(const std::vector<MassSpringBody>& bodies, std::a
       for (int m = 0; m < B.n_surface; ++m) {
         const Vec q0{B.position[m][0] + shift[0], B.position[m][1] + shift[1]};
         const Vec q1{B.position[(m + 1) % B.n_surface][0] + shift[0], B.position[(m + 1) % B.n_surface][1] + shift[1]};
-        const double o1 = orientation(p0, p1, q0), o2 = orientation(p0, p1, q1);
-        const double o3 = orientation(q0, q1, p0), o4 = orientation(q0, q1, p1);
-        if (((o1 > 0 && o2 < 0) || (o1 < 0 && o2 > 0)) && ((o3 > 0 && o4 < 0) || (o3 < 0 && o4 > 0)))
-          ++s.n_edge_crossings;
+        if (edges_cross(p0, p1, q0, q1)) ++s.n_edge_crossings;
       }
     }
   }

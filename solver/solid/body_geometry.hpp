@@ -18,6 +18,11 @@ struct BodySeparation {
   double min_rim_distance = 0.0;  // smallest distance between rim points of different bodies [length]
   int n_points_inside_others = 0; // rim points of one body inside another's rim polygon [-]
   int n_edge_crossings = 0;       // pairs of rim edges of different bodies that cross [-]
+  // Pairs of non-adjacent edges of one mass-spring rim that cross: a rim folded through itself. The
+  // papers' model has no self-contact (CDS act between different bodies), so nothing stops a soft
+  // rim from folding; a folded rim is outside the model's validity (its area and volume weights
+  // lose their meaning) [-].
+  int n_self_crossings = 0;
   double min_wall_distance = 0.0; // smallest distance from any rim point to a wall [length]
 };
 

@@ -5,7 +5,10 @@
 //      stays >= r_c / 2 (r_c = 0.04, the CDS radius: contact starts at r_c);
 //   3. the body contacts keep the bodies apart: the smallest rim-point distance between different
 //      bodies stays >= r_c (contact starts at 2 r_c), no rim point inside another body's rim
-//      polygon and no crossing rim edges (sampled at every output step);
+//      polygon and no crossing rim edges between bodies (sampled at every output step);
+//   3b. no rim folds through itself (no two edges of one rim cross; the papers' model has no
+//      self-contact): a gate for k = 100; for k = 10 the first time a rim folds is recorded
+//      (README.md: the soft body squeezed in the lid's corner folds before t = 20);
 //   4. areas stay bounded: every body's rim-polygon area stays within [0.5, 1.5] A0 (the wheel
 //      has no area constraint; outside that band it has collapsed or blown up);
 // and across the runs
@@ -33,6 +36,7 @@ namespace {
 
 struct RunFigures {
   double end_time = 0, min_wall = INFINITY, min_rim = INFINITY, max_inside = 0, max_crossings = 0;
+  double first_fold = INFINITY;  // first output time at which a rim crosses itself
   double area_min = INFINITY, area_max = 0, mean_deformation = 0, max_deformation = 0;
 };
 
@@ -44,6 +48,13 @@ RunFigures measure(const std::string& base) {
   for (double v : s.at("bodies/min_rim_distance")) f.min_rim = std::min(f.min_rim, v);
   for (double v : s.at("bodies/n_points_inside_others")) f.max_inside = std::max(f.max_inside, v);
   for (double v : s.at("bodies/n_edge_crossings")) f.max_crossings = std::max(f.max_crossings, v);
+  const auto& time = s.at("time");
+  const auto& folds = s.at("bodies/n_self_crossings");
+  for (std::size_t k = 0; k < folds.size(); ++k)
+    if (folds[k] > 0) {
+      f.first_fold = time[k];
+      break;
+    }
   double sum = 0;
   long count = 0;
   for (int b = 0;; ++b) {
@@ -95,6 +106,15 @@ int main(int argc, char** argv) {
                   apart ? "PASS" : "FAIL", label, f.min_rim, r_c, f.max_inside, f.max_crossings);
       std::printf("%s %s: 4. area / A0 in [%.4f, %.4f] (band [0.5, 1.5])\n", bounded ? "PASS" : "FAIL", label,
                   f.area_min, f.area_max);
+      // 3b: the stiffer bodies must stay unfolded; the soft ones' first fold is a measured figure.
+      const bool gate_fold = std::string(label) == "k = 100";
+      const bool unfolded = !std::isfinite(f.first_fold);
+      if (gate_fold)
+        std::printf("%s %s: 3b. no rim crosses itself (first fold at t = %g)\n", unfolded ? "PASS" : "FAIL", label,
+                    f.first_fold);
+      else
+        std::printf("     %s: 3b. first time a rim crosses itself: %s\n", label,
+                    unfolded ? "none" : std::to_string(f.first_fold).c_str());
       std::printf("     %s: deformation parameter mean %.4f, max %.4f\n", label, f.mean_deformation, f.max_deformation);
       const std::string l = prefix + label;
       record(name, l + ": reached end time (measured: t_end)", end_time, f.end_time, reached);
@@ -103,9 +123,15 @@ int main(int argc, char** argv) {
              f.min_rim, apart);
       record(name, l + ": min area / A0 (>= 0.5)", area_lo, f.area_min, f.area_min >= area_lo);
       record(name, l + ": max area / A0 (<= 1.5)", area_hi, f.area_max, f.area_max <= area_hi);
+      if (gate_fold)
+        record(name, l + ": no rim crosses itself (measured: first fold time, inf = none)", end_time, f.first_fold,
+               unfolded);
+      else
+        record_info(name, l + ": first time a rim crosses itself (inf = none; no self-contact in the model)",
+                    f.first_fold);
       record_info(name, l + ": mean deformation parameter", f.mean_deformation);
       record_info(name, l + ": max deformation parameter", f.max_deformation);
-      all = all && reached && inside_box && apart && bounded;
+      all = all && reached && inside_box && apart && bounded && (!gate_fold || unfolded);
     }
     const double ratio = k10.mean_deformation / k100.mean_deformation;
     const bool softer = ratio >= ratio_min;

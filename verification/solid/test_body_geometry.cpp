@@ -6,6 +6,9 @@
 //     the joining line, are 0.05 apart; no point is inside the other; the wall distance is the
 //     smallest of the rim extents to the box; rim points inside the other body and crossing rim
 //     edges are counted; periodic directions use the minimum image (bodies across the seam);
+//   - self-crossings: a regular rim has none; a rim with two points swapped (a bow tie in it)
+//     has exactly one pair of crossing edges, counted for one body as for several; a rigid
+//     body's rim is not examined;
 //   - the broad phase (pairs from hashed boxes) gives exactly what every pair of bodies and points
 //     gives, on scattered, overlapping wheels, dense and sparse, with walls and periodic.
 #define BOOST_TEST_MODULE body_geometry
@@ -173,4 +176,18 @@ BOOST_AUTO_TEST_CASE(the_broad_phase_finds_what_every_pair_finds) {
       if (spread == 1.0) BOOST_TEST(oracle.n_edge_crossings > 0);
     }
   }
+}
+
+BOOST_AUTO_TEST_CASE(rim_folded_through_itself_is_counted) {
+  MassSpringBody body = wheel({0.5, 0.5}, 0.2, 16);
+  const std::array<double, 2> lower{0.0, 0.0}, upper{1.0, 1.0};
+  BOOST_TEST(body_separation({body}, lower, upper, {false, false}).n_self_crossings == 0);
+  // Swapping points 3 and 4 makes edges 2-4' and 3'-5 (the points' new order 2, 4, 3, 5) cross
+  // once: a rim folded over itself between neighbours.
+  std::swap(body.position[3], body.position[4]);
+  BOOST_TEST(body_separation({body}, lower, upper, {false, false}).n_self_crossings == 1);
+  MassSpringBody other = wheel({0.2, 0.2}, 0.2, 16);
+  BOOST_TEST(body_separation({body, other}, lower, upper, {false, false}).n_self_crossings == 1);
+  body.kind = BodyKind::rigid;  // a rigid rim does not fold: not examined
+  BOOST_TEST(body_separation({body}, lower, upper, {false, false}).n_self_crossings == 0);
 }

@@ -236,6 +236,8 @@ BodyRow body_series(const Simulation& sim, const ControlVolumeMonitor& control_v
                                                {g.origin_x + g.length_x, g.origin_y + g.length_y},
                                                {g.periodic_x, g.periodic_y});
     if (!(g.periodic_x && g.periodic_y)) row.trailing.push_back({"bodies/min_wall_distance", "length", sep.min_wall_distance});
+    if (sim.scene().has_kind(BodySpec::Kind::mass_spring))
+      row.trailing.push_back({"bodies/n_self_crossings", "-", static_cast<double>(sep.n_self_crossings)});
     if (n_bodies > 1) {
       row.trailing.push_back({"bodies/min_rim_distance", "length", sep.min_rim_distance});
       row.trailing.push_back({"bodies/n_points_inside_others", "-", static_cast<double>(sep.n_points_inside_others)});
