@@ -350,7 +350,8 @@ def class_counts_table(order, metas, judged):
                       caption=r"Counts per class of evidence, in \emph{figures}: the lines of "
                               r"\texttt{validation/results.csv} judged against a target (\emph{info} lines not "
                               r"counted; \S\ref{sec:checks}). A case holds several figures, and a figure of ibms "
-                              r"against itself (GCI, wheel against rigid) counts as such inside a published case; "
+                              r"against itself (GCI, Richardson value, wheel against rigid, control-volume against "
+                              r"immersed-boundary $c_D$) counts as such inside a published case; "
                               r"the cases' verdicts are counted above.") + "}")
 
 
@@ -439,7 +440,7 @@ def quantities_summary_section(out, order, metas, judged, fig_dir):
                             "grey bar spans its target's band from its lower to its upper bound, the point is the "
                             "figure itself (outside its bar: a miss).", height=0.28))
     out.append(longtable("rlp{6.4cm}rrrl", ["\\#", "case", "figure", "reference", "ibms", "deviation", "verdict"],
-                         [[str(k), tt(case), md_text(metric), num(v, 5), num(y, 5),
+                         [[str(k), tt(case), esc(metric), num(v, 5), num(y, 5),
                            "%+.3g\\,\\%%" % (100 * (y / v - 1)) if v else "--", cases_mod.verdict_cell(verdict)]
                           for k, (case, metric, v, y, lo, hi, verdict) in enumerate(points, 1)],
                          caption="The figures of the summary plot.", size="scriptsize"))
@@ -466,7 +467,8 @@ def checks_by_case_section(out, order, metas, judged):
     out.append("Every line of \\texttt{validation/results.csv} (last line per case and metric), grouped by "
                "case. Source: P published, E exact, O ibms's own (the case's mark from its README; lines "
                "comparing ibms with itself, such as the grid convergence index GCI of Roache %s in the form of "
-               "Celik et al. %s and wheel against rigid, are O). \\emph{gate}: "
+               "Celik et al. %s, observed orders, Richardson values of ibms's own grids, the change over the "
+               "grid before, wheel against rigid and control-volume against immersed-boundary $c_D$, are O). \\emph{gate}: "
                "\\emph{check} when the case's check program judged the line, \\emph{report} when this report "
                "judged an \\emph{info} line against its target (rules in \\texttt{reports/report\\_cases.py}).\n"
                % (cases_mod.cite("roache1994"), cases_mod.cite("celik2008")))

@@ -384,8 +384,17 @@ CAUSES = [
 PRINCIPAL = {"dfg_cylinder_2d1": r"^drag_coefficient (?:at D/h|Richardson)",
              "dfg_cylinder_2d2": r"^drag_coefficient_max (?:at D/h|Richardson)"}
 
-# Lines compared with ibms itself inside a case compared with the literature.
-OWN_METRICS = r"GCI|wheel / rigid|observed order|non-swelling|approach to the D = 0.30 run|before onset"
+# Lines compared with ibms itself inside a case compared with the literature: grid convergence
+# (GCI, observed order, a Richardson value of ibms's own grids with no reference in the line, the
+# change over the grid before), one ibms run against another where no paper states the outcome
+# (wheel / rigid, the swelling disk against the D = 0.30 run) and one ibms force against another
+# (control-volume against immersed-boundary c_D). A Richardson value judged against a reference
+# ("... relative deviation from the reference") stays with the case's mark, and so do the swelling
+# cavity's swelling-against-non-swelling lines: they test the paper's qualitative claim (Figs. 2-4
+# of Guinea et al. 2023: swelling particles travel less), and its per-run lines (t_end reached,
+# rim distances) judge one run each.
+OWN_METRICS = (r"GCI|wheel / rigid|observed order|approach to the D = 0.30 run|before onset"
+               r"|control-volume|immersed-boundary c_D|over the one before|^Richardson value \[")
 
 
 def finest_grids(results):
@@ -503,14 +512,18 @@ def _case_verdict(c):
     # The headline: a failed check first (the case's FAIL); then the case's principal published
     # quantity (PRINCIPAL) where it is judged on its published bounds; then the worst figure, a
     # figure judged on published bounds before one judged on a target the case sets (check
-    # tolerance, case_criteria.hpp, README) at equal verdict, the farthest from its target first.
+    # tolerance, case_criteria.hpp, README) at equal verdict, then one of the case's class before
+    # one of ibms against itself, the farthest from its target first.
     rank = {"fail": 3, "miss": 2, "pass": 1}
     principal = PRINCIPAL.get(c["folder"])
 
+    # At equal verdict a figure of the case's own class (its README mark) goes before one of ibms
+    # against itself (OWN_METRICS: GCI, wheel / rigid, ...): a published case's headline is not an
+    # own figure while it has a published one of the same verdict.
     def key(r):
         published = r["target"] is not None and r["target"].published
         is_principal = bool(principal and published and re.search(principal, r["metric"]))
-        return (r["verdict"] == "fail", is_principal, rank[r["verdict"]], published, r["severity"])
+        return (r["verdict"] == "fail", is_principal, rank[r["verdict"]], published, not r["own"], r["severity"])
     c["headline"] = max(judged, key=key) if judged else None
 
 
