@@ -290,7 +290,9 @@ def summary_page(out, order, metas, judged, params, not_run=()):
                          r">{\raggedright\arraybackslash}p{3.5cm}>{\raggedright\arraybackslash}p{1.5cm}c"
                          r">{\raggedright\arraybackslash}p{4.6cm}",
                          ["case", "validates", "against (P published, E exact, O ibms's own)", "grid(s)",
-                          "verdict", "headline: the principal published figure, else the worst, against its target"], rows, size=None) + "}")
+                          "verdict", "headline: the principal published figure, else the worst, against its target"], rows, size=None,
+                         caption="The validation cases: what each validates, against what (its README's source "
+                                 "mark), its grids, its verdict and its headline figure.") + "}")
     out.append(r"{\small Cases (one verdict per case): %s. \emph{pass}: every judged figure meets its target; \emph{miss}: a figure "
                r"misses its published bounds (judged on them even where ibms's own gate passes) or, where no "
                r"published figure exists, a target the case sets (tolerance in \texttt{case\_criteria.hpp} or the "
@@ -344,9 +346,9 @@ def class_counts_table(order, metas, judged):
                    if evidence_class(metas[c], r) == key and r["verdict"] != "info"]
         rows.append([esc(name), str(len(figures))] + [str(figures.count(v)) for v in ("pass", "miss", "fail")])
     total = [sum(int(r[k]) for r in rows) for k in range(1, 5)]
-    rows.append([r"	extbf{all classes}"] + [str(n) for n in total])
+    rows.append([r"\textbf{all classes}"] + [str(n) for n in total])
     return (r"{\fontsize{8}{9}\selectfont" + "\n" +
-            longtable("lrrrr", ["class of evidence", "judged figures", "pass", "miss", "FAIL"], rows, size=None,
+            longtable("lrrrr", ["class of evidence", "judged figures", "pass", "miss", "FAIL"], rows, size=None, keep=True,
                       caption=r"Counts per class of evidence, in \emph{figures}: the lines of "
                               r"\texttt{validation/results.csv} judged against a target (\emph{info} lines not "
                               r"counted; \S\ref{sec:checks}). A case holds several figures, and a figure of ibms "
@@ -490,7 +492,10 @@ def checks_by_case_section(out, order, metas, judged):
     if rows:
         out.append(longtable(r"c>{\raggedright\arraybackslash}p{8.0cm}>{\raggedright\arraybackslash}p{3.0cm}rcl",
                                                    ["src", "claim / metric", "target", "measured", "verdict", "gate"],
-                                                   [r if len(r) > 1 else [r[0]] for r in rows], size="footnotesize"))
+                                                   [r if len(r) > 1 else [r[0]] for r in rows], size="footnotesize",
+                                                   caption="Every line of \\texttt{validation/results.csv} by case, "
+                                                           "with its source mark, target, measured value, verdict "
+                                                           "and gate."))
     else:
         out.append(r"\emph{No validation results: \texttt{validation/results.csv} not found (not run).}" + "\n")
 
@@ -757,12 +762,14 @@ def known_limitations(out, order, judged):
                                                 esc(r["metric"]),
                                                 "%s (%s) %s" % (cases_mod.measured_text(r), r["target_text"],
                                                                 cases_mod.verdict_cell(r["verdict"])),
-                                                cases_mod.cause_of(case, r["metric"])] for case, r in rows], size="footnotesize"))
+                                                cases_mod.cause_of(case, r["metric"])] for case, r in rows], size="footnotesize",
+                                              caption="Every miss and failure with its cause."))
 
 
 def environment_section(out, env, tests):
     out.append(r"\section{Environment and run times}")
-    out.append(longtable(r"p{4.5cm}p{11.5cm}", ["item", "value"], [[esc(k), esc(v)] for k, v in env]))
+    out.append(longtable(r"p{4.5cm}p{11.5cm}", ["item", "value"], [[esc(k), esc(v)] for k, v in env],
+                         caption="The environment of the outputs and of this report."))
     if not tests:
         out.append(r"\emph{Run times: not available (no \texttt{Testing/Temporary/LastTest.log}).}")
         return

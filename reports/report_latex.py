@@ -90,19 +90,21 @@ def status_cell(status):
     return esc(s) if s else "--"
 
 
-def longtable(spec, header, rows, caption=None, size="small", tabcolsep="4pt"):
+def longtable(spec, header, rows, caption=None, size="small", tabcolsep="4pt", keep=False):
     """A longtable in the given font size environment (None: the surrounding size) with the given
-    column separation (None: the surrounding one)."""
+    column separation (None: the surrounding one). keep: no page break inside the table (rows end
+    in \\\\*), so that a short table's last row (a total) is not left alone on the next page."""
     lines = ([r"\begin{%s}" % size] + ([r"\setlength{\tabcolsep}{%s}" % tabcolsep] if tabcolsep else [])
              if size else []) + \
         [r"\begin{longtable}{%s}" % spec]
+    end = r" \\*" if keep else r" \\"
     if caption:
-        lines.append(r"\caption{%s}\\" % caption)
-    head = " & ".join(r"\textbf{%s}" % h for h in header) + r" \\ \midrule"
+        lines.append(r"\caption{%s}" % caption + end)
+    head = " & ".join(r"\textbf{%s}" % h for h in header) + end + r" \midrule"
     lines += [r"\toprule", head, r"\endfirsthead", r"\toprule", head, r"\endhead",
               r"\bottomrule", r"\endlastfoot"]
     for r in rows:
-        lines.append(" & ".join(r) + r" \\")
+        lines.append(" & ".join(r) + end)
     lines += [r"\end{longtable}"] + ([r"\end{%s}" % size] if size else []) + [""]
     return "\n".join(lines)
 

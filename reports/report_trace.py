@@ -155,7 +155,8 @@ def traceability_section(out, source, tests, ctest_results):
                                                                              ", %d FAIL" % failed if failed else "")])
     out.append(r"{\fontsize{7}{8}\selectfont" + "\n" +
                longtable(r"l>{\raggedright\arraybackslash}p{4.2cm}>{\raggedright\arraybackslash}p{8.4cm}r",
-                         ["req.", "method section", "tests citing it", "pass / tests"], matrix, size=None) + "}")
+                         ["req.", "method section", "tests citing it", "pass / tests"], matrix, size=None,
+                         caption="Method sections of \\texttt{docs/method.md} and the tests that cite them.") + "}")
     out.append("\\noindent\\emph{Sections no test cites} (%d of %d): %s.\n" %
                (len(untested), len(sections), ", ".join(untested) if untested else "none"))
     table = [[tt(name), esc(", ".join(labels)), esc(claim) or "--", verdict_text(v)] for name, labels, claim, v in rows]
@@ -163,4 +164,5 @@ def traceability_section(out, source, tests, ctest_results):
     out.append(r"{\fontsize{7}{8}\selectfont" + "\n" +
                longtable(r">{\raggedright\arraybackslash}p{4.2cm}l>{\raggedright\arraybackslash}p{9.0cm}l",
                          ["test", "labels", "claim (the first sentence of its source's header)", "verdict"], table,
-                         size=None) + "}")
+                         size=None, caption="Every test the build defines with its stated claim and its verdict "
+                                            "in this build.") + "}")
