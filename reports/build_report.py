@@ -582,8 +582,10 @@ def literature_for(case, source, params):
                                                          "%sSch\u00e4fer & Turek (1996) bounds" % what))
                 if case.endswith("1"):
                     lit["lines"].setdefault(key, []).append((ref[q]["value"], "John & Matthies (2001)"))
-        notes.append("Grey bands: the published bounds of Sch\\\"afer \\& Turek %s%s. The axis range leaves out "
-                     "$t < %s$ (the inflow ramp-up) and each run's last, shortened step, which are drawn." %
+        notes.append("Grey bands: the published bounds of Sch\\\"afer \\& Turek %s%s. Every sample is drawn; the "
+                     "vertical axis is scaled to the samples after the inflow ramp-up ($t \\ge %s$) without each "
+                     "run's last, shortened step, so the start-up transient and that last step may run off the "
+                     "axes." %
                      (cases_mod.cite("schafer1996"),
                       "; dashed: the refined values of John \\& Matthies " + cases_mod.cite("john2001")
                       if case.endswith("1") else " for the maxima", num(lit.get("startup", 0), 3)))
@@ -739,7 +741,7 @@ def case_section(out, case, meta, build, source, judged, params, fig_dir):
             if p:
                 made += 1
                 out.append(figure(p, "Columns of \\texttt{%s} (written by the case's check) against its first "
-                                     "column." % esc(os.path.basename(f))))
+                                     "column, one panel per unit." % esc(os.path.basename(f))))
     if made == 0:
         out.append(r"\emph{No figures: no run outputs in \texttt{BUILD/validation/%s} (not run).}" % esc(case) + "\n")
 

@@ -4,6 +4,7 @@ import glob
 import math
 import os
 import re
+from collections import OrderedDict
 import textwrap
 import warnings
 
@@ -443,21 +444,35 @@ def trajectories(path, out):
 
 
 def generic_csv(path, out):
-    """Every column of a numeric CSV against its first column (histories written by checks)."""
+    """Every column of a numeric CSV against its first column (histories written by checks): one
+    panel per unit, its y axis labelled with the unit (a diameter in cm and velocities in cm/s are
+    not drawn on one axis), the legend beside the panel's data."""
     names, units, arr, comments = data.read_table_csv(path)
     if len(names) < 2 or arr.shape[0] < 2:
         return None
-    fig, ax = plt.subplots(figsize=(6.0, 3.0))
+    groups = OrderedDict()
     for i in range(1, min(len(names), 10)):
-        lab = names[i] + (" [%s]" % units[i] if units[i] else "")
-        ax.plot(arr[:, 0], arr[:, i], lw=1, label=lab)
-    ax.set_xlabel(names[0] + (" [%s]" % units[0] if units[0] else ""))
-    ax.yaxis.get_major_formatter().set_useOffset(False)
-    ax.grid(alpha=0.3)
-    ax.legend(loc="best")
+        groups.setdefault(units[i] or "", []).append(i)
+    fig, axes = plt.subplots(1, len(groups), figsize=(3.4 * len(groups) + 0.6, 3.0), squeeze=False)
+    for ax, (unit, cols) in zip(axes[0], groups.items()):
+        for i in cols:
+            ax.plot(arr[:, 0], arr[:, i], lw=1, label=names[i])
+        ax.set_xlabel(names[0] + (" [%s]" % units[0] if units[0] else ""))
+        what = names[cols[0]] if len(cols) == 1 else _common_prefix([names[i] for i in cols]) or "value"
+        ax.set_ylabel(what + (" [%s]" % unit if unit else " [-]"))
+        ax.yaxis.get_major_formatter().set_useOffset(False)
+        ax.grid(alpha=0.3)
+        if len(cols) > 1:
+            ax.legend(loc="best", fontsize=7)
     fig.tight_layout()
     save(fig, out)
     return out
+
+
+def _common_prefix(names):
+    """The common leading words of column names (velocity_y_swelling, velocity_y_d025 -> velocity_y)."""
+    prefix = os.path.commonprefix(names)
+    return prefix[:prefix.rfind("_")] if "_" in prefix else prefix.rstrip("_")
 
 
 def study_of(title, table):
