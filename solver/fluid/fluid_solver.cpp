@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 
 #include "fluid/operators.hpp"
 #include "fluid/threads.hpp"
@@ -336,23 +335,6 @@ ProjectionStats FluidSolver::project(FluidState& state, double dt, const FaceFor
   fill_neumann_ghosts(grid_, work_);
   const CellField& p = state.pressure;
   const FaceRange faces = corrected_faces();
-  static const bool carried = std::getenv("IBMS_CARRIED_FACES") != nullptr;  // EXPERIMENT
-  if (carried) {
-    // U*_f = U^n_f + mean(u* - u^n) (the cell force's increment out, as above)
-    for (int j = 0; j < grid_.ny; ++j)
-      for (int i = 0; i < grid_.nx; ++i) {
-        phi_(i, j) -= dt * grad_x_(i, j) + state.velocity_x(i, j);
-        work_(i, j) -= dt * grad_y_(i, j) + state.velocity_y(i, j);
-      }
-    fill_neumann_ghosts(grid_, phi_);
-    fill_neumann_ghosts(grid_, work_);
-    for (int j = 0; j < grid_.ny; ++j)
-      for (int i = faces.x_first; i <= faces.x_last; ++i)
-        star_face_x_(i, j) = state.velocity_face_x(i, j) + 0.5 * (phi_(i - 1, j) + phi_(i, j));
-    for (int j = faces.y_first; j <= faces.y_last; ++j)
-      for (int i = 0; i < grid_.nx; ++i)
-        star_face_y_(i, j) = state.velocity_face_y(i, j) + 0.5 * (work_(i, j - 1) + work_(i, j));
-  } else {
   IBMS_PARALLEL_ROWS
   for (int j = 0; j < grid_.ny; ++j)
     for (int i = faces.x_first; i <= faces.x_last; ++i)
@@ -361,7 +343,6 @@ ProjectionStats FluidSolver::project(FluidState& state, double dt, const FaceFor
   for (int j = faces.y_first; j <= faces.y_last; ++j)
     for (int i = 0; i < grid_.nx; ++i)
       star_face_y_(i, j) = 0.5 * (work_(i, j - 1) + work_(i, j)) - dt * (p(i, j) - p(i, j - 1)) * inv_dy;
-  }
   if (forcing != nullptr) {
     IBMS_PARALLEL_ROWS
     for (int j = 0; j < grid_.ny; ++j)
