@@ -145,7 +145,9 @@ def work_precision_section(out, build, fig_dir, source=None):
                "(four or more for the fluid cases; the DFG cylinders at two at the default level, so that two "
                "points give their slope, and four at full), error against the wall time of the whole run on this machine "
                "(shared, so times carry some noise). The slope is the least-squares fit of "
-               "$\\log(\\mathrm{error})$ against $\\log(\\mathrm{time})$ over all points; for a "
+               "$\\log(\\mathrm{error})$ against $\\log(\\mathrm{time})$ over all points (over two points, "
+               "as the DFG cylinders have at the default level, the slope of the line through them: a "
+               "\\emph{two-point slope}, no fit); for a "
                "second-order method with $\\Delta t \\propto h$ in 2D the ideal is $-2/3$. In the "
                "main job the fluid cases (MMS, cavities, settling disk) are timed with the machine to "
                "themselves (job \\texttt{bench\\_work\\_precision}, every core claimed); the DFG "
@@ -166,14 +168,18 @@ def work_precision_section(out, build, fig_dir, source=None):
         if scheme:
             definition += "; ibms's scheme: " + scheme
         cases.append((name, pts, slope))
-        table.append([r"\texttt{%s}" % esc(name), ", ".join(p[2] for p in pts), num(slope, 3),
+        table.append([r"\texttt{%s}" % esc(name), ", ".join(p[2] for p in pts),
+                      num(slope, 3) if len(pts) > 2 else
+                      r"\begin{tabular}[t]{@{}r@{}}%s\\ {\scriptsize two-point}\end{tabular}" % num(slope, 3),
                       num(pts[-1][1], 3), num(pts[-1][0], 3), esc(definition)])
     if not cases:
         out.append(r"\emph{No usable rows in the work-precision files.}" + "\n")
         return
     out.append(longtable(r"lp{2.4cm}rrrp{6.2cm}", ["case", "N", "slope", "finest error",
                                                    "its time [s]", "error measured"], table,
-                         caption="Work-precision slopes."))
+                         caption="Work-precision slopes: least-squares over three or more points; over two "
+                                 "points (\\emph{two-point}) the slope of the line through them, no fit and no "
+                                 "estimate of its uncertainty."))
     fluid = [c for c in cases if _body_case(c[0]) is None]
     if fluid:
         # at most three panels a row: each wide enough for its tick labels and grid labels at 7 pt
@@ -185,16 +191,20 @@ def work_precision_section(out, build, fig_dir, source=None):
         for ax, (name, pts, slope) in zip(axes.flat, fluid):
             t, e = [p[0] for p in pts], [p[1] for p in pts]
             ax.loglog(t, e, "o-", ms=4)
+            # grid labels above-left of ibms's points, below-right of Basilisk's (B64, B128 beside
+            # ibms's 64, 128 do not overlap), all inside the axes (margins)
             for p in pts:
-                ax.annotate(p[2], (p[0], p[1]), fontsize=7, xytext=(3, 3), textcoords="offset points")
+                ax.annotate(p[2], (p[0], p[1]), fontsize=7, xytext=(-4, 4), textcoords="offset points",
+                            ha="right", va="bottom")
             lt, le = [math.log(v) for v in t], [math.log(v) for v in e]
             mx, my = sum(lt) / len(lt), sum(le) / len(le)
             ax.loglog(t, [math.exp(my + slope * (math.log(v) - mx)) for v in t], "k--", lw=0.8,
-                      label="slope %.2f" % slope)
-            for re_number, n, seconds, error in _basilisk_points(source, name):
-                ax.loglog([seconds], [error], "s", color="C3", ms=5,
-                          label="Basilisk %s$^2$" % n if n == "128" else None)
-                ax.annotate("B%s" % n, (seconds, error), fontsize=7, xytext=(3, -8), textcoords="offset points")
+                      label=("two-point slope %.2f" if len(pts) == 2 else "slope %.2f") % slope)
+            for k, (re_number, n, seconds, error) in enumerate(_basilisk_points(source, name)):
+                ax.loglog([seconds], [error], "s", color="C3", ms=5, label="Basilisk (B$N$)" if k == 0 else None)
+                ax.annotate("B%s" % n, (seconds, error), fontsize=7, xytext=(4, -4), textcoords="offset points",
+                            ha="left", va="top")
+            ax.margins(x=0.25, y=0.25)
             ax.set_title(name)
             ax.set_xlabel("wall time [s]")
             ax.set_ylabel("error")
@@ -202,8 +212,8 @@ def work_precision_section(out, build, fig_dir, source=None):
         path = os.path.join(fig_dir, "work_precision.pdf")
         fig.tight_layout()
         figs.save(fig, path)
-        out.append(figure(path, "Error against wall time; labels: grid N; dashed: least-squares fit. Squares "
-                                "(B$N$): Basilisk %s on the same cavity and error rule, one core of this machine, "
+        out.append(figure(path, "Error against wall time; labels: grid N; dashed: least-squares fit (a two-point slope "
+                                "where a case has two points). Squares (B$N$): Basilisk %s on the same cavity and error rule, one core of this machine, "
                                 "recorded 2026-12-03 (\\texttt{bench/reference/basilisk\\_cavity.csv}; "
                                 "both codes stopped at a velocity change rate of $10^{-6}$)." % report_cases.cite("popinet_basilisk")))
     body_work_precision(out, build, fig_dir, source, [c for c in cases if _body_case(c[0]) is not None])
@@ -249,7 +259,7 @@ def body_work_precision(out, build, fig_dir, source, cases):
                 continue
             legend, style, colour = _COUPLINGS[coupling]
             ax.loglog([p[0] for p in pts], [p[1] for p in pts], style, color=colour, ms=4,
-                      label="%s, slope %.2f" % (legend, slope))
+                      label=("%s, two-point slope %.2f" if len(pts) == 2 else "%s, slope %.2f") % (legend, slope))
             for p in pts:
                 ax.annotate(p[2], (p[0], p[1]), fontsize=7, xytext=(3, 3), textcoords="offset points")
         if family == "dfg_2d2":
@@ -257,7 +267,8 @@ def body_work_precision(out, build, fig_dir, source, cases):
         ax.set_title(_BODY_FAMILIES[family][0], fontsize=9)
         ax.set_xlabel("wall time [s]")
         ax.set_ylabel("error")
-        ax.legend(fontsize=7)
+        ax.margins(x=0.2, y=0.2)
+        ax.legend(loc="best", fontsize=7)
     path = os.path.join(fig_dir, "work_precision_bodies.pdf")
     fig.tight_layout()
     figs.save(fig, path)
@@ -283,6 +294,19 @@ def body_work_precision(out, build, fig_dir, source, cases):
                        "that bracket it, \\texttt{bench/time\\_to\\_target\\_dfg\\_2d2.csv}): \\texttt{uhlmann} %s, "
                        "\\texttt{no\\_slip} %s; ratio %s.\n" % (seconds(get["uhlmann"]), seconds(get["no_slip"]),
                                                                ratio_text))
+
+
+def _legend_above(fig, axes):
+    """One legend for all panels, above them (a legend inside a map covers its points)."""
+    handles, labels = [], []
+    for ax in axes:
+        for h, lab in zip(*ax.get_legend_handles_labels()):
+            if lab not in labels:
+                handles.append(h)
+                labels.append(lab)
+    if labels:
+        fig.legend(handles, labels, loc="lower center", bbox_to_anchor=(0.5, 1.0), ncol=len(labels),
+                   fontsize=7, frameon=False)
 
 
 _SYMBOL = {"stable": ("o", "tab:green"), "unstable": ("^", "tab:orange"), "blow-up": ("x", "tab:red"),
@@ -324,10 +348,13 @@ def stability_section(out, build, fig_dir):
                               ms=6, ls="none", label=kind)
             ax.set_title("%s: %s solid steps" % (name, mode))
             ax.set_xlabel("fluid dt [s]")
-            ax.legend(fontsize=7)
-        quantity = next((m.group(1) for c in _comments(f) for m in [re.search(r"against (\w+)", c)] if m),
-                        "stiffness")
-        axes[0].set_ylabel(quantity.replace("_", " "))
+        _legend_above(fig, axes)
+        # the stiffness and its unit as the bench's '#' line names them ("against contact_stiffness
+        # [dyn/cm^2 per unit depth]")
+        found = next((m for c in _comments(f) for m in [re.search(r"against (\w+)(?: \[([^\]]*)\])?", c)] if m), None)
+        quantity = found.group(1).replace("_", " ") if found else "stiffness"
+        unit = found.group(2) if found and found.group(2) else "unit not recorded"
+        axes[0].set_ylabel("%s\n[%s]" % (quantity, unit.replace("^2", "$^2$")), fontsize=8)
         path = os.path.join(fig_dir, "stability_%s.pdf" % name)
         fig.tight_layout()
         figs.save(fig, path)
@@ -413,8 +440,8 @@ def fluid_stability_maps(out, files, fig_dir):
                         max(_float(r["cell_reynolds"]) for r in rows) * 1.5)
             ax.set_title("%s: %s" % (name, mode.replace("_", " ")), fontsize=8)
             ax.set_xlabel("run.cfl (adaptive $\\Delta t$)" if "adaptive" in name else "CFL number $U\\Delta t/h$")
-            ax.legend(fontsize=7, framealpha=0.6)
         axes[0][0].set_ylabel("$\\mathrm{Re}_h = Uh/\\nu$")
+        _legend_above(fig, axes[0])
         path = os.path.join(fig_dir, "stability_fluid_%s.pdf" % name)
         fig.tight_layout()
         figs.save(fig, path)

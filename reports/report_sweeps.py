@@ -98,8 +98,12 @@ def plot_sweep(plot, rows, path):
         ax.set_xscale("log")
         ax.set_yscale("log")
     ax.set_xlabel(x_key)
+    # The y axis named by the plot line's "ylabel", else by what the y columns share
+    # (error_ghia, error_ibms_reference -> error), the columns in the legend.
+    shared = (figs._common_prefix(ys) if len(ys) > 1 else ys[0]) or "value"
+    ax.set_ylabel(plot.get("ylabel") or "%s (legend: column)" % shared)
     ax.grid(True, which="both", alpha=0.3)
-    ax.legend(fontsize=7)
+    ax.legend(fontsize=7, loc="best")
     fig.tight_layout()
     figs.save(fig, path)
     return path
