@@ -501,17 +501,27 @@ def checks_by_case_section(out, order, metas, judged):
 
 
 # ---------------------------------------------------------------- verification
-def _is_validation_test(name):
-    return "_run" in name or name.endswith("_check") or "_check_" in name or "_gate" in name
+def _is_verification_test(t):
+    """A test of the unit and convergence run: not from a workflow job's log (LastTest_wf_*: the
+    validation cases' runs, checks and reference comparisons) and not a case's run, check or gate
+    by name (<case>_run..., _check..., _gate...); a unit test (test_*) whatever its name holds
+    (test_end_of_run_forces)."""
+    if t.get("log", "").startswith("LastTest_wf_"):
+        return False
+    name = t["name"]
+    return name.startswith("test_") or not re.search(r"_(run|check|gate)(_|$)", name)
 
 
 def verification_section(out, conv, tests, fig_dir):
     out.append(r"\section{Verification: observed orders against formal orders}")
-    ver = [t for t in tests if not _is_validation_test(t["name"])]
+    ver = [t for t in tests if _is_verification_test(t)]
     if ver:
         n_fail = sum(t["status"] == "FAIL" for t in ver)
-        out.append("Unit and convergence tests from ctest's logs: %d tests, %d failed. Each program passes "
-                   "only if all its claims (Boost test cases) hold.\n" % (len(ver), n_fail))
+        out.append("Unit and convergence tests from ctest's logs: %d tests, %d failed: the tests of the unit and "
+                   "convergence run, not the validation cases' runs, checks and reference comparisons (the "
+                   "workflow's jobs); the per-test table of the environment section lists all %d tests of all "
+                   "logs, these and those. Each program passes only if all its claims (Boost test cases) hold.\n"
+                   % (len(ver), n_fail, len(tests)))
         rows = [[tt(t["name"]), status_cell(t["status"]), num(t["seconds"])] for t in ver]
         out.append(longtable(r">{\raggedright\arraybackslash}p{10cm}cr", ["test", "verdict", "time [s]"], rows,
                                                   caption="Unit and convergence tests (ctest).", size="footnotesize"))
@@ -778,8 +788,12 @@ def environment_section(out, env, tests):
     total = sum(t["seconds"] for t in tests if not math.isnan(t["seconds"]))
     rows = [[tt(t["name"]), status_cell(t["status"]), num(t["seconds"]), tt(t["log"])] for t in tests]
     out.append(longtable(r">{\raggedright\arraybackslash}p{8.5cm}cr>{\raggedright\arraybackslash}p{4.5cm}", ["ctest test", "result", "time [s]", "log"], rows,
-                                              caption="Per-test wall times from ctest's logs (sum %.1f s; tests ran "
-                                                      "in parallel, so wall time is lower)." % total, size="footnotesize"))
+                                              caption="Per-test wall times from ctest's logs: all %d tests of all logs, "
+                                                      "the unit and convergence run's (%d, the count of the verification "
+                                                      "section) and the workflow jobs' (validation runs, checks and "
+                                                      "reference comparisons) (sum %.1f s; tests ran in parallel, so wall "
+                                                      "time is lower)." % (len(tests), sum(map(_is_verification_test, tests)),
+                                                                           total), size="footnotesize"))
 
 
 def write_sources(tex, fig_files, directory):
@@ -848,7 +862,7 @@ def document(build, source, fig_dir):
     sweeps.sweeps_section(out, build, fig_dir)
     trace.traceability_section(out, source, defined, tests)
     environment_section(out, env, tests)
-    bench.run_times_section(out, tests)
+    bench.run_times_section(out, tests, folders)
     known_limitations(out, order, judged)
     cases_mod.bibliography_section(out)
     out.append(r"\end{document}")

@@ -557,15 +557,20 @@ def forcing_passes_section(out, build, source):
                                      (num(value), report_cases.cite("glowinski2001"))))
 
 
-def run_times_section(out, tests):
-    """Wall time per validation case: the sum of its ctest runs and check."""
+def run_times_section(out, tests, folders=()):
+    """Wall time per validation case: the sum of its ctest runs and check. A test belongs to the
+    case folder its name starts with (`folders`: the longest such, so settling_disk_rigid_100_run
+    goes with settling_disk), else to the name before its grid and run/check suffix
+    (dfg_2d1_20_run -> dfg_2d1); unit tests (test_*) are no case's, whatever their name holds
+    (test_end_of_run_forces)."""
     cases = OrderedDict()
     for t in tests:
         # <case>[_<grid>]_run[_...], _check[_...], _gate[_...], _compare: one row per case, its grids together
         m = re.match(r"(.+?)(?:_\d+)?_(run(_\w+)?|check(_\w+)?|gate(_\w+)?|compare)$", t["name"])
-        if not m or math.isnan(t["seconds"]):
+        if not m or math.isnan(t["seconds"]) or t["name"].startswith("test_"):
             continue
-        c = cases.setdefault(m.group(1), [0.0, 0, True])
+        owner = max((f for f in folders if t["name"].startswith(f + "_")), key=len, default=m.group(1))
+        c = cases.setdefault(owner, [0.0, 0, True])
         c[0] += t["seconds"]
         c[1] += 1
         c[2] = c[2] and t["status"] == "pass"
