@@ -31,7 +31,7 @@ import report_solid as solid  # noqa: E402
 import report_sweeps as sweeps  # noqa: E402
 import report_cases as cases_mod  # noqa: E402
 import report_trace as trace  # noqa: E402
-from report_latex import esc, num, status_cell, figure, longtable, tt  # noqa: E402
+from report_latex import esc, md_text, num, status_cell, figure, longtable, tt  # noqa: E402
 
 PREAMBLE = r"""\documentclass[10pt,a4paper]{article}
 \usepackage[T1]{fontenc}
@@ -87,7 +87,8 @@ def readme_summary(source, case):
                 continue
             started = True
             lines.append(s)
-    text = " ".join(lines).replace("**", "").replace("`", "")
+    # Markdown kept (code spans, ASCII notation): the quoting code sets it as LaTeX (md_text).
+    text = " ".join(lines).replace("**", "")
     # Pointers to the project's issue tracker mean nothing to a reader of the report.
     text = re.sub(r"\s*\((?:see )?issue \d+(?:\s*(?:§|item)\s*\d+)?\)", "", text)
     text = re.sub(r"[:;,]?\s*issue \d+(?:\s*(?:§|item)\s*\d+)?", "", text)
@@ -260,7 +261,7 @@ def _headline(c):
     h = c.get("headline")
     if not h:
         return "--"
-    return "%s: %s (target %s)" % (esc(h["metric"]), cases_mod.measured_text(h), h["target_text"])
+    return "%s: %s (target %s)" % (md_text(h["metric"]), cases_mod.measured_text(h), h["target_text"])
 
 
 def slow_checks_not_run(build, defined):
@@ -310,7 +311,7 @@ def summary_page(out, order, metas, judged, params, not_run=()):
         out.append(r"\paragraph{Every miss and failure} {\scriptsize (measured against target; causes in "
                    r"\S\ref{sec:limitations})}")
         items = ["%s \\texttt{%s}: %s: %s (target %s)" % (cases_mod.verdict_cell(r["verdict"]),
-                                                          esc(r["row_case"]), esc(r["metric"]),
+                                                          esc(r["row_case"]), md_text(r["metric"]),
                                                           cases_mod.measured_text(r), r["target_text"])
                  for case, r in misses]
         out.append(r"{\fontsize{7}{8}\selectfont\begin{itemize}\setlength{\itemsep}{0pt}\setlength{\parskip}{0pt}" + "\n" +
@@ -442,7 +443,7 @@ def quantities_summary_section(out, order, metas, judged, fig_dir):
                             "grey bar spans its target's band from its lower to its upper bound, the point is the "
                             "figure itself (outside its bar: a miss).", height=0.28))
     out.append(longtable("rlp{6.4cm}rrrl", ["\\#", "case", "figure", "reference", "ibms", "deviation", "verdict"],
-                         [[str(k), tt(case), esc(metric), num(v, 5), num(y, 5),
+                         [[str(k), tt(case), md_text(metric), num(v, 5), num(y, 5),
                            "%+.3g\\,\\%%" % (100 * (y / v - 1)) if v else "--", cases_mod.verdict_cell(verdict)]
                           for k, (case, metric, v, y, lo, hi, verdict) in enumerate(points, 1)],
                          caption="The figures of the summary plot.", size="scriptsize"))
@@ -484,7 +485,7 @@ def checks_by_case_section(out, order, metas, judged):
                      (esc(case), cases_mod.verdict_cell(c["verdict"]), esc(m["qualifier"]), m["compared"])])
         for r in c["rows"]:
             mark = "own" if r["own"] else m["mark"]
-            metric = esc(r["metric"]) + ("" if r["row_case"] == case else
+            metric = md_text(r["metric"]) + ("" if r["row_case"] == case else
                                          r" {\scriptsize(\texttt{%s})}" % esc(r["row_case"][len(case):].lstrip("_")))
             target = r["target_text"] + (r"\newline{\tiny %s}" % r["target_source"] if r["target_source"] else "")
             rows.append([cases_mod.mark_cell(mark), metric, target, cases_mod.measured_text(r),
@@ -555,7 +556,7 @@ def verification_section(out, conv, tests, fig_dir):
             verdict, band = status_cell("info"), "--"
         program, refined = figs.study_of(title, t)
         studies.setdefault((program, refined), []).append((k + 1, title, t))
-        rows.append([str(k + 1), esc(title), "$\\Delta t$" if refined == "dt" else "$h$",
+        rows.append([str(k + 1), md_text(title), "$\\Delta t$" if refined == "dt" else "$h$",
                      ", ".join(str(n) for n in t["N"]), num(t["error"][-1], 3),
                      "--" if not math.isfinite(formal) else num(formal, 3),
                      "--" if not math.isfinite(fit) else num(fit, 3) + ("" if not math.isfinite(se) else r" $\pm$ " + num(se, 2)),
@@ -683,7 +684,7 @@ def case_section(out, case, meta, build, source, judged, params, fig_dir):
         # authors made, not in this one (this run's are in the tables and figures below).
         out.append(r"\begin{quote}\small\textbf{The case README's text} (\texttt{validation/%s/README.md}, its "
                    r"first paragraph; any figure in it is the README's, from an earlier run, not this run's "
-                   r"result): ``%s''\end{quote}" % (esc(case), esc(summary)) + "\n")
+                   r"result): ``%s''\end{quote}" % (esc(case), md_text(summary)) + "\n")
     parameter_table(out, params)
     statement = grid_statement(params)
     if statement:
@@ -771,7 +772,7 @@ def known_limitations(out, order, judged):
                                               ["case", "figure", "measured (target)",
                                                "cause (the README's text and figures)"],
                                               [[tt(r["row_case"]),
-                                                esc(r["metric"]),
+                                                md_text(r["metric"]),
                                                 "%s (%s) %s" % (cases_mod.measured_text(r), r["target_text"],
                                                                 cases_mod.verdict_cell(r["verdict"])),
                                                 cases_mod.cause_of(case, r["metric"])] for case, r in rows], size="footnotesize",

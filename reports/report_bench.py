@@ -19,7 +19,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 import report_figures as figs  # noqa: E402
-from report_latex import esc, num, figure, longtable  # noqa: E402
+from report_latex import esc, md_text, num, figure, longtable  # noqa: E402
 import report_cases  # noqa: E402
 
 
@@ -75,13 +75,39 @@ def kernel_moment_section(out, build):
                "in $[0,1]$ (\\texttt{verification/ibm/test\\_delta\\_kernel.cpp}, docs/method.md \\S4 and "
                "A9): the largest deviation from the expected value and the range of the sum.\n"
                % (report_cases.cite("roma1999"), report_cases.cite("peskin2002"), report_cases.cite("bao2016")))
-    table = [[r"\texttt{%s}" % esc(k), esc(m), esc(r["expected"]), num(r["max_error"], 3),
+    table = [[r"\texttt{%s}" % esc(k), _formula(m), _formula(r["expected"]), _max_error(r["max_error"]),
               "[%s, %s]" % (_plain(r["min_sum"]), _plain(r["max_sum"])), num(r["tolerance"], 2)]
              for (k, m), r in last.items()]
     out.append(longtable(r"lp{3.4cm}p{3.2cm}rp{3.6cm}r",
                          ["kernel", "moment", "expected", "max error", "range of the sum", "tolerance"],
-                         table, caption="Kernel moments (from \\texttt{kernel\\_moments.csv}; nan: "
-                                        "a range claim, no single expected value)."))
+                         table, caption="Kernel moments (from \\texttt{kernel\\_moments.csv}; max error "
+                                        "--: a range claim, whose sum must lie in the stated range, has no "
+                                        "single expected value to differ from; the range of the sum is the "
+                                        "result)."))
+
+
+# Words a kernel moment's formula may hold (kernel_moments.csv: "sum (x-j)^2 phi", "K = 59/60 -
+# sqrt(29)/20", "in [1/3, 2/3]"); a text with any other word ("closed form (A9)") stays text.
+_FORMULA_WORDS = {"sum": r"\sum", "phi": r"\phi", "sqrt": r"\sqrt", "in": r"\in"}
+
+
+def _formula(text):
+    """A moment or expected value of kernel_moments.csv in math mode where it is a formula (one
+    unbreakable formula: its '-' a minus inside it), else as text (md_text)."""
+    words = re.findall(r"[A-Za-z]{2,}", text)
+    if not words and not re.search(r"[=^]", text) or not all(w in _FORMULA_WORDS for w in words) \
+            or not re.fullmatch(r"[\w\s()\[\]/^=+*.,-]+", text):
+        return md_text(text)
+    s = re.sub(r"sqrt\(([^()]*)\)", r"sqrt{\1}", text)
+    s = re.sub(r"\^(\d+)", r"^{\1}", s)
+    s = re.sub(r"[A-Za-z]{2,}", lambda m: _FORMULA_WORDS[m.group(0)] + " ", s)
+    return r"$%s$" % s.strip()
+
+
+def _max_error(value):
+    """The largest deviation, '--' where there is none (a range claim's nan)."""
+    x = _float(value)
+    return num(x, 3) if math.isfinite(x) else "--"
 
 
 # The DFG cylinders' work-precision files, work_precision_<family>_<coupling>.csv: family -> (title,
@@ -171,7 +197,7 @@ def work_precision_section(out, build, fig_dir, source=None):
         table.append([r"\texttt{%s}" % esc(name), ", ".join(p[2] for p in pts),
                       num(slope, 3) if len(pts) > 2 else
                       r"\begin{tabular}[t]{@{}r@{}}%s\\ {\scriptsize two-point}\end{tabular}" % num(slope, 3),
-                      num(pts[-1][1], 3), num(pts[-1][0], 3), esc(definition)])
+                      num(pts[-1][1], 3), num(pts[-1][0], 3), md_text(definition)])
     if not cases:
         out.append(r"\emph{No usable rows in the work-precision files.}" + "\n")
         return
@@ -208,7 +234,7 @@ def work_precision_section(out, build, fig_dir, source=None):
             ax.set_title(name)
             ax.set_xlabel("wall time [s]")
             ax.set_ylabel("error")
-            ax.legend()
+            ax.legend(loc="best", fontsize=7)
         path = os.path.join(fig_dir, "work_precision.pdf")
         fig.tight_layout()
         figs.save(fig, path)
@@ -369,7 +395,7 @@ def stability_section(out, build, fig_dir):
                           str(max(subs)) if subs else "--"])
         blow = next((r["message"] for r in rows if r["outcome"] == "blow-up" and r["message"]), None)
         if blow:
-            out.append(r"\noindent Example stop message: \texttt{%s}" % esc(blow[:220]) + "\n")
+            out.append(r"{\raggedright\noindent Example stop message (in full): \texttt{%s}\par}" % esc(blow) + "\n")
     out.append(longtable(r"llrrrrrr", ["map", "solid steps", "runs", "stable", "unstable", "blow-up",
                                        "too deep", "max sub-steps"], table, caption="Stability map summary."))
     fluid_stability_maps(out, fluid_files, fig_dir)
@@ -445,7 +471,7 @@ def fluid_stability_maps(out, files, fig_dir):
         path = os.path.join(fig_dir, "stability_fluid_%s.pdf" % name)
         fig.tight_layout()
         figs.save(fig, path)
-        out.append(r"{\small %s.}" % esc("; ".join(_comments(f))) + "\n")
+        out.append(r"{\small %s.}" % md_text("; ".join(_comments(f))) + "\n")
         out.append(figure(path, "Fluid stability map \\texttt{%s} (\\texttt{bench/stability\\_fluid\\_%s.csv})." %
                           (esc(name), esc(name)), height=0.3))
         for mode in modes:
@@ -480,7 +506,7 @@ def fluid_stability_maps(out, files, fig_dir):
                                      "von Neumann limit at the same $\\mathrm{Re}_h$." % esc(name)))
         stop = next((r["message"] for r in rows if r["outcome"] == "stopped" and r["message"]), None)
         if stop:
-            out.append(r"\noindent Example stop message: \texttt{%s}" % esc(stop[:220]) + "\n")
+            out.append(r"{\raggedright\noindent Example stop message (in full): \texttt{%s}\par}" % esc(stop) + "\n")
     out.append(longtable(r"llrrrrr", ["map", "mode", "points", "stable", "unstable", "stopped",
                                       "von Neumann unstable"], table, caption="Fluid stability map summary."))
 

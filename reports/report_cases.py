@@ -20,7 +20,7 @@ import os
 import re
 from collections import OrderedDict
 
-from report_latex import esc, num
+from report_latex import esc, md_text, num
 
 MARKS = ("published", "exact", "own")
 MARK_TEXT = {"published": "published", "exact": "exact", "own": "ibms's own"}
@@ -140,12 +140,12 @@ def read_case_meta(source, case):
     if mark not in MARKS:
         raise ReportError("validation case '%s': the source mark '%s' in %s is not one of %s" %
                           (case, mark, readme, ", ".join(MARKS)))
-    body = esc((compared.split(":", 1)[1] if ":" in compared else "").replace("`", "").strip().rstrip("."))
+    body = md_text((compared.split(":", 1)[1] if ":" in compared else "").strip().rstrip("."))
     # [key, key] -> \cite{key,key} where it stands (esc leaves brackets and these keys alone)
     body = re.sub(r"\s*\[([a-z0-9, ]+)\]", lambda g: "~" + cite(*[k.strip() for k in g.group(1).split(",")]), body)
     v = re.search(r"^\*\*Validates\.\*\*\s*(.+)$", text, re.M)
     qualifier = compared.split(":", 1)[0].strip()
-    return dict(case=case, title=title, validates=esc(v.group(1).strip().rstrip(".")) if v else "--",
+    return dict(case=case, title=title, validates=md_text(v.group(1).strip().rstrip(".")) if v else "--",
                 mark=mark, qualifier=qualifier, detail=qualifier[len(mark):].strip(" ,"), compared=body)
 
 

@@ -502,7 +502,8 @@ def convergence_study(name, refined, items, out):
         slope = t.get("fit_order", math.nan)
         # the set-up is the figure's title: the legend names what differs (variable and norm)
         rest = title[len(name):].lstrip(", ") if title.startswith(name + ",") else title.split(": ", 1)[-1]
-        lab = "(%d) %s" % (k, _wrap(rest, 40))
+        # ASCII exponents (64^2) as mathtext superscripts, after wrapping at spaces
+        lab = "(%d) %s" % (k, re.sub(r"\^(-?\d+)", r"$^{\1}$", _wrap(rest, 40)))
         if np.isfinite(slope):
             lab += ": %.2f" % slope
         line, = ax.loglog(h[ok], e[ok], "o-", ms=3.5, lw=1, label=lab)

@@ -154,3 +154,46 @@ def figure(path, caption, height=0.42):
                       r"\includegraphics[width=\textwidth,height=%.2f\textheight,keepaspectratio]{%s}"
                       % (height, os.path.basename(path)),
                       r"\caption{%s}" % caption, r"\end{figure}", ""])
+
+
+# ASCII notation of READMEs, results.csv metrics and test headers set as LaTeX: exponents (32^2,
+# [1/s^2], 10^-4), one-letter or Greek symbols with a short subscript (c_D, u_min, v_0.30, rho_s)
+# as math, everything else escaped. Names of several letters joined by '_' (drag_coefficient_max,
+# n_surface_points) are not subscripts and stay text.
+_GREEK = ("alpha", "beta", "gamma", "delta", "Delta", "epsilon", "mu", "nu", "omega", "Omega", "phi", "rho",
+          "sigma", "tau", "theta", "kappa", "lambda", "xi", "zeta", "eta", "pi")
+_NOTATION = re.compile(
+    r"\^(?P<exp>\{[^{}]*\}|-?\d+(?:\.\d+)?|[A-Za-z](?![A-Za-z]))"
+    r"|(?<![\w\\.])(?P<base>%s|[A-Za-z]|[ρνΔωδζπμ])_(?P<sub>[A-Za-z0-9]{1,4}(?:\.\d+)?)(?![\w])" % "|".join(_GREEK))
+
+
+def _sub(text):
+    return text if len(text) == 1 or re.fullmatch(r"[0-9.]+", text) else r"\mathrm{%s}" % text
+
+
+def notation(text):
+    """Plain text (no code spans) with its ASCII exponents and subscripts as LaTeX math, the rest
+    escaped (esc)."""
+    out, pos = [], 0
+    for m in _NOTATION.finditer(text):
+        out.append(esc(text[pos:m.start()]))
+        if m.group("exp") is not None:
+            out.append(r"$^{%s}$" % esc(m.group("exp").strip("{}")).replace("-{}", "-"))
+        else:
+            base = m.group("base")
+            symbol = "\\" + base if base in _GREEK else _UNICODE[base].strip("$") if base in _UNICODE else base
+            out.append(r"$%s_{%s}$" % (symbol, _sub(m.group("sub"))))
+        pos = m.end()
+    out.append(esc(text[pos:]))
+    return "".join(out)
+
+
+def md_text(text):
+    """Markdown-ish text of a README or a source header as LaTeX: `code` spans in typewriter
+    (breakable after '_' and '/'), **bold** markers dropped, ASCII notation set by notation();
+    an unpaired backtick (text cut inside a code span) is dropped."""
+    text = str(text).replace("**", "")
+    parts = text.split("`")
+    if len(parts) % 2 == 0:  # an unpaired backtick: the last one opens nothing
+        parts = parts[:-2] + [parts[-2] + parts[-1]]
+    return "".join(tt(p) if k % 2 else notation(p) for k, p in enumerate(parts))

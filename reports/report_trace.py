@@ -11,7 +11,7 @@ import re
 import subprocess
 from collections import OrderedDict
 
-from report_latex import esc, longtable, tt
+from report_latex import esc, longtable, md_text, tt
 
 CITATION = re.compile(r"method\.md\s*§\s*(A?\d+(?:\.\d+)?[a-z]?)")
 
@@ -23,7 +23,9 @@ def method_sections(source):
         for line in f:
             m = re.match(r"#{2,3} (A?\d+(?:\.\d+)?[a-z]?)\.? (.*)", line.rstrip())
             if m:
-                sections[m.group(1)] = re.sub(r"\s*\[[^\]]*\]\s*$", "", m.group(2))
+                # without the provenance tags ([P] papers, [L] literature, [D] ibms's choice, joined
+                # by '+'), which mean nothing without method.md's key
+                sections[m.group(1)] = re.sub(r"\s*(?:\[[A-Z]\]\+?)+\s*$", "", m.group(2))
     return sections
 
 
@@ -98,8 +100,16 @@ def first_claim(paths):
         if claim:
             # the first full stop or semicolon after a word, not after an item number ("1.")
             sentence = re.split(r"(?<=[^0-9\s][.;])\s", claim, 1)[0]
-            return sentence if len(sentence) <= 220 else sentence[:217].rsplit(" ", 1)[0] + " ..."
+            return clip_words(sentence, 400)
     return ""
+
+
+def clip_words(text, limit):
+    """text in full up to `limit` characters, else cut after the last whole word before it and
+    ended by an ellipsis (never a word cut in two)."""
+    if len(text) <= limit:
+        return text
+    return text[:limit].rsplit(" ", 1)[0].rstrip(" ,;:") + " ..."
 
 
 def cited_sections(paths):
@@ -151,7 +161,7 @@ def traceability_section(out, source, tests, ctest_results):
         failed = sum(1 for _, v in cited if v == "FAIL")
         names = ", ".join(tt(t) for t, _ in sorted(set(cited))[:6]) + (" (+%d)" % (len(set(cited)) - 6)
                                                                        if len(set(cited)) > 6 else "")
-        matrix.append(["M%s" % esc(n), esc(title[:60]), names, "%d / %d%s" % (passed, len(set(cited)),
+        matrix.append(["M%s" % esc(n), md_text(clip_words(title, 60)), names, "%d / %d%s" % (passed, len(set(cited)),
                                                                              ", %d FAIL" % failed if failed else "")])
     out.append(r"{\fontsize{7}{8}\selectfont" + "\n" +
                longtable(r"l>{\raggedright\arraybackslash}p{4.2cm}>{\raggedright\arraybackslash}p{8.4cm}r",
@@ -159,7 +169,7 @@ def traceability_section(out, source, tests, ctest_results):
                          caption="Method sections of \\texttt{docs/method.md} and the tests that cite them.") + "}")
     out.append("\\noindent\\emph{Sections no test cites} (%d of %d): %s.\n" %
                (len(untested), len(sections), ", ".join(untested) if untested else "none"))
-    table = [[tt(name), esc(", ".join(labels)), esc(claim) or "--", verdict_text(v)] for name, labels, claim, v in rows]
+    table = [[tt(name), esc(", ".join(labels)), md_text(claim) or "--", verdict_text(v)] for name, labels, claim, v in rows]
     out.append(r"\subsection*{Every test with its stated claim}")
     out.append(r"{\fontsize{7}{8}\selectfont" + "\n" +
                longtable(r">{\raggedright\arraybackslash}p{4.2cm}l>{\raggedright\arraybackslash}p{9.0cm}l",
