@@ -12,7 +12,12 @@ page-1 row (its headline, though a max c_L of -60 % misses by more), in the page
 asserted band is FAIL against its formal order; the title block gives the outputs' commit with its
 dirty flag and Basilisk's version; a snapshot's body rims are read as closed rims; README excerpts
 are labelled with their path and end at a sentence or with an ellipsis; no figure text prints below
-7 pt; and a results.csv case without a README source mark stops the build with an error naming it.
+7 pt; no control character in the source and a caption on every table, page 1's counts table
+unbroken; a control-volume against immersed-boundary c_D line marked O; the summary plot's band
+drawn as the band, not out to the point; README and header notation (code spans, 32^2, c_D, rho_s)
+set as LaTeX, the kernel formula one math group, nan errors '--', long claims cut at a word; the
+run-time table and the verification count place test_end_of_run_forces and settling_disk_rigid_*
+right; and a results.csv case without a README source mark stops the build with an error naming it.
 Stage `pdf` (skipped without LaTeX): the whole report compiles to a PDF whose text holds the same
 figures, with no overfull line in LaTeX's log.
 usage: test_build_report.py tex|pdf WORK_DIR     exit 0 pass, 1 fail, 77 skipped (pdf stage, no LaTeX)"""
@@ -55,6 +60,11 @@ with open(os.path.join(work, "validation", "results.csv"), "w") as f:
     # A secondary quantity farther outside its published bounds than max c_D: page 1's headline
     # stays max c_D, the case's principal published quantity.
     f.write('dfg_cylinder_2d2,"lift_coefficient_max at D/h = 20 relative deviation from the reference",,-0.6,info\n')
+    # ibms against itself inside a published case: two forces of one run (O, not P), and ASCII
+    # notation of a metric (32^2, c_D) set as LaTeX math.
+    f.write('dfg_cylinder_2d2,"control-volume mean c_D over t >= 8 vs immersed boundary at D/h = 20, relative '
+            'difference",0.01,0.0001,pass\n')
+    f.write('lid_driven_cavity_re100,"largest |centre-line extremum - Botella & Peyret| on 32^2",,0.002,info\n')
 # One DFG 2D-2 run: its force history (start-up spike, shedding, a spiking shortened last step) and
 # an HDF5 output holding the resolved scene and the run time (the case's parameter table).
 dfg = os.path.join(work, "validation", "dfg_cylinder_2d2")
@@ -93,6 +103,10 @@ with open(os.path.join(work, "verification_results", "convergence.csv"), "w") as
 with open(os.path.join(work, "Testing", "Temporary", "LastTest.log"), "w") as f:
     f.write("1/1 Testing: test_x\n1/1 Test: test_x\nCommand: x\nTest time =   0.50 sec\n"
             "----------------------------------------------------------\nTest Passed.\n")
+    # a unit test whose name holds '_run_' (no case's) and a case's rigid run (its case's)
+    for name in ("test_end_of_run_forces", "settling_disk_rigid_100_run"):
+        f.write("1/1 Testing: %s\n1/1 Test: %s\nCommand: x\nTest time =   0.25 sec\n"
+                "----------------------------------------------------------\nTest Passed.\n" % (name, name))
 
 # Inputs of the issue-5 sections (reports/report_bench.py): kernel moments, work-precision,
 # stability map, per-stage cost.
@@ -281,6 +295,57 @@ if stage == "tex":
     for c, text in excerpts:
         if not re.search(r"([.!?)]|\w \.\.\.)\}?$", text.strip()):
             fail("the README excerpt of %s ends mid-sentence without an ellipsis: ...%r" % (c, text[-60:]))
+    # No control character in the source (a "\t" of "\textbf" read as a tab printed "extbf").
+    if re.search(r"[\x00-\x09\x0b-\x1f]", tex) or "extbf" in tex.replace("\\textbf", ""):
+        fail("report.tex holds a control character or a mangled \\textbf (a backslash escape eaten by Python)")
+    # Every table has a caption (numbering without gaps), and page 1's counts table does not break
+    # (its total row is not left alone on the next page).
+    tables = re.findall(r"\\begin\{longtable\}.*?\\end\{longtable\}", tex, re.S)
+    uncaptioned = [t[:120] for t in tables if "\\caption{" not in t]
+    if uncaptioned:
+        fail("%d tables without a caption, e.g. %r" % (len(uncaptioned), uncaptioned[0]))
+    counts = next((t for t in tables if "all classes" in t), "")
+    if not re.search(r"\\textbf\{all classes\}[^\n]*\\\\\*", counts) or re.search(r"[^*\s]\s*\\\\\n", counts):
+        fail("the page-1 counts table may break before its total row")
+    # Lines of ibms against itself in a published case carry O: control-volume against
+    # immersed-boundary c_D.
+    checks = tex[tex.index("section{Validation checks by case}"):]
+    if not re.search(r"\\textsf\{O\} & control-(?:\{\})?volume mean \$c_\{D\}\$", checks):
+        fail("the control-volume against immersed-boundary c_D line is not marked O (ibms against itself) "
+             "or its c_D is not set as math")
+    if "on 32$^{2}$" not in checks:
+        fail("the metric's ASCII exponent 32^2 is not set as LaTeX (32$^{2}$)")
+    # The summary plot's per-cent panel: each target band from its lower to its upper bound, not
+    # drawn out to the figure (a miss lies outside its band).
+    import build_report  # noqa: E402
+    (k, d, lo, hi, v), = build_report.deviation_rows([("c", "m", 3.23, 3.23 * 1.1234, 3.22, 3.24, "miss")])
+    if not (abs(d - 12.34) < 1e-9 and abs(lo + 0.3096) < 1e-3 and abs(hi - 0.3096) < 1e-3):
+        fail("the summary plot's band of a +12.34 %% miss against [3.22, 3.24] is [%g, %g] %%, not its "
+             "bounds [-0.31, +0.31] %%" % (lo, hi))
+    # README and header text set as LaTeX: code spans in typewriter, ASCII exponents and subscripts
+    # as math; the kernel table's formula in one math group (its '-' a minus inside it, no break);
+    # a range claim's nan error shown as '--'; long claims cut at a word with an ellipsis.
+    import report_latex  # noqa: E402
+    import report_bench  # noqa: E402
+    import report_trace  # noqa: E402
+    got = report_latex.md_text("`ibms run` on 32^2: c_D, rho_s, ρ_f, drag_coefficient_max")
+    want = (r"\texttt{ibms run} on 32$^{2}$: $c_{D}$, $\rho_{s}$, $\rho_{f}$, "
+            r"drag\_coefficient\_max")
+    if got != want:
+        fail("README notation set as %r, not %r" % (got, want))
+    formula = report_bench._formula("K = 59/60 - sqrt(29)/20")
+    if formula != r"$K = 59/60 - \sqrt {29}/20$" or report_bench._max_error("nan") != "--":
+        fail("the kernel table's formula %r is not one math group, or a nan error is not '--'" % formula)
+    clipped = report_trace.clip_words("alpha beta gamma delta", 14)
+    if clipped != "alpha beta ...":
+        fail("a long claim is cut as %r, not at a word with an ellipsis" % clipped)
+    # The run times: a unit test whose name holds '_run_' is no validation case's, a rigid run of
+    # the settling disk goes with its case; the verification section counts the unit test.
+    times = tex[tex.index("Run time per validation case"):]
+    if "test\\_end\\_of" in times or "settling\\_disk\\_rigid" in times or "settling\\_disk}" not in times:
+        fail("the run-time table shows a unit test as a case or splits settling_disk_rigid from settling_disk")
+    if not re.search(r"Unit and convergence tests from ctest's logs: 2 tests", tex):
+        fail("the verification section does not count test_end_of_run_forces among the unit tests")
     if "Known limitations" not in tex or "momentum interpolation" not in tex:
         fail("the Known limitations section does not list the miss with its cause")
     # A case without a source mark (no README with a Compared-with line) stops the build.
