@@ -179,7 +179,12 @@ def work_precision_section(out, build, fig_dir, source=None):
                "themselves (job \\texttt{bench\\_work\\_precision}, every core claimed); the DFG "
                "cylinders (job \\texttt{bench\\_work\\_precision\\_bodies}) on one core beside "
                "other one-thread jobs, so their times are those of a shared machine, and their figure "
-               "is the ratio of the two couplings' times, both measured so.\n")
+               "is the ratio of the two couplings' times, both measured so. The bench runs its own cases, so "
+               "its errors are not the validation checks' figures of the same grids (\\S\\ref{sec:checks}): the cavities "
+               "here run to a velocity change rate of $10^{-6}$ (the Basilisk comparison's criterion) and take "
+               "each extremum from the parabola through the discrete extremum and its two neighbours, where "
+               "the cavity checks take cubic-spline extrema of the validation runs' profiles; the DFG "
+               "cylinders' settings are in \\S\\ref{sec:wp-bodies}.\n")
     cases, table = [], []
     for f in files:
         rows = _rows(f)
@@ -265,7 +270,7 @@ def body_work_precision(out, build, fig_dir, source, cases):
     one curve per coupling; the time to 3 % on 2D-2's max c_D as the bench wrote it."""
     if not cases:
         return
-    out.append(r"\subsection{Bodies: the DFG cylinders under both immersed-boundary couplings}")
+    out.append(r"\subsection{Bodies: the DFG cylinders under both immersed-boundary couplings}\label{sec:wp-bodies}")
     out.append("The cylinder of the DFG benchmarks at $D/h = 10$ and 20 (the bench's default level; 30 and 40 at its "
                "\\texttt{full} level) (labels; \\texttt{validation/dfg\\_cylinder\\_2d1} "
                "and \\texttt{\\_2d2}, each scene's grid refined as its CMakeLists does) under the papers' direct forcing "
@@ -274,8 +279,13 @@ def body_work_precision(out, build, fig_dir, source, cases):
                "$10^{-4}$, no retraction, as the 2D-2 scene ships it; the 2D-1 scene ships it with the markers retracted "
                "by $0.25h$, its README; docs/method.md \\S3.7). 2D-1 runs to the steady "
                "criterion under \\texttt{uhlmann} and to $t = 10$ under \\texttt{no\\_slip}, 2D-2 to $t = 12$; the no-slip "
-               "coupling is the end-of-step constraint of Taira \\& Colonius %s.\n" % (report_cases.cite("uhlmann2005"),
-                                                                                     report_cases.cite("taira2007")))
+               "coupling is the end-of-step constraint of Taira \\& Colonius %s. These are not the validation runs: "
+               "2D-1's \\texttt{no\\_slip} errors here are at $D/h = 10$ and 20 \\emph{without} retraction, "
+               "where the 2D-1 case's lines (\\S\\ref{sec:checks}) are its shipped scene's, with the markers retracted by "
+               "$0.25h$ (so its $c_D$ at $D/h = 20$ differs from the one here); and the figures the case READMEs "
+               "state (quoted in Known limitations, e.g.\\ the excess of max $c_D$ under the papers' coupling) "
+               "come from the READMEs' own runs and settings, not from these.\n" % (report_cases.cite("uhlmann2005"),
+                                                                                report_cases.cite("taira2007")))
     families = [f for f in _BODY_FAMILIES if any(_body_case(c[0])[0] == f for c in cases)]
     fig, axes = plt.subplots(1, len(families), figsize=(3.6 * len(families), 3.0), squeeze=False)
     for ax, family in zip(axes[0], families):
@@ -577,7 +587,11 @@ def forcing_passes_section(out, build, source):
                              [[r["passes"], num(r["cells_per_diameter"], 4), num(r["max_error_or_max_speed"], 5),
                                "%+.2f\\,\\%%" % (100 * _float(r["l2_error_or_speed_deviation"])),
                                num(r["rim_slip"], 3), num(r["ms_per_step"], 3)] for r in disk],
-                             caption="Rigid settling disk ($\\nu\\Delta t/h^2 \\le 0.25$): maximum settling speed "
+                             caption="Rigid settling disk ($\\nu\\Delta t/h^2 \\le 0.25$) under the papers' coupling "
+                                     "(\\texttt{bench\\_forcing\\_passes} sets \\texttt{ibm.coupling = \\textquotedbl{}uhlmann\\textquotedbl{}}, "
+                                     "no marker retraction; the settling case's scene and its lines in \\S\\ref{sec:checks} use the "
+                                     "end-of-step \\texttt{no\\_slip} coupling, so their speeds at the same $D/h$ "
+                                     "differ): maximum settling speed "
                                      "[cm/s] against the maximum speed %s cm/s of Glowinski et al. %s (the deviation "
                                      "as the bench computed it), largest rim slip over the run." %
                                      (num(value), report_cases.cite("glowinski2001"))))
