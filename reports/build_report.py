@@ -274,6 +274,9 @@ def slow_checks_not_run(build, defined):
 
 def summary_page(out, order, metas, judged, params, not_run=()):
     out.append(r"\vspace{-1ex}\section*{Summary: one row per validation case}")
+    out.append(r"{\small The cases of \texttt{validation/}: validation against published or exact results, "
+               r"except those marked O, which compare ibms only with its own runs (consistency checks, not "
+               r"validation).}" + "\n")
     out.append(r"\addcontentsline{toc}{section}{Summary}")
     counts = {}
     rows = []
@@ -283,8 +286,12 @@ def summary_page(out, order, metas, judged, params, not_run=()):
         m = metas[case]
         against = "%s %s%s" % (cases_mod.mark_cell(m["mark"]), esc(m["detail"]) + ": " if m["detail"] else "",
                                m["compared"])
+        # A case compared only with ibms's own runs (mark own) is a consistency check, not a
+        # validation: its row says so.
+        validates = m["validates"] if m["mark"] != "own" else \
+            r"\emph{Consistency check against ibms's own runs, not validation:} " + m["validates"]
         rows.append([r"\hyperref[case:%s]{%s}" % (case, tt(case)),
-                     m["validates"], against, grids_text(params.get(case, []), c["rows"]),
+                     validates, against, grids_text(params.get(case, []), c["rows"]),
                      cases_mod.verdict_cell(c["verdict"]), _headline(c)])
     out.append(r"{\fontsize{7}{8}\selectfont\setlength{\tabcolsep}{3pt}" + "\n" +
                longtable(r">{\raggedright\arraybackslash}p{2.1cm}>{\raggedright\arraybackslash}p{3.6cm}"
@@ -673,7 +680,9 @@ def parameter_table(out, params):
 
 
 def case_section(out, case, meta, build, source, judged, params, fig_dir):
-    out.append(r"\section{Validation case \texttt{%s}}\label{case:%s}" % (esc(case), case))
+    # a case judged only against ibms's own runs (mark own) is titled a consistency case
+    out.append(r"\section{%s case \texttt{%s}}\label{case:%s}" %
+               ("Consistency (ibms against itself)" if meta["mark"] == "own" else "Validation", esc(case), case))
     c = judged.get(case)
     out.append(r"\noindent\textbf{%s.} Validates: %s. Against (%s %s): %s. Verdict: %s." %
                (esc(meta["title"]), meta["validates"], cases_mod.mark_cell(meta["mark"]), esc(meta["qualifier"]),
