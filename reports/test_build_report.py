@@ -346,6 +346,13 @@ if stage == "tex":
         fail("the run-time table shows a unit test as a case or splits settling_disk_rigid from settling_disk")
     if not re.search(r"Unit and convergence tests from ctest's logs: 2 tests", tex):
         fail("the verification section does not count test_end_of_run_forces among the unit tests")
+    # A case compared only with ibms's own runs is called a consistency check on page 1, not a
+    # validation; the work-precision section says its DFG runs are not the validation runs.
+    row = next((line for line in summary.splitlines() if "texttt{swelling\\_\\allowbreak{}sedimentation}" in line), "")
+    if "Consistency check against ibms's own runs, not validation" not in row:
+        fail("swelling_sedimentation (mark own) is not called a consistency check in its page-1 row: %r" % row[:200])
+    if "These are not the validation runs" not in tex:
+        fail("the DFG work-precision text does not say its runs (no retraction) are not the validation runs")
     if "Known limitations" not in tex or "momentum interpolation" not in tex:
         fail("the Known limitations section does not list the miss with its cause")
     # A case without a source mark (no README with a Compared-with line) stops the build.
