@@ -3,6 +3,8 @@
 
 #include <gsl/gsl_fit.h>
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace ibms {
@@ -28,7 +30,7 @@ ObservedOrder observed_order(const std::vector<double>& h, const std::vector<dou
 }
 
 GridConvergence grid_convergence(double h_fine, double h_medium, double h_coarse, double f_fine, double f_medium,
-                                 double f_coarse) {
+                                 double f_coarse, double formal_order) {
   GridConvergence g;
   const double r21 = h_medium / h_fine, r32 = h_coarse / h_medium;
   const double e21 = f_medium - f_fine, e32 = f_coarse - f_medium;
@@ -50,7 +52,12 @@ GridConvergence grid_convergence(double h_fine, double h_medium, double h_coarse
   const double rp = std::pow(r21, p);
   g.order = p;
   g.extrapolated = (rp * f_fine - f_medium) / (rp - 1.0);
-  g.gci_fine = 1.25 * std::abs(e21 / f_fine) / (rp - 1.0);
+  // Roache's GCI: the observed order with F_s = 1.25 where it is near the formal one (or none is
+  // stated), else the order bounded by the formal one with F_s = 3 (Oberkampf & Roy 2010).
+  const bool near_formal = !std::isfinite(formal_order) || std::abs(p - formal_order) <= 0.1 * formal_order;
+  g.safety_factor = near_formal ? 1.25 : 3.0;
+  g.gci_order = near_formal ? p : std::min(std::max(0.5, p), formal_order);
+  g.gci_fine = g.safety_factor * std::abs(e21 / f_fine) / (std::pow(r21, g.gci_order) - 1.0);
   return g;
 }
 

@@ -69,7 +69,7 @@ void report_gci(const std::vector<Profiles>& grids, const std::string& results, 
       phi[k] = q.kind == Quantity::value_at ? spline(q.at) : spline.extremum(q.kind == Quantity::maximum);
     }
     // Spacings in units of the fine one (refinement ratio 2 between the grids).
-    const GridConvergence g = grid_convergence(1.0, 2.0, 4.0, phi[2], phi[1], phi[0]);
+    const GridConvergence g = grid_convergence(1.0, 2.0, 4.0, phi[2], phi[1], phi[0], fluid_order);
     std::printf("  %-18s coarse %.6f  medium %.6f  fine %.6f  observed order %.2f  extrapolated %.6f  GCI_fine %.3f %%%s\n",
                 q.label, phi[0], phi[1], phi[2], g.order, g.extrapolated, 100 * g.gci_fine,
                 g.converging ? "" : g.monotone ? "  (the differences do not shrink: no order, no GCI)"

@@ -207,7 +207,8 @@ int main(int argc, char** argv) {
       std::printf("%s, finest three grids (D/h = %g, %g, %g): observed order, Richardson value, GCI of the finest\n",
                   name.c_str(), grids[n - 3].resolution, grids[n - 2].resolution, grids[n - 1].resolution);
       for (std::size_t q = 0; q < keys.size(); ++q) {
-        const GridConvergence r = grid_convergence(h1, h2, h3, figures[n - 1][q], figures[n - 2][q], figures[n - 3][q]);
+        const GridConvergence r = grid_convergence(h1, h2, h3, figures[n - 1][q], figures[n - 2][q], figures[n - 3][q],
+                                                   immersed_boundary_order);
         std::printf("  %-36s order %6.3f  Richardson %.6g  GCI %.3g %%\n", keys[q].c_str(), r.order, r.extrapolated,
                     100 * r.gci_fine);
         record_info(name, keys[q] + ": observed order (finest three grids)", r.order);
