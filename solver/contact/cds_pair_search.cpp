@@ -232,4 +232,11 @@ void find_touching_pairs_body_bounds(const ContactSpheres& spheres, const WallBo
   sort_pairs(result);
 }
 
+void keep_touching_pairs(const ContactSpheres& spheres, const WallBox& box, const std::vector<SpherePair>& candidates,
+                         PairSearchResult& out) {
+  out.pairs.clear();
+  out.n_pair_checks = 0;
+  for (const SpherePair& pair : candidates) check_pair(spheres, box, pair.first, pair.second, out);
+}
+
 }  // namespace ibms

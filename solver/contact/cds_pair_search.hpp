@@ -57,6 +57,13 @@ PairSearchResult find_touching_pairs_body_bounds(const ContactSpheres& spheres, 
 // The same into `out` (cleared, capacity reused) for walled boxes; periodic boxes: the cell list.
 void find_touching_pairs_body_bounds(const ContactSpheres& spheres, const WallBox& box, PairSearchResult& out);
 
+// The pairs of `candidates` (sorted, as a search returns them) that touch now, by the searches' own
+// test, into `out` (cleared; sorted): where the candidates hold every pair that can touch (a search
+// with larger spheres, made while the centres were closer to where they are than its margin), the
+// same pairs in the same order as a new search. n_pair_checks counts the candidates.
+void keep_touching_pairs(const ContactSpheres& spheres, const WallBox& box, const std::vector<SpherePair>& candidates,
+                         PairSearchResult& out);
+
 // x_to - x_from, minimum image in the periodic directions of the box [length].
 std::array<double, 2> separation(const std::array<double, 2>& from, const std::array<double, 2>& to,
                                  const WallBox& box);

@@ -181,6 +181,21 @@ class ContactSubcycler {
   double time_built_ = 0.0;          // inner time of the list: radii in the list belong to it
   ContactSpheres spheres_;
   PairSearchResult search_;
+  // The pairs within a wider reach than the list needs, kept across lists and calls while no sphere
+  // centre has moved half the difference (find_list_pairs): a resting bed rebuilds its list at
+  // every outer step, and filtering these is cheaper than a new search, with the same result.
+  struct PairSuperset {
+    PairSearchResult search;
+    std::vector<std::array<double, 2>> anchor;  // the sphere centres when it was made [length]
+    std::vector<int> body, point;               // which spheres, in order
+    double reach = 0.0;                          // the skin it was made with [length]
+    bool valid = false;
+  };
+  PairSuperset superset_;
+  std::vector<double> kept_radius_;  // the spheres' radii while the superset's search grows them
+  // search_ = the pairs of spheres_ (radii grown by half the skin) that touch, as
+  // find_touching_pairs_body_bounds gives them, from superset_ where it still holds them all.
+  void find_list_pairs(const WallBox& box, double skin, bool growing);
   long pair_checks_ = 0;
 };
 

@@ -12,6 +12,15 @@
 
 namespace ibms {
 
+namespace {
+
+// The superset of the list's pairs reaches this fraction of the smallest CDS radius beyond the
+// skin (or twice the skin, if that is more): at rest the skin is a tenth of the radius, so a
+// superset serves until some point has moved an eighth of the radius.
+constexpr double superset_margin_fraction = 0.25;
+
+}  // namespace
+
 void ContactSubcycler::Candidates::clear() {
   for (std::vector<int>* a : {&body, &point}) a->clear();
   for (std::vector<double>* a : {&inverse_mass, &x, &y, &u, &v, &force_x, &force_y, &anchor_x, &anchor_y, &slow_x,
@@ -69,6 +78,39 @@ void ContactSubcycler::release_list(std::vector<MassSpringBody>& bodies) {
   touched_.clear();
 }
 
+// A pair that touches now with the list's skin s had, when the superset was made with reach S, a
+// gap below s + 2 D (D the largest centre displacement since): the superset holds it while
+// s + 2 D <= S. Growing radii (swelling) take a new search every time.
+void ContactSubcycler::find_list_pairs(const WallBox& box, double skin, bool growing) {
+  PairSuperset& kept = superset_;
+  const int n = spheres_.n_spheres();
+  bool holds = kept.valid && !growing && static_cast<int>(kept.anchor.size()) == n && skin < kept.reach;
+  double moved_squared = 0.0;
+  for (int s = 0; holds && s < n; ++s) {
+    holds = spheres_.body[s] == kept.body[s] && spheres_.point[s] == kept.point[s];
+    const std::array<double, 2> d = separation(kept.anchor[s], spheres_.centre[s], box);
+    moved_squared = std::max(moved_squared, d[0]*d[0] + d[1]*d[1]);
+  }
+  if (!(holds && skin + 2.0 * std::sqrt(moved_squared) <= kept.reach)) {
+    // A new superset: the spheres grown by half the wider reach, the search, the radii back.
+    double smallest = HUGE_VAL;
+    for (double r : spheres_.radius) smallest = std::min(smallest, r - 0.5 * skin);
+    const double reach = skin + std::max(skin, superset_margin_fraction * smallest);
+    const double grow = 0.5 * (reach - skin);
+    kept_radius_.assign(spheres_.radius.begin(), spheres_.radius.end());  // restored exactly below
+    for (double& r : spheres_.radius) r += grow;
+    find_touching_pairs_body_bounds(spheres_, box, kept.search);
+    spheres_.radius.assign(kept_radius_.begin(), kept_radius_.end());
+    kept.anchor.assign(spheres_.centre.begin(), spheres_.centre.end());
+    kept.body.assign(spheres_.body.begin(), spheres_.body.end());
+    kept.point.assign(spheres_.point.begin(), spheres_.point.end());
+    kept.reach = reach;
+    kept.valid = !growing;
+    pair_checks_ += kept.search.n_pair_checks;
+  }
+  keep_touching_pairs(spheres_, box, kept.search.pairs, search_);
+}
+
 void ContactSubcycler::build_list(const ContactModel& model, const WallBox& box, double skin,
                                   const BodySet& members, const std::vector<MassSpringBody>& bodies, double time) {
   time_built_ = time;
@@ -86,7 +128,9 @@ void ContactSubcycler::build_list(const ContactModel& model, const WallBox& box,
                                           [&](int b) { return b != spheres_.body.front(); });
   if (several_bodies) {
     for (double& r : spheres_.radius) r += half_skin;
-    find_touching_pairs_body_bounds(spheres_, box, search_);
+    const bool growing = std::any_of(spheres_.body.begin(), spheres_.body.end(),
+                                     [&](int b) { return radius_rate_[b] != 0.0; });
+    find_list_pairs(box, skin, growing);
     pair_checks_ += search_.n_pair_checks;
     for (const SpherePair& found : search_.pairs) {
       const int s = found.first, t = found.second;
