@@ -607,6 +607,21 @@ def literature_for(case, source, params):
                      (cases_mod.cite("schafer1996"),
                       "; dashed: the refined values of John \\& Matthies " + cases_mod.cite("john2001")
                       if case.endswith("1") else " for the maxima", num(lit.get("startup", 0), 3)))
+        # The slip panel: the tolerance the end-of-step constraint holds the face velocities to, and
+        # what the cell velocities' slip is (report_figures.body_histories draws both).
+        tols = sorted({p["scene"].get("ibm", {}).get("slip_tolerance", 1e-3) for p in params
+                       if p["scene"].get("ibm", {}).get("coupling") == "no_slip"})
+        for tol in tols:
+            lit["lines"].setdefault("face_slip_max", []).append(
+                (tol, "ibm.slip_tolerance %s" % num(tol)))
+        notes.append("Right: the largest slip at the markers relative to $U_{\\rm mean}$, log scale. Solid: the "
+                     "face velocities' slip (\\texttt{face\\_slip\\_max}), the one the end-of-step "
+                     "\\texttt{no\\_slip} coupling holds to \\texttt{ibm.slip\\_tolerance}%s; dashed: the "
+                     "cell-centred velocity interpolated at the markers (\\texttt{slip\\_max}), which no "
+                     "constraint holds: the cell velocities differ from the face velocities by the momentum "
+                     "interpolation's pressure term (\\texttt{docs/method.md} \\S2.3), largest where the "
+                     "pressure jumps across the rim." % (" (dotted line, %s)" % ", ".join(num(t) for t in tols)
+                                                          if tols else ""))
     if case == "settling_disk":
         ref = rd(source, case, "settling_disk_rho1.25.csv")
         curves, _ = cases_mod.read_long_reference(source, case, "wan_turek_settling_digitized.csv")
