@@ -70,11 +70,14 @@ with open(os.path.join(work, "validation", "results.csv"), "w") as f:
 dfg = os.path.join(work, "validation", "dfg_cylinder_2d2")
 os.makedirs(dfg)
 with open(os.path.join(dfg, "dfg_2d2_20_bodies.csv"), "w") as f:
-    f.write("# synthetic force history\ntime [time],body_000/drag_coefficient [-],body_000/lift_coefficient [-]\n")
+    # the slip at the markers of the cell velocities (slip_max) and of the constrained face velocities
+    # (face_slip_max): the figure draws both, the caption says which the tolerance holds
+    f.write("# synthetic force history\ntime [time],body_000/drag_coefficient [-],body_000/lift_coefficient [-],"
+            "body_000/slip_max [-],body_000/face_slip_max [-]\n")
     for k in range(1, 401):
         t = 0.03 * k
-        f.write("%g,%g,%g\n" % (t, 40.0 / k + 3.5 + 0.1 * math.sin(6 * t), math.sin(3 * t)))
-    f.write("12.0001,9.0,0.0\n")
+        f.write("%g,%g,%g,%g,%g\n" % (t, 40.0 / k + 3.5 + 0.1 * math.sin(6 * t), math.sin(3 * t), 0.04, 9e-5))
+    f.write("12.0001,9.0,0.0,0.04,9e-5\n")
 import h5py  # noqa: E402,F811 - imported above only to test its presence
 with h5py.File(os.path.join(dfg, "dfg_2d2_20.h5"), "w") as h5:
     h5.attrs["ibms_version"] = "0.0-synthetic"
@@ -295,6 +298,36 @@ if stage == "tex":
     for c, text in excerpts:
         if not re.search(r"([.!?)]|\w \.\.\.)\}?$", text.strip()):
             fail("the README excerpt of %s ends mid-sentence without an ellipsis: ...%r" % (c, text[-60:]))
+    # The DFG slip panel: the caption says the face velocities' slip is the constrained one and the
+    # cell velocities' slip is the momentum-interpolated one, not held to the tolerance.
+    if "face velocities' slip (\\texttt{face\\_slip\\_max})" not in tex or "momentum interpolation" not in tex:
+        fail("the DFG body-history caption does not tell the constrained face slip from the cell slip")
+    # Stability maps: runs marked stable above the von Neumann line are counted with their steps
+    # and the analysed growth, and how many ran long enough for it to show (rows below: one of two).
+    import report_bench  # noqa: E402
+    import fluid_stability_theory  # noqa: E402
+    keys = ("mode,cfl,cell_reynolds,viscous_number,theory_max_g,steps,outcome,max_cfl_measured,late_energy_ratio,"
+            "max_speed,first_above_cfl_1,first_above_cfl_2").split(",")
+    rows = [dict(zip(keys, v.split(","))) for v in (
+        "no_cfl_guard,1.5,512,0.003,2.2476,427,stable,0.654,1.4,0.43,-1,-1",   # 2.25^427: long enough
+        "no_cfl_guard,0.3,512,0.0006,1.00244,400,stable,0.3,1.0,0.9,-1,-1",    # 1.0024^400 = 2.7: too short
+        "no_cfl_guard,0.1,4,0.025,1.0,6000,stable,0.09,1.0,0.9,-1,-1",
+        "no_cfl_guard,1.5,0.25,6,1.0,428,stable,2.011,1.0,1.341,1,1")]         # measured CFL above run.cfl
+    text = report_bench.fluid_above_line_text(rows, "cavity", fluid_stability_theory)
+    if not text or not text.startswith("2 of the 4 runs marked stable") or "ran 400 to 427 steps" not in text \
+            or "2.248 per step; 1 of them ran long enough" not in text:
+        fail("the stable runs above the von Neumann line are not counted with steps and growth: %r" % (text,))
+    text = report_bench.fluid_cfl_overshoot_text(rows, "cavity_adaptive") or ""
+    if "\\emph{end} of that step" not in text or "measured 2.01, above 1 from step 1, above 2 from step 1" not in text:
+        fail("a measured CFL number above run.cfl is not explained by the measured number's definition: %r" % text)
+    # The forcing-passes section: its text names the papers' coupling and the change from 1 to 5 passes.
+    rows = [dict(case="couette", passes=p, cells_per_diameter="9.6", l2_error_or_speed_deviation=e, rim_slip=r,
+                 max_error_or_max_speed="0.1", ms_per_step="1") for p, e, r in (("1", "0.01", "0.13"),
+                                                                                 ("5", "0.055", "0.0065"))]
+    text = report_bench.forcing_passes_text(rows, [])
+    if "papers' coupling" not in text or "rises from 0.01 to 0.055 (5.5 times higher)" not in text \
+            or "(20 times lower)" not in text:
+        fail("the forcing-passes text does not state the coupling and the slip and error change: %r" % text)
     # No control character in the source (a "\t" of "\textbf" read as a tab printed "extbf").
     if re.search(r"[\x00-\x09\x0b-\x1f]", tex) or "extbf" in tex.replace("\\textbf", ""):
         fail("report.tex holds a control character or a mangled \\textbf (a backslash escape eaten by Python)")
