@@ -328,6 +328,14 @@ if stage == "tex":
     if "papers' coupling" not in text or "rises from 0.01 to 0.055 (5.5 times higher)" not in text \
             or "(20 times lower)" not in text:
         fail("the forcing-passes text does not state the coupling and the slip and error change: %r" % text)
+    # DKT: each ungated quantity has its own cause, none the README placeholder.
+    import report_cases  # noqa: E402
+    causes = [report_cases.cause_of("dkt_two_disks", m) for m in (
+        "start of kissing, distance < 1.25 d [s] (Wan & Turek ~1.2)", "leading max speed [cm/s] (Wan & Turek 1.57)",
+        "time of max speed, leading [s]", "time of minimum centre distance [s] (Wan & Turek 1.4)",
+        "time the pair is horizontal [s] (Wan & Turek 1.87)")]
+    if len(set(causes)) != 5 or any(c.startswith("See ") for c in causes):
+        fail("the DKT misses do not each have their own cause: %r" % causes)
     # No control character in the source (a "\t" of "\textbf" read as a tab printed "extbf").
     if re.search(r"[\x00-\x09\x0b-\x1f]", tex) or "extbf" in tex.replace("\\textbf", ""):
         fail("report.tex holds a control character or a mangled \\textbf (a backslash escape eaten by Python)")
