@@ -328,6 +328,21 @@ if stage == "tex":
     if "papers' coupling" not in text or "rises from 0.01 to 0.055 (5.5 times higher)" not in text \
             or "(20 times lower)" not in text:
         fail("the forcing-passes text does not state the coupling and the slip and error change: %r" % text)
+    # Touching contact-sphere pairs per run (the swelling cavity's runs under two contact laws): the
+    # late-window mean and largest count, mean overlap and closest rims, from each run's body series.
+    import build_report as builder  # noqa: E402
+    pairs_dir = os.path.join(work, "pairs_case")
+    os.makedirs(os.path.join(pairs_dir, "collision_time"), exist_ok=True)
+    for sub, pairs in (("", 7), ("collision_time", 80)):
+        with open(os.path.join(pairs_dir, sub, "swelling_bodies.csv"), "w") as f:
+            f.write("# synthetic\ntime [time],contact/n_active_pairs [-],contact/max_overlap [length],"
+                    "bodies/min_rim_distance [length]\n")
+            for k in range(21):
+                f.write("%d,%d,%g,%g\n" % (k, pairs + (k % 2), 1e-7 * pairs, 0.05 + 0.001 * k))
+    got = {r["run"]: r for r in builder.contact_pairs_rows(pairs_dir)}
+    if sorted(got) != ["collision_time/swelling", "swelling"] or got["collision_time/swelling"]["max_pairs"] != 81 \
+            or abs(got["swelling"]["mean_pairs"] - 7.5) > 1e-9 or abs(got["swelling"]["rim"] - 0.065) > 1e-9:
+        fail("the touching-pairs table does not read the runs' late windows (t >= 15): %r" % got)
     # DKT: each ungated quantity has its own cause, none the README placeholder.
     import report_cases  # noqa: E402
     causes = [report_cases.cause_of("dkt_two_disks", m) for m in (
