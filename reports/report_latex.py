@@ -71,6 +71,8 @@ def num(value, digits=4):
             return esc(s)
     if math.isnan(value):
         return "nan"
+    if math.isinf(value):  # e.g. 'never' (a first-fold time of a run whose rims never fold)
+        return r"$\infty$" if value > 0 else r"$-\infty$"
     if value == 0:
         return "0"
     if 1e-3 <= abs(value) < 1e4:
