@@ -78,6 +78,11 @@ double orientation(const Vec& o, const Vec& p, const Vec& q) {
   return (p[0] - o[0]) * (q[1] - o[1]) - (p[1] - o[1]) * (q[0] - o[0]);
 }
 
+// The box of the edge p0-p1.
+Box edge_box(const Vec& p0, const Vec& p1) {
+  return {{std::min(p0[0], p1[0]), std::min(p0[1], p1[1])}, {std::max(p0[0], p1[0]), std::max(p0[1], p1[1])}};
+}
+
 // Two edges p0-p1 and q0-q1 cross (properly: each separates the other's end points).
 bool edges_cross(const Vec& p0, const Vec& p1, const Vec& q0, const Vec& q1) {
   const double o1 = orientation(p0, p1, q0), o2 = orientation(p0, p1, q1);
@@ -92,13 +97,12 @@ int rim_self_crossings(const MassSpringBody& body) {
   for (int l = 0; l < n; ++l) {
     const Vec& p0 = body.position[l];
     const Vec& p1 = body.position[(l + 1) % n];
-    const Box edge{{std::min(p0[0], p1[0]), std::min(p0[1], p1[1])}, {std::max(p0[0], p1[0]), std::max(p0[1], p1[1])}};
+    const Box edge = edge_box(p0, p1);
     for (int m = l + 2; m < n; ++m) {
       if (l == 0 && m == n - 1) continue;  // the edge before l = 0 shares its point
       const Vec& q0 = body.position[m];
       const Vec& q1 = body.position[(m + 1) % n];
-      const Box other{{std::min(q0[0], q1[0]), std::min(q0[1], q1[1])}, {std::max(q0[0], q1[0]), std::max(q0[1], q1[1])}};
-      if (boxes_overlap(edge, other) && edges_cross(p0, p1, q0, q1)) ++crossings;
+      if (boxes_overlap(edge, edge_box(q0, q1)) && edges_cross(p0, p1, q0, q1)) ++crossings;
     }
   }
   return crossings;
@@ -191,7 +195,7 @@ BodySeparation body_separation(const std::vector<MassSpringBody>& bodies, std::a
     for (int l = 0; l < A.n_surface; ++l) {
       const Vec& p0 = A.position[l];
       const Vec& p1 = A.position[(l + 1) % A.n_surface];
-      const Box edge{{std::min(p0[0], p1[0]), std::min(p0[1], p1[1])}, {std::max(p0[0], p1[0]), std::max(p0[1], p1[1])}};
+      const Box edge = edge_box(p0, p1);
       if (!boxes_overlap(edge, box_b)) continue;
       for (int m = 0; m < B.n_surface; ++m) {
         const Vec q0{B.position[m][0] + shift[0], B.position[m][1] + shift[1]};
