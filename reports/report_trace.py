@@ -13,7 +13,21 @@ from collections import OrderedDict
 
 from report_latex import esc, longtable, md_text, tt
 
-CITATION = re.compile(r"method\.md\s*§\s*(A?\d+(?:\.\d+)?[a-z]?)")
+# A section number: 2, 1.9, A8, A10a. A citation is 'method.md §N', or one 'method.md' with a list of
+# sections each written with its '§' ('method.md §1.9, §A8', '§4 and §A9'); test_method_citations.sh
+# reads the same form.
+SECTION = r"A?\d+(?:\.\d+)?[a-z]?"
+CITATION = re.compile(r"method\.md\s*(§\s*%s(?:\s*(?:,|and|/)\s*§\s*%s)*)" % (SECTION, SECTION))
+# The line right under a heading that marks a section as stating no requirement (method.md's legend).
+DESCRIPTIVE = re.compile(r"\*Descriptive:\s*(.*?)\*\s*$")
+
+
+def cited_in(text):
+    """The section numbers that text cites, in order (each item of a list of citations)."""
+    return [n for m in CITATION.finditer(text) for n in re.findall(r"§\s*(%s)" % SECTION, m.group(1))]
+
+
+HEADING = re.compile(r"#{2,3} (%s)\.? (.*)" % SECTION)
 
 
 def method_sections(source):
@@ -21,7 +35,7 @@ def method_sections(source):
     sections = OrderedDict()
     with open(os.path.join(source, "docs", "method.md"), encoding="utf-8") as f:
         for line in f:
-            m = re.match(r"#{2,3} (A?\d+(?:\.\d+)?[a-z]?)\.? (.*)", line.rstrip())
+            m = HEADING.match(line.rstrip())
             if m:
                 # without the provenance tags ([P] papers, [L] literature, [D] ibms's choice, joined
                 # by '+'), which mean nothing without method.md's key
@@ -29,15 +43,57 @@ def method_sections(source):
     return sections
 
 
+def section_kinds(source):
+    """(descriptive, groups): the sections that state no requirement. descriptive: OrderedDict number
+    -> reason, from the paragraph '*Descriptive: reason.*' right under the heading (method.md's
+    legend); groups: the headings with no text of their own before their first
+    subsection (## 1. straight into ### 1.1), whose requirements are their subsections'. Every other
+    numbered section is a requirement."""
+    descriptive, groups = OrderedDict(), []
+    with open(os.path.join(source, "docs", "method.md"), encoding="utf-8") as f:
+        lines = [line.rstrip() for line in f]
+    for i, line in enumerate(lines):
+        m = HEADING.match(line)
+        if not m:
+            continue
+        start = next((k for k in range(i + 1, len(lines)) if lines[k].strip()), len(lines))
+        paragraph = []  # the first paragraph under the heading (its lines, up to a blank one)
+        for text in lines[start:]:
+            if not text.strip():
+                break
+            paragraph.append(text.strip())
+        marker = DESCRIPTIVE.match(" ".join(paragraph))
+        if marker:
+            descriptive[m.group(1)] = marker.group(1).strip().rstrip(".")
+        elif line.startswith("## ") and paragraph and paragraph[0].startswith("### ") and HEADING.match(paragraph[0]):
+            groups.append(m.group(1))
+    return descriptive, groups
+
+
 def ctest_tests(build):
     """[(name, labels, command)] of every test the build defines (empty without ctest or a
     configured build)."""
+    # ctest rewrites Testing/Temporary/LastTest.log even when it only lists the tests, which would
+    # replace the verdicts of the build's last run (what the report reads) by an empty log: the logs
+    # are put back as they were.
+    logs = glob.glob(os.path.join(build, "Testing", "Temporary", "LastTest*.log"))
+    kept = {}
+    for path in logs:
+        with open(path, "rb") as f:
+            kept[path] = f.read()
     try:
         listing = subprocess.run(["ctest", "--show-only=json-v1"], cwd=build, capture_output=True, text=True,
                                  timeout=60)
         tests = json.loads(listing.stdout).get("tests", [])
     except (OSError, ValueError, subprocess.SubprocessError):
         return []
+    finally:
+        for path in glob.glob(os.path.join(build, "Testing", "Temporary", "LastTest*.log")):
+            if path not in kept:
+                os.remove(path)
+        for path, content in kept.items():
+            with open(path, "wb") as f:
+                f.write(content)
     out = []
     for t in tests:
         labels = [v for p in t.get("properties", []) if p.get("name") == "LABELS" for v in p.get("value", [])]
@@ -117,7 +173,7 @@ def cited_sections(paths):
     for path in paths:
         try:
             with open(path, encoding="utf-8", errors="replace") as f:
-                cited.update(CITATION.findall(f.read()))
+                cited.update(cited_in(f.read()))
         except OSError:
             continue
     return cited
@@ -141,8 +197,11 @@ def traceability_section(out, source, tests, ctest_results):
         rows.append((name, labels, first_claim(paths), verdict))
     out.append(r"\section{Traceability: method sections, tests, verdicts}\label{sec:trace}")
     n_run = sum(1 for r in rows if r[3] != "not run")
-    out.append("Each numbered section of \\texttt{docs/method.md} is a requirement, named M\\textit{n}; a test traces "
-               "to it when its sources cite it (\\texttt{method.md \\S n}, the citations "
+    out.append("Each numbered section of \\texttt{docs/method.md} is a requirement, named M\\textit{n}, unless it states "
+               "none: a section marked \\emph{Descriptive} under its heading (sources, summaries of schemes, open "
+               "questions), or a heading with no text of its own, which groups its subsections. A test traces "
+               "to a section when its sources cite it (\\texttt{method.md \\S n}, appendix sections as "
+               "\\texttt{\\S A8}, the citations "
                "\\texttt{test\\_method\\_citations} keeps valid). Verdicts are ctest's own for this build "
                "(\\texttt{Testing/Temporary/LastTest*.log}: %d of the build's %d tests ran; \\emph{not run}: "
                "not in the logs, e.g.\\ a label this level leaves out)." % (n_run, len(rows)))
@@ -150,12 +209,14 @@ def traceability_section(out, source, tests, ctest_results):
     def verdict_text(v):
         return {"pass": r"\textcolor{passgreen}{pass}", "FAIL": r"\textcolor{red}{\textbf{FAIL}}"}.get(v, esc(v))
 
+    descriptive, groups = section_kinds(source)
     matrix = []
     untested = []
     for n, title in sections.items():
         cited = traced[n]
         if not cited:
-            untested.append("M%s" % n)
+            if n not in descriptive and n not in groups:
+                untested.append("M%s" % n)
             continue
         passed = sum(1 for _, v in cited if v == "pass")
         failed = sum(1 for _, v in cited if v == "FAIL")
@@ -167,8 +228,18 @@ def traceability_section(out, source, tests, ctest_results):
                longtable(r"l>{\raggedright\arraybackslash}p{4.2cm}>{\raggedright\arraybackslash}p{8.4cm}r",
                          ["req.", "method section", "tests citing it", "pass / tests"], matrix, size=None,
                          caption="Method sections of \\texttt{docs/method.md} and the tests that cite them.") + "}")
-    out.append("\\noindent\\emph{Sections no test cites} (%d of %d): %s.\n" %
-               (len(untested), len(sections), ", ".join(untested) if untested else "none"))
+    n_requirements = sum(1 for n in sections if n not in descriptive and n not in groups)
+    out.append("\\noindent\\emph{Requirement sections no test cites} (%d of %d requirements): %s.\n" %
+               (len(untested), n_requirements, ", ".join(untested) if untested else "none"))
+    if descriptive or groups:
+        parts = []
+        if descriptive:
+            parts.append("descriptive (marked in \\texttt{docs/method.md}): " +
+                         "; ".join("M%s (%s)" % (esc(n), md_text(clip_words(why, 160))) for n, why in descriptive.items()))
+        if groups:
+            parts.append("headings that group their subsections: " + ", ".join("M%s" % esc(n) for n in groups))
+        out.append("\\noindent\\emph{Sections that state no requirement} (%d of %d sections): %s.\n" %
+                   (len(descriptive) + len(groups), len(sections), "; ".join(parts)))
     table = [[tt(name), esc(", ".join(labels)), md_text(claim) or "--", verdict_text(v)] for name, labels, claim, v in rows]
     out.append(r"\subsection*{Every test with its stated claim}")
     out.append(r"{\fontsize{7}{8}\selectfont" + "\n" +

@@ -397,6 +397,37 @@ if stage == "tex":
     clipped = report_trace.clip_words("alpha beta gamma delta", 14)
     if clipped != "alpha beta ...":
         fail("a long claim is cut as %r, not at a word with an ellipsis" % clipped)
+    # Traceability on a tiny source tree: a list of citations with an appendix section (sections
+    # 1.1 and A8 after one 'method.md', each with its '§') traces the test to both sections; a
+    # section marked Descriptive under its heading and a heading that only groups its subsections
+    # are not listed among the sections no test cites, the descriptive one is named with its reason;
+    # an uncited requirement (A9) is listed. (The citation is assembled, so that this file, a test's
+    # source, cites nothing itself.)
+    tree = os.path.join(work, "trace_source")
+    os.makedirs(os.path.join(tree, "docs"), exist_ok=True)
+    os.makedirs(os.path.join(tree, "verification"), exist_ok=True)
+    with open(os.path.join(tree, "docs", "method.md"), "w", encoding="utf-8") as f:
+        f.write("# M\n\n## 1. Bodies\n\n### 1.1 Model [P]\n\nA claim.\n\n## 2. Sources\n\n"
+                "*Descriptive: the papers only.*\n\nText.\n\n## A8. DEM\n\nFormulas.\n\n"
+                "## A9. Kernels\n\nMore formulas.\n")
+    script = os.path.join(tree, "verification", "test_trace.sh")
+    with open(script, "w", encoding="utf-8") as f:
+        f.write("# Claim: a synthetic test (docs/method.md " + "\u00a71.1, \u00a7" + "A8).\n")
+    trace_out = []
+    report_trace.traceability_section(trace_out, tree, [("test_trace", ["unit"], [script])],
+                                      [{"name": "test_trace", "status": "pass"}])
+    trace_tex = "\n".join(trace_out)
+    rows = {r.split("&")[0].strip(): r for r in trace_tex.splitlines() if re.match(r"M[0-9A]", r)}
+    if "allowbreak{}trace}" not in rows.get("MA8", "") or "allowbreak{}trace}" not in rows.get("M1.1", ""):
+        fail("an appendix citation in a list ('method.md \u00a71.1, \u00a7A8') does not trace the test to "
+             "M1.1 and MA8: %r" % sorted(rows))
+    untested = re.search(r"Requirement sections no test cites\}? \((\d+) of (\d+) requirements\): ([^.]*)\.",
+                         trace_tex)
+    if not untested or untested.group(3) != "MA9" or untested.group(1, 2) != ("1", "3"):
+        fail("the requirement sections no test cites are not exactly MA9 of 3 requirements (the descriptive M2 "
+             "and the grouping M1 left out): %r" % (untested.group(0) if untested else trace_tex[-600:]))
+    if "M2 (the papers only)" not in trace_tex or "group their subsections: M1" not in trace_tex:
+        fail("the descriptive section M2 (with its reason) or the grouping heading M1 is not named apart")
     # The run times: a unit test whose name holds '_run_' is no validation case's, a rigid run of
     # the settling disk goes with its case; the verification section counts the unit test.
     times = tex[tex.index("Run time per validation case"):]

@@ -12,6 +12,9 @@
 // boundary sits O(h) away from the true one: first order in both L2 and max norms (Uhlmann 2005;
 // Breugem 2012 reaches ~2 only with retracted markers). Asserted (docs/design.md §6): slope over the
 // finest three >= 1 - 0.1, every pairwise order positive.
+// Checks docs/method.md §2.4, §3.5: with direct forcing the velocity converges at first order in h
+// (§2.4), and the papers' coupling converges at a fixed viscous number of 0.5 (§3.5, "Departure:
+// the viscous number").
 #define BOOST_TEST_MODULE circular_couette
 #include <boost/test/unit_test.hpp>
 

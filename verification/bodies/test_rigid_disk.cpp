@@ -1,6 +1,8 @@
 // Rigid bodies in two flows whose answer is known:
 //  (1) a neutrally buoyant rigid disk at rest in fluid at rest, with gravity, stays at rest: the
-//      buoyancy-corrected weight is zero and nothing else may move it (round-off tolerance);
+//      buoyancy-corrected weight is zero and nothing else may move it (round-off tolerance;
+//      docs/method.md §2.6: gravity acts on the bodies only, as M (1 - rho_f / rho_s) g, with no
+//      hydrostatic pressure in the fluid to stir it);
 //  (2) a neutrally buoyant rigid disk (D = 0.2), started at rest at the centre of a prescribed
 //      cylinder (D = 0.8) turning at Omega, ends co-rotating with the fluid's rigid rotation
 //      (the steady Navier-Stokes solution inside the cylinder): its rotation rate approaches Omega

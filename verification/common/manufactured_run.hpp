@@ -1,4 +1,4 @@
-// The fluid solver on a manufactured solution (docs/method.md A10b): the one runner of the
+// The fluid solver on a manufactured solution (docs/method.md §A10b): the one runner of the
 // convergence tests (verification/fluid/test_manufactured_solution.cpp, test_channel_convergence.cpp)
 // and the work-precision benchmark (bench/bench_work_precision.cpp), so that the benchmark times
 // the run the tests check. Header-only: the solutions are header-only structs beside the tests

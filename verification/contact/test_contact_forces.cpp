@@ -1,7 +1,8 @@
-// Properties of the DEM contact forces during wheel collisions with no fluid (docs/method.md §1.9, A8):
-// pair forces are equal and opposite, so total momentum is conserved to round-off; the largest
-// CDS overlap stays below the undamped estimate delta_max = v0 sqrt(m_eff / (n_c k_Dn)) (A8) with
-// n_c parallel pairs sharing the load (m_eff of the whole bodies: the wheels are stiff).
+// Properties of the DEM contact forces during wheel collisions with no fluid
+// (docs/method.md §1.9, §A8): pair forces are equal and opposite, so total momentum is conserved to
+// round-off; the largest CDS overlap stays below the undamped estimate
+// delta_max = v0 sqrt(m_eff / (n_c k_Dn)) (A8) with n_c parallel pairs sharing the load (m_eff of
+// the whole bodies: the wheels are stiff).
 #define BOOST_TEST_MODULE contact_forces
 #include <boost/test/unit_test.hpp>
 

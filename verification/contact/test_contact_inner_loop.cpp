@@ -24,6 +24,9 @@
 //      centre-of-mass restitution moves by 3.6 % when its sub-step is halved and spans 0.74-0.79
 //      over impact phases and sub-steps.
 // With IBMS_RESULTS_DIR set (ctest) the table goes to contact_inner_loop.csv.
+// Checks docs/method.md §5.4, §A8: the inner loop's rebound, elastic energy and largest overlap
+// against the shared sub-step (§5.4, "The inner step"), and one listed pair taking exactly A8's
+// t_c / 20 step count, a damped pair the bound's (more steps).
 #define BOOST_TEST_MODULE contact_inner_loop
 #include <boost/test/unit_test.hpp>
 

@@ -1,5 +1,5 @@
 // Head-on collisions of two stiff wheels, and of a wheel with a wall, with no fluid rebound with
-// the restitution coefficient e_D of the contact (docs/method.md §1.9, A8), measured on the
+// the restitution coefficient e_D of the contact (docs/method.md §1.9, §A8), measured on the
 // centre-of-mass velocities. The wheels are stiff: springs 1000 k_Dn, so the wheel modes are far
 // above the contact frequency sqrt(S k_Dn / m_eff) and the body rebounds as a rigid one (a
 // compliant wheel in series softens the contact, lowers its damping ratio and raises e; the error

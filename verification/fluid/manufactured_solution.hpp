@@ -1,4 +1,4 @@
-// Manufactured solution with no-slip walls on the unit square (docs/method.md A10b, after Donea &
+// Manufactured solution with no-slip walls on the unit square (docs/method.md §A10b, after Donea &
 // Huerta 2003): psi = A a(x) a(y) g(t), a(s) = s^2 (1-s)^2, pressure P h(t) cos(pi x) cos(pi y)
 // (zero mean). The forcing f = du/dt + (u.grad)u + grad p - nu lap u is derived in A10b; the
 // pressure is kinematic. Derivation check: tools/derive_manufactured_forcing.py beside this file.

@@ -9,6 +9,9 @@
 // 15 %, both together by at least 40 % and below Basilisk's 64^2 figure; the default stays within
 // 5 % of its measured 2.877e-2 (a change of the default scheme must update this test and the
 // documented table).
+// Checks docs/method.md §2.2: QUICK convection and the quadratic wall closure together cut the
+// Re 1000 cavity's error against Botella & Peyret by at least 40 %, and Fromm with the quadratic
+// closure cuts QUICK's by 40 % more.
 #define BOOST_TEST_MODULE cavity_accuracy
 #include <boost/test/unit_test.hpp>
 

@@ -1,4 +1,4 @@
-// Claims (docs/method.md A10b): with no-slip walls the collocated SMAC solver is second
+// Claims (docs/method.md §A10b, §2.4): with no-slip walls the collocated SMAC solver is second
 // order in space for u, v and p in L2 and max norms (>= 1.9 over four grids), and second order in
 // time for the velocity (>= 1.8) on a fixed fine grid; the pressure at least first order in time.
 #define BOOST_TEST_MODULE manufactured_solution

@@ -7,6 +7,8 @@
 //  - the net volume flux through the box's sides is 0 to round-off after every step, also while the
 //    inflow ramps up from rest, and the outflow carries exactly what the inflow brings;
 //  - the scene's inflow profiles and time factors give the stated values.
+// Checks docs/method.md §2.5's inflow, outflow and periodic sides (their ghost rules in
+// docs/open-boundaries.md).
 #define BOOST_TEST_MODULE open_boundaries
 #include <boost/test/unit_test.hpp>
 

@@ -2,6 +2,8 @@
 // to the divergence before projection (docs/method.md §2.3: the Poisson operator is exactly D G_f),
 // for walls, a moving lid and periodic boundaries; and plane Couette flow driven by a moving wall
 // is a discrete steady solution to round-off (the wall shift of the Helmholtz solve is exact).
+// The Couette flow checks docs/method.md §2.5's wall rule: a moving wall enters through the ghost
+// 2 u_w - u_int and the wall's face-normal velocity 0.
 #define BOOST_TEST_MODULE projection
 #include <boost/test/unit_test.hpp>
 

@@ -1,5 +1,5 @@
-// Claims (docs/method.md A10a): in a periodic box the Taylor-Green vortex's kinetic energy decays at
-// the exact rate 4 nu k^2 within 0.1 % on 64^2, and the velocity converges at second order.
+// Claims (docs/method.md §A10a, §2.4): in a periodic box the Taylor-Green vortex's kinetic energy
+// decays at the exact rate 4 nu k^2 within 0.1 % on 64^2, and the velocity converges at second order.
 #define BOOST_TEST_MODULE taylor_green
 #include <boost/test/unit_test.hpp>
 

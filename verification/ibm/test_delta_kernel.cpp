@@ -1,4 +1,4 @@
-// Discrete moment conditions of the four delta kernels, docs/method.md §4 table and appendix A9:
+// Discrete moment conditions of the four delta kernels, docs/method.md §4 and §A9 (its moment table):
 // sums over the integer nodes j of phi(x - j) for a sweep of 1201 marker offsets x in [0, 1].
 // Each moment's row (kernel, moment, expected, max error, range of the sum, tolerance) also goes
 // to $IBMS_RESULTS_DIR/kernel_moments.csv for the report's kernel-moment table.

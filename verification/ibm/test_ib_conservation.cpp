@@ -2,6 +2,8 @@
 // total force sum f h^2 = sum F dV (zeroth moment, all kernels), total torque
 // sum x x f h^2 = sum X x F dV and exact interpolation of linear fields (first moment: all
 // kernels but cosine, whose torque error is printed), plus the direct-forcing helper.
+// Checks docs/method.md §3.1, §3.5 in the direct-forcing helper: the force of Uhlmann's step 3 and
+// ibms's step 2, F_l = (U^d_l - U~_l) / dt.
 #define BOOST_TEST_MODULE ib_conservation
 #include <boost/test/unit_test.hpp>
 

@@ -3,6 +3,8 @@
 // triple that oscillates or does not converge; with a formal order (Roache 1998; Oberkampf & Roy
 // 2010) the same GCI where the observed order is within 10 % of it, F_s = 3 with the order bounded
 // by the formal one where it is not (above or below).
+// Checks docs/method.md §8: the validation cases' uncertainty rule (the finest grid's GCI, F_s = 1.25
+// where the observed order is within 10 % of the formal one, else 3 with the order bounded by it).
 #define BOOST_TEST_MODULE grid_convergence
 #include <boost/test/unit_test.hpp>
 

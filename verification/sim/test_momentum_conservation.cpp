@@ -6,6 +6,9 @@
 //   variant K: P_K = P - rho_f sum_T I_T                 is (the grid's inner fluid is fictitious;
 //              the Reynolds-transport increments of F_int telescope, sim/coupling/inner_fluid_inertia.hpp),
 //              while P itself changes by rho_f (I^{n+1} - I^n) per step (logged, not asserted).
+// Checks docs/method.md §1.1, §1.6, §1.7: the mass points move by M_i dU_i/dt = F_s + F_f (§1.1),
+// the fluid force on them the negative of the force spread, rho_f F_l dV_l (§1.6), and variant K's
+// inner-fluid force the change of the grid's inner momentum (§1.7).
 #define BOOST_TEST_MODULE momentum_conservation
 #include <boost/test/unit_test.hpp>
 

@@ -13,6 +13,8 @@
 // These runs take the shared sub-step (contact.time_stepping = "shared"). The contacts' inner loop
 // (contact/contact_subcycle.hpp), in the same per-group runs with the fluid, against them: the
 // deepest overlap within 2 % and the colliding wheels' paths within 1e-3 D.
+// Checks docs/method.md §5.3, §5.4: the groups' own sub-steps (§5.3, "Groups") and the contacts'
+// inner loop with the fluid (§5.4: the largest overlap within 2 % of the shared sub-step's).
 #define BOOST_TEST_MODULE multirate_substeps
 #include <boost/test/unit_test.hpp>
 

@@ -7,6 +7,8 @@
 // far above that tolerance on the same scenes, so the check can tell the two apart. With
 // ibm.constrained_velocity = "faces" the same holds of the face velocities J_f U_f^{n+1}, checked on
 // a fixed cylinder in a channel.
+// Checks docs/method.md §3.5 too: the papers' coupling (ibm.coupling = "uhlmann") leaves a slip at
+// the end of the step, asserted above 10 times the no_slip tolerance on the same scenes.
 #define BOOST_TEST_MODULE no_slip_coupling
 #include <boost/test/unit_test.hpp>
 

@@ -3,7 +3,7 @@
 // alone leave gaps the fluid leaks through. Claims, each asserted:
 //   1. every rim edge is split into ceil(|e|/h) pieces: marker spacing <= h, also after swelling;
 //   2. the fluid reaction returned to the rim points keeps the total force and torque of the
-//      marker forces to round-off;
+//      marker forces to round-off, and the centre point gets none (docs/method.md §1.6);
 //   3. the sub-markers enforce the target velocity along the whole rim, not only at the points:
 //      after 3 or 5 multi-direct forcing passes (Luo et al. 2007) on fluid at rest, the velocity
 //      interpolated on a fine sampling of the rim polygon is at least 2x closer to the body

@@ -1,7 +1,8 @@
 // Two mass points meeting through a linear spring-dashpot contact that acts only while they
 // overlap (DEM-like, docs/method.md §1.9) rebound with the restitution coefficient the dashpot was
-// built for: c = 2 zeta sqrt(m_eff k), zeta = -ln e / sqrt(pi^2 + ln^2 e) (§1.5, A8). The force is
-// not clipped to stay repulsive (A8 caveat: clipping changes the realised e).
+// built for: c = 2 zeta sqrt(m_eff k), zeta = -ln e / sqrt(pi^2 + ln^2 e)
+// (docs/method.md §1.5, §A8). The force is not clipped to stay repulsive (A8 caveat: clipping
+// changes the realised e).
 #define BOOST_TEST_MODULE restitution
 #include <boost/test/unit_test.hpp>
 

@@ -1,5 +1,5 @@
-// A swelling wheel (docs/method.md §1.2, §1.8): with D(t) = clamp(D0 + rate (t - onset), D0, D_max)
-// applied every sub-step (natural lengths s L0, masses at constant density), the rim polygon
+// A swelling wheel (docs/method.md §1.2, §1.3, §1.8): with D(t) = clamp(D0 + rate (t - onset), D0,
+// D_max) applied every sub-step (natural lengths s L0, masses at constant density), the rim polygon
 // area follows s^2 A0 within 0.5 %, and the total mass stays rho_s pi D^2/4 (the disk area
 // that build_wheel uses for V_s) to round-off.
 #define BOOST_TEST_MODULE swelling
