@@ -400,6 +400,11 @@ ProjectionStats FluidSolver::project(FluidState& state, double dt, const FaceFor
 // then projected (project_star_faces).
 void FluidSolver::homogeneous_face_projection(double dt, const FaceField& face_increment_x,
                                               const FaceField& face_increment_y) {
+  set_star_faces(face_increment_x, face_increment_y);
+  project_star_faces(dt);
+}
+
+void FluidSolver::set_star_faces(const FaceField& face_increment_x, const FaceField& face_increment_y) {
   const FaceRange faces = corrected_faces();
   star_face_x_.fill(0.0);  // faces with a given flux: no increment
   star_face_y_.fill(0.0);
@@ -409,26 +414,53 @@ void FluidSolver::homogeneous_face_projection(double dt, const FaceField& face_i
   IBMS_PARALLEL_ROWS
   for (int j = faces.y_first; j <= faces.y_last; ++j)
     for (int i = 0; i < grid_.nx; ++i) star_face_y_(i, j) = face_increment_y(i, j);
-  project_star_faces(dt);
 }
 
 // star_face_ -= dt G_f phi with L phi = D star_face_ / dt on the corrected faces; phi_ keeps phi.
-void FluidSolver::project_star_faces(double dt) {
+void FluidSolver::project_star_faces(double dt) { project_faces(dt, star_face_x_, star_face_y_); }
+
+void FluidSolver::project_faces_in_place(double dt, FaceField& face_x, FaceField& face_y) {
   const FaceRange faces = corrected_faces();
-  sync_periodic_faces(grid_, star_face_x_, star_face_y_);
-  divergence(grid_, star_face_x_, star_face_y_, 1.0 / dt, buffer_.data());
+  for (int j = 0; j < grid_.ny; ++j) {  // faces with a given flux: no increment
+    for (int i = 0; i < faces.x_first; ++i) face_x(i, j) = 0.0;
+    for (int i = faces.x_last + 1; i <= grid_.nx; ++i) face_x(i, j) = 0.0;
+  }
+  for (int j = 0; j <= grid_.ny; ++j)
+    if (j < faces.y_first || j > faces.y_last)
+      for (int i = 0; i < grid_.nx; ++i) face_y(i, j) = 0.0;
+  project_faces(dt, face_x, face_y);
+}
+
+void FluidSolver::project_faces(double dt, FaceField& face_x, FaceField& face_y) {
+  sync_periodic_faces(grid_, face_x, face_y);
+  divergence(grid_, face_x, face_y, 1.0 / dt, buffer_.data());
   poisson_->solve(/*a=*/0.0, /*b=*/1.0, buffer_.data(), buffer_.data());
   phi_.copy_interior_from(buffer_.data());
   fill_correction_ghosts(grid_, boundaries_, phi_);
-  // The face increment, divergence-free: U_g - dt G_f phi on the corrected faces.
+  subtract_face_gradient(dt, face_x, face_y);
+}
+
+// The face increment, divergence-free: U_g - dt G_f phi on the corrected faces.
+void FluidSolver::subtract_face_gradient(double dt, FaceField& face_x, FaceField& face_y) {
+  const FaceRange faces = corrected_faces();
   const double inv_dx = 1.0 / grid_.dx(), inv_dy = 1.0 / grid_.dy();
   IBMS_PARALLEL_ROWS
   for (int j = 0; j < grid_.ny; ++j)
-    for (int i = faces.x_first; i <= faces.x_last; ++i) star_face_x_(i, j) -= dt * (phi_(i, j) - phi_(i - 1, j)) * inv_dx;
+    for (int i = faces.x_first; i <= faces.x_last; ++i) face_x(i, j) -= dt * (phi_(i, j) - phi_(i - 1, j)) * inv_dx;
   IBMS_PARALLEL_ROWS
   for (int j = faces.y_first; j <= faces.y_last; ++j)
-    for (int i = 0; i < grid_.nx; ++i) star_face_y_(i, j) -= dt * (phi_(i, j) - phi_(i, j - 1)) * inv_dy;
-  sync_periodic_faces(grid_, star_face_x_, star_face_y_);
+    for (int i = 0; i < grid_.nx; ++i) face_y(i, j) -= dt * (phi_(i, j) - phi_(i, j - 1)) * inv_dy;
+  sync_periodic_faces(grid_, face_x, face_y);
+}
+
+void FluidSolver::subtract_centre_gradient(double dt, CellField& increment_x, CellField& increment_y) {
+  centre_gradient(grid_, phi_, grad_x_, grad_y_);
+  IBMS_PARALLEL_ROWS
+  for (int j = 0; j < grid_.ny; ++j)
+    for (int i = 0; i < grid_.nx; ++i) {
+      increment_x(i, j) -= dt * grad_x_(i, j);
+      increment_y(i, j) -= dt * grad_y_(i, j);
+    }
 }
 
 void FluidSolver::homogeneous_projection(double dt, CellField& increment_x, CellField& increment_y,
@@ -454,18 +486,27 @@ void FluidSolver::homogeneous_projection(double dt, CellField& increment_x, Cell
       for (int i = 0; i < grid_.nx; ++i) star_face_y_(i, j) = 0.5 * (work_(i, j - 1) + work_(i, j));
     project_star_faces(dt);
   }
-  centre_gradient(grid_, phi_, grad_x_, grad_y_);
-  IBMS_PARALLEL_ROWS
-  for (int j = 0; j < grid_.ny; ++j)
-    for (int i = 0; i < grid_.nx; ++i) {
-      increment_x(i, j) -= dt * grad_x_(i, j);
-      increment_y(i, j) -= dt * grad_y_(i, j);
-    }
+  subtract_centre_gradient(dt, increment_x, increment_y);
 }
 
 double FluidSolver::project_increment(FluidState& state, double dt, CellField& increment_x, CellField& increment_y,
                                       const FaceField* face_increment_x, const FaceField* face_increment_y) {
   homogeneous_projection(dt, increment_x, increment_y, face_increment_x, face_increment_y);
+  return add_increment(state, increment_x, increment_y);
+}
+
+double FluidSolver::add_projected_increment(FluidState& state, double dt, CellField& increment_x,
+                                            CellField& increment_y, const FaceField& face_increment_x,
+                                            const FaceField& face_increment_y, const CellField& phi) {
+  phi_ = phi;
+  set_star_faces(face_increment_x, face_increment_y);
+  sync_periodic_faces(grid_, star_face_x_, star_face_y_);
+  subtract_face_gradient(dt, star_face_x_, star_face_y_);
+  subtract_centre_gradient(dt, increment_x, increment_y);
+  return add_increment(state, increment_x, increment_y);
+}
+
+double FluidSolver::add_increment(FluidState& state, const CellField& increment_x, const CellField& increment_y) {
   const FaceRange faces = corrected_faces();
   IBMS_PARALLEL_ROWS
   for (int j = 0; j < grid_.ny; ++j)

@@ -161,11 +161,23 @@ class FluidSolver {
   // L phi = D U_g / dt, the same bits as homogeneous_projection's with these face increments (the
   // marker system's products under the face constraint read nothing else).
   void homogeneous_face_projection(double dt, const FaceField& face_increment_x, const FaceField& face_increment_y);
+  // The same in the caller's fields: U_g becomes U_g - dt G_f phi (0 on the faces with a given flux),
+  // the same bits as homogeneous_face_projection's projected_face_increment, without its copies.
+  void project_faces_in_place(double dt, FaceField& face_x, FaceField& face_y);
   // After project: adds the projection of a cell increment g (dt S dF of a forcing correction) to
   // the fields of level n+1: u += P_0 g, U_f += mean(g) - dt G_f phi, p += phi (g is overwritten
   // by P_0 g). Returns max |P_0 g| over the cells and both components.
   double project_increment(FluidState& state, double dt, CellField& increment_x, CellField& increment_y,
                            const FaceField* face_increment_x = nullptr, const FaceField* face_increment_y = nullptr);
+  // The potential phi of the last homogeneous (face) projection, ghosts filled: L phi = D U_g / dt.
+  const CellField& correction_potential() const { return phi_; }
+  // project_increment in the balanced form with the potential of these face increments given
+  // (phi: L phi = D U_g / dt, e.g. a combination of earlier projections' potentials, the
+  // projection being linear), so that no Poisson solve is needed: u += g - dt G_c phi,
+  // U_f += U_g - dt G_f phi, p += phi. Returns max |g - dt G_c phi| as project_increment.
+  double add_projected_increment(FluidState& state, double dt, CellField& increment_x, CellField& increment_y,
+                                 const FaceField& face_increment_x, const FaceField& face_increment_y,
+                                 const CellField& phi);
   // Closes the step's convection: N^n becomes N^{n-1} (AB2 history). The clock is FluidState::tick.
   void end_step(FluidState& state);
   // project, end_step and tick: the step of a scene without immersed boundary.
@@ -194,6 +206,16 @@ class FluidSolver {
                         CellField& out_y) const;
   // star_face_ -= dt G_f phi with L phi = D star_face_ / dt (phi in phi_).
   void project_star_faces(double dt);
+  // star_face_ = the face increments on the corrected faces, 0 on the faces with a given flux.
+  void set_star_faces(const FaceField& face_increment_x, const FaceField& face_increment_y);
+  // face -= dt G_f phi with L phi = D face / dt (phi in phi_).
+  void project_faces(double dt, FaceField& face_x, FaceField& face_y);
+  // face -= dt G_f phi_ on the corrected faces (periodic faces synchronised).
+  void subtract_face_gradient(double dt, FaceField& face_x, FaceField& face_y);
+  // increment -= dt G_c phi_ (the cells' part of the homogeneous projection).
+  void subtract_centre_gradient(double dt, CellField& increment_x, CellField& increment_y);
+  // u += increment, U_f += star_face_, p += phi_; returns max |increment|.
+  double add_increment(FluidState& state, const CellField& increment_x, const CellField& increment_y);
   std::unique_ptr<SpectralSolver> poisson_;    // Neumann/periodic
   // Dirichlet/periodic, one per velocity component: the same transforms (FFTW reuses the first
   // plan's wisdom), so that with two threads the two solves run side by side.

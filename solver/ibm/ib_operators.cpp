@@ -162,6 +162,27 @@ void interpolate(const Grid& grid, KernelKind kernel, const WallVelocities& wall
   }
 }
 
+namespace {
+
+// force += F_l phi phi / (dx dy) dV_l of one marker on the cell centres (sx, sy: its cell stencils);
+// a ghost-cell share goes to its mirror with the transpose of the linear ghost rule, (-1) per
+// reflection (the affine part has no transpose).
+void spread_marker(const MappedStencil& sx, const MappedStencil& sy, double fx, double fy, CellField& force_x,
+                   CellField& force_y) {
+  for (int ky = 0; ky < sy.n_nodes; ++ky) {
+    const int j = sy.cell[ky];
+    for (int kx = 0; kx < sx.n_nodes; ++kx) {
+      const int i = sx.cell[kx];
+      const double sign = (sx.ghost_side[kx] != 0) == (sy.ghost_side[ky] != 0) ? 1.0 : -1.0;
+      const double w = sign * sx.weight[kx] * sy.weight[ky];
+      force_x(i, j) += w * fx;
+      force_y(i, j) += w * fy;
+    }
+  }
+}
+
+}  // namespace
+
 void spread(const Grid& grid, KernelKind kernel, const std::vector<std::array<double, 2>>& markers,
             const std::vector<std::array<double, 2>>& marker_force,
             const std::vector<double>& marker_volume, CellField& force_x, CellField& force_y) {
@@ -175,21 +196,22 @@ void spread(const Grid& grid, KernelKind kernel, const std::vector<std::array<do
                                          grid.periodic_x, "x");
     const MappedStencil sy = map_stencil(kernel, markers[l][1], grid.origin_y, grid.dy(), grid.ny,
                                          grid.periodic_y, "y");
-    // f += F_l phi phi / (dx dy) dV_l; a ghost-cell share goes to its mirror with the
-    // transpose of the linear ghost rule, (-1) per reflection (affine part has no transpose).
-    const double fx = marker_force[l][0] * marker_volume[l] * inverse_cell_area;
-    const double fy = marker_force[l][1] * marker_volume[l] * inverse_cell_area;
-    for (int ky = 0; ky < sy.n_nodes; ++ky) {
-      const int j = sy.cell[ky];
-      for (int kx = 0; kx < sx.n_nodes; ++kx) {
-        const int i = sx.cell[kx];
-        const double sign = (sx.ghost_side[kx] != 0) == (sy.ghost_side[ky] != 0) ? 1.0 : -1.0;
-        const double w = sign * sx.weight[kx] * sy.weight[ky];
-        force_x(i, j) += w * fx;
-        force_y(i, j) += w * fy;
-      }
-    }
+    spread_marker(sx, sy, marker_force[l][0] * marker_volume[l] * inverse_cell_area,
+                  marker_force[l][1] * marker_volume[l] * inverse_cell_area, force_x, force_y);
   }
+}
+
+void spread(const Grid& grid, const std::vector<FaceStencils>& stencils,
+            const std::vector<std::array<double, 2>>& marker_force, const std::vector<double>& marker_volume,
+            CellField& force_x, CellField& force_y) {
+  check_field(grid, force_x, "spread: force_x");
+  check_field(grid, force_y, "spread: force_y");
+  if (marker_force.size() != stencils.size() || marker_volume.size() != stencils.size())
+    throw std::invalid_argument("spread: markers, forces and volumes differ in length");
+  const double inverse_cell_area = 1.0 / (grid.dx() * grid.dy());
+  for (std::size_t l = 0; l < stencils.size(); ++l)
+    spread_marker(stencils[l].cx, stencils[l].cy, marker_force[l][0] * marker_volume[l] * inverse_cell_area,
+                  marker_force[l][1] * marker_volume[l] * inverse_cell_area, force_x, force_y);
 }
 
 void spread_to_faces(const Grid& grid, KernelKind kernel, const std::vector<std::array<double, 2>>& markers,

@@ -73,6 +73,10 @@ void map_face_stencils(const Grid& grid, KernelKind kernel, const std::vector<st
 void spread_to_faces(const Grid& grid, const std::vector<FaceStencils>& stencils,
                      const std::vector<std::array<double, 2>>& marker_force, const std::vector<double>& marker_volume,
                      FaceField& face_x, FaceField& face_y);
+// spread onto the cell centres with the markers' cell stencils (cx, cy) of the mapped stencils.
+void spread(const Grid& grid, const std::vector<FaceStencils>& stencils,
+            const std::vector<std::array<double, 2>>& marker_force, const std::vector<double>& marker_volume,
+            CellField& force_x, CellField& force_y);
 void interpolate_faces(const Grid& grid, const std::vector<FaceStencils>& stencils, const WallVelocities& walls,
                        const FaceField& face_x, const FaceField& face_y,
                        std::vector<std::array<double, 2>>& velocity_out);

@@ -212,7 +212,7 @@ void apply_direct_forcing(const Grid& grid, KernelKind kernel, const WallVelocit
   }
 }
 
-bool spread_previous_forces(const Grid& grid, KernelKind kernel, double dt, std::vector<BodyCoupling>& coupling,
+bool spread_previous_forces(const Grid& grid, double dt, std::vector<BodyCoupling>& coupling,
                             CellField& velocity_star_x, CellField& velocity_star_y) {
   for (const BodyCoupling& c : coupling)
     if (c.previous_force.size() != c.marker.size()) return false;
@@ -222,7 +222,7 @@ bool spread_previous_forces(const Grid& grid, KernelKind kernel, double dt, std:
         c.forcing_sum[l][d] = c.previous_force[l][d];
         c.pass_increment[l][d] = dt * c.previous_force[l][d];
       }
-    spread(grid, kernel, c.marker, c.pass_increment, c.marker_volume, velocity_star_x, velocity_star_y);
+    spread(grid, c.face_stencils, c.pass_increment, c.marker_volume, velocity_star_x, velocity_star_y);
   }
   return true;
 }
@@ -287,7 +287,7 @@ void spread_slip_correction(const Grid& grid, KernelKind kernel, double dt, std:
   }
 }
 
-void spread_step_forces(const Grid& grid, KernelKind kernel, double dt, std::vector<BodyCoupling>& coupling,
+void spread_step_forces(const Grid& grid, double dt, std::vector<BodyCoupling>& coupling,
                         CellField& force_cell_x, CellField& force_cell_y, FaceField& force_face_x, FaceField& force_face_y) {
   force_cell_x.fill(0.0);
   force_cell_y.fill(0.0);
@@ -296,8 +296,8 @@ void spread_step_forces(const Grid& grid, KernelKind kernel, double dt, std::vec
   for (BodyCoupling& c : coupling) {
     for (std::size_t l = 0; l < c.marker.size(); ++l)
       for (int d = 0; d < 2; ++d) c.pass_increment[l][d] = dt * c.forcing_sum[l][d];
-    spread(grid, kernel, c.marker, c.pass_increment, c.marker_volume, force_cell_x, force_cell_y);
-    spread_to_faces(grid, kernel, c.marker, c.pass_increment, c.marker_volume, force_face_x, force_face_y);
+    spread(grid, c.face_stencils, c.pass_increment, c.marker_volume, force_cell_x, force_cell_y);
+    spread_to_faces(grid, c.face_stencils, c.pass_increment, c.marker_volume, force_face_x, force_face_y);
   }
 }
 

@@ -151,7 +151,8 @@ void apply_direct_forcing(const Grid& grid, KernelKind kernel, const WallVelocit
 // The forces of the previous step as the predictor of ibm.coupling = "no_slip": if every body has
 // them for its present markers, forcing_sum = previous_force and u~ += dt S F (returns true);
 // otherwise nothing is changed (returns false) and the caller forces by apply_direct_forcing.
-bool spread_previous_forces(const Grid& grid, KernelKind kernel, double dt, std::vector<BodyCoupling>& coupling,
+// Each body's face_stencils must be mapped at its markers (map_face_stencils).
+bool spread_previous_forces(const Grid& grid, double dt, std::vector<BodyCoupling>& coupling,
                             CellField& velocity_star_x, CellField& velocity_star_y);
 
 // Slip of the velocity (velocity_x, velocity_y) at the markers: r_l = U_target_l (+ body_velocity_change_l
@@ -184,8 +185,9 @@ void cell_forces_from_faces(const Grid& grid, const FaceField& force_face_x, con
                             CellField& force_cell_x, CellField& force_cell_y, CellField& velocity_star_x,
                             CellField& velocity_star_y);
 
-// force_cell = dt S F and force_face = dt S_f F of forcing_sum F of every body (overwritten).
-void spread_step_forces(const Grid& grid, KernelKind kernel, double dt, std::vector<BodyCoupling>& coupling,
+// force_cell = dt S F and force_face = dt S_f F of forcing_sum F of every body (overwritten), with
+// each body's face_stencils mapped at its markers.
+void spread_step_forces(const Grid& grid, double dt, std::vector<BodyCoupling>& coupling,
                         CellField& force_cell_x, CellField& force_cell_y, FaceField& force_face_x, FaceField& force_face_y);
 
 // previous_force = forcing_sum of every body (the predictor of the next step).

@@ -54,6 +54,7 @@ EndOfStepConstraint::EndOfStepConstraint(const Scene& scene, const Grid& grid, K
   std::size_t unknowns = 0;
   for (const BodyCoupling& c : markers) unknowns += 2 * c.marker.capacity();
   arrays_.work.reserve(unknowns);
+  arrays_.work.reserve_potentials(grid);
   // The blocks' drift: as given, or "auto" from the blocks' sizes against the grid's (marker_preconditioner.hpp).
   double block_unknowns_squared = 0.0;
   for (std::size_t b = 0; b < bodies.size(); ++b)
@@ -84,13 +85,16 @@ void EndOfStepConstraint::predict(const CouplingStep& step) {
   bool predicted = false;
   {
     auto t = step.timers.time(Stage::ib_forcing);
-    predicted = spread_previous_forces(grid, kernel_, step.dt, step.markers, star_x, star_y);  // u~_e + dt S F^{n-1}
+    // The markers stay put until the bodies move at the end of the step: their stencils are mapped
+    // once for the step's spreads, the marker solve and its preconditioner (hold).
+    for (BodyCoupling& c : step.markers) map_face_stencils(grid, kernel_, c.marker, c.face_stencils);
+    predicted = spread_previous_forces(grid, step.dt, step.markers, star_x, star_y);  // u~_e + dt S F^{n-1}
   }
   if (!predicted) force_markers(step, kernel_, passes_);                                       // u~_e + dt f
   {
     auto t = step.timers.time(Stage::ib_forcing);
     NoSlipArrays& a = arrays_;
-    spread_step_forces(grid, kernel_, step.dt, step.markers, a.force_cell_x, a.force_cell_y, a.force_face_x,
+    spread_step_forces(grid, step.dt, step.markers, a.force_cell_x, a.force_cell_y, a.force_face_x,
                        a.force_face_y);  // dt S F, dt S_f F for the faces
     // Under the face constraint the cells take the force as the mean of its face values, as they
     // take the pressure gradient.

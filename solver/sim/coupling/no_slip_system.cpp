@@ -65,8 +65,6 @@ NoSlipResult hold_no_slip(const Grid& grid, KernelKind kernel, const WallVelocit
     preconditioner->apply(coupling, v, work.preconditioned.data());
     return work.preconditioned.data();
   };
-  // The markers stay put over the solve: their face stencils are mapped once, not per product.
-  for (BodyCoupling& c : coupling) map_face_stencils(grid, kernel, c.marker, c.face_stencils);
   const int m_max = NoSlipWorkspace::restart;
   const WallVelocities at_rest{};  // the increments have homogeneous wall data
   // dt S_f dF onto the faces, dt dF in pass_increment.
@@ -85,7 +83,7 @@ NoSlipResult hold_no_slip(const Grid& grid, KernelKind kernel, const WallVelocit
       average_faces_to_cells(grid, face_increment_x, face_increment_y, increment_x, increment_y);
     else
       for (BodyCoupling& c : coupling)
-        spread(grid, kernel, c.marker, c.pass_increment, c.marker_volume, increment_x, increment_y);
+        spread(grid, c.face_stencils, c.pass_increment, c.marker_volume, increment_x, increment_y);
   };
   // body_velocity_change of the responding bodies from the forces so far (pass_force: scratch).
   const auto update_body_change = [&]() {
@@ -107,7 +105,7 @@ NoSlipResult hold_no_slip(const Grid& grid, KernelKind kernel, const WallVelocit
     scatter(x, coupling);
     if (faces_only) {
       spread_face_increment();
-      solver.homogeneous_face_projection(dt, face_increment_x, face_increment_y);
+      solver.project_faces_in_place(dt, face_increment_x, face_increment_y);
     } else {
       spread_increment();
       solver.homogeneous_projection(dt, increment_x, increment_y, &face_increment_x, &face_increment_y);
@@ -116,7 +114,9 @@ NoSlipResult hold_no_slip(const Grid& grid, KernelKind kernel, const WallVelocit
     for (std::size_t b = 0; b < coupling.size(); ++b) {
       BodyCoupling& c = coupling[b];
       const std::size_t first = k;
-      if (on_faces)
+      if (faces_only)
+        interpolate_faces(grid, c.face_stencils, at_rest, face_increment_x, face_increment_y, c.interpolated_velocity);
+      else if (on_faces)
         interpolate_faces(grid, c.face_stencils, at_rest, solver.projected_face_increment_x(),
                           solver.projected_face_increment_y(), c.interpolated_velocity);
       else
@@ -179,10 +179,12 @@ NoSlipResult hold_no_slip(const Grid& grid, KernelKind kernel, const WallVelocit
     std::fill(work.rotated.begin(), work.rotated.end(), 0.0);
     work.rotated[0] = beta;
     int m = 0;
+    const int kept = static_cast<int>(work.potentials.size()) - 1;  // potentials phi_j kept (may be -1)
     while (m < m_max && result.products < max_products) {
       const int j = m;
       double* w = V + (j + 1) * n;
       apply(V + j * n, W + j * n);
+      if (j < kept) work.potentials[j] = solver.correction_potential();
       std::copy(W + j * n, W + (j + 1) * n, w);
       for (int i = 0; i <= j; ++i) {  // modified Gram-Schmidt
         h(i, j) = dot(w, V + i * n, n);
@@ -225,7 +227,23 @@ NoSlipResult hold_no_slip(const Grid& grid, KernelKind kernel, const WallVelocit
       for (std::size_t l = 0; l < c.marker.size(); ++l)
         for (int d = 0; d < 2; ++d) c.forcing_sum[l][d] += c.pass_increment[l][d] / dt;
     spread_increment();
-    result.max_change += solver.project_increment(state, dt, increment_x, increment_y, &face_increment_x, &face_increment_y);
+    if (m <= kept) {
+      // phi = sum_j y_j phi_j: the correction's potential from the products' own.
+      CellField& phi = work.potentials[kept];
+      const std::size_t size = static_cast<std::size_t>(phi.stride()) * (phi.ny() + 2);
+      double* out = phi.data();
+      std::fill(out, out + size, 0.0);
+      for (int i = 0; i < m; ++i) {
+        const double* in = work.potentials[i].data();
+        const double y = work.coefficients[i];
+        for (std::size_t k = 0; k < size; ++k) out[k] += y * in[k];
+      }
+      result.max_change += solver.add_projected_increment(state, dt, increment_x, increment_y, face_increment_x,
+                                                          face_increment_y, phi);
+    } else {
+      result.max_change +=
+          solver.project_increment(state, dt, increment_x, increment_y, &face_increment_x, &face_increment_y);
+    }
   }
   return result;
 }

@@ -47,7 +47,14 @@ struct NoSlipWorkspace {
   std::vector<double> cosine, sine, rotated, coefficients;
   std::vector<double> rhs, solution, residual;
   std::vector<double> preconditioned;  // M^-1 of a Krylov vector (right preconditioning)
+  // The Poisson potentials phi_j of the first products of a cycle (the projection of M^-1 v_j), and
+  // in the last field their combination sum_j y_j phi_j: the potential of the cycle's correction,
+  // applied without another Poisson solve (the projection is linear). A cycle that takes more
+  // products than this holds projects its correction with a solve. Empty: always a solve.
+  static constexpr int kept_potentials = 6;
+  std::vector<CellField> potentials;
   void reserve(std::size_t max_unknowns);
+  void reserve_potentials(const Grid& grid) { potentials.assign(kept_potentials + 1, CellField(grid)); }
 };
 
 // What the coupling keeps between its calls, allocated once when the Simulation is built.
@@ -76,6 +83,8 @@ struct NoSlipResult {
 // tolerance (in units of its slip_reference_speed), a cycle stagnates or max_products products were spent; leaves
 // the slip of the constrained velocity (slip_max, slip_rms or face_slip_max, face_slip_rms).
 // on_faces: constrain J_f U_f^{n+1} instead of J u^{n+1}. walls: the wall speeds at t^{n+1}.
+// Each body's face_stencils must be mapped at its markers (map_face_stencils; the markers stay put
+// over the solve, so they are mapped once, not per product).
 NoSlipResult hold_no_slip(const Grid& grid, KernelKind kernel, const WallVelocities& walls, double dt,
                           double tolerance, bool on_faces, bool cells_from_faces, int max_products, FluidSolver& solver, FluidState& state,
                           std::vector<BodyCoupling>& coupling, CellField& increment_x, CellField& increment_y,
