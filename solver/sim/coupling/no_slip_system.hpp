@@ -11,7 +11,8 @@
 // staggered grid, as in Taira & Colonius, it is the velocity itself). The two differ by the
 // momentum interpolation's dt (mean(G_c) - G_f) p (§2.3): the other one's slip is measured, not
 // held. The pressure takes the gradient part of the force. The system is small (two unknowns per
-// marker) and solved by GMRES with restarts (Saad & Schultz 1986), one Poisson solve per product; the unknowns of each body are
+// marker) and solved by GMRES with restarts (Saad & Schultz 1986), one Poisson solve per product (a
+// cycle's correction is projected with its products' potentials, without a solve of its own); the unknowns of each body are
 // scaled by its reference speed, preconditioned on the right by the system without its projection
 // (MarkerPreconditioner, J S per body; the residual stays the true one), and the iteration stops when the largest slip of any marker is
 // below the tolerance (a maximum norm, checked on the true residual of the marker system), or when
