@@ -354,7 +354,7 @@ CAUSES = [
     ("dfg_cylinder_2d2", r"lift_coefficient",
      "Max $c_L$ is not converged in the time step under the face constraint: 0.9725, 0.9779, 0.9863, 0.9986 at "
      "\\texttt{run.cfl} 0.5, 0.25, 0.125, 0.0625 ($D/h=20$), each halving adding more than the one before, and "
-     "the grids do not reduce the deficit at the shipped CFL (0.9725, 0.9713, 0.9735 at $D/h = 20, 30, 40$); the "
+     "the grids do not reduce the deficit at the shipped CFL (0.9725, 0.9721, 0.9735 at $D/h = 20, 30, 40$); the "
      "mechanism is not established (README, docs/method.md \\S3.7)."),
     ("dfg_cylinder_2d1", r"lift_coefficient",
      "$c_L$ at Re 20 is a small asymmetry of the flow (about 1\\,\\% of $c_D$) that the smeared interface does "
