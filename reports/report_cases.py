@@ -354,8 +354,10 @@ CAUSES = [
     ("dfg_cylinder_2d2", r"lift_coefficient",
      "Max $c_L$ is not converged in the time step under the face constraint: 0.9725, 0.9779, 0.9863, 0.9986 at "
      "\\texttt{run.cfl} 0.5, 0.25, 0.125, 0.0625 ($D/h=20$), each halving adding more than the one before, and "
-     "the grids do not reduce the deficit at the shipped CFL (0.9725, 0.9721, 0.9735 at $D/h = 20, 30, 40$); the "
-     "mechanism is not established (README, docs/method.md \\S3.7)."),
+     "the grids do not reduce the deficit at the shipped CFL (0.9725, 0.9721, 0.9735 at $D/h = 20, 30, 40$). The "
+     "cause is the momentum interpolation's face term, whose time scale is the step: with it fixed "
+     "(\\texttt{fluid.interpolation\\_time}) max $c_L$ stays at 0.9717--0.9720 from CFL 0.5 to 0.0625 and "
+     "moves with that time scale instead (README, docs/method.md \\S2.3)."),
     ("dfg_cylinder_2d1", r"lift_coefficient",
      "$c_L$ at Re 20 is a small asymmetry of the flow (about 1\\,\\% of $c_D$) that the smeared interface does "
      "not resolve at these grids (README)."),

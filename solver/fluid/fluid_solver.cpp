@@ -2,6 +2,7 @@
 #include "fluid/fluid_solver.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 #include <cmath>
 
 #include "fluid/operators.hpp"
@@ -62,6 +63,42 @@ FluidSolver::FluidSolver(const Grid& grid, double kinematic_viscosity, const Flu
                                                 helmholtz_kind(b.kind), helmholtz_kind(t.kind), schemes.fft_planning);
   helmholtz_y_ = std::make_unique<SpectralSolver>(grid, helmholtz_kind(l.kind), helmholtz_kind(r.kind),
                                                   helmholtz_kind(b.kind), helmholtz_kind(t.kind), schemes.fft_planning);
+  interpolation_time_ = schemes.interpolation_time;
+}
+
+void FluidSolver::mixed_eigenvalues(double ratio) {
+  if (ratio == mixed_ratio_ && !mixed_x_.empty()) return;
+  const auto mix = [ratio](const std::vector<double>& lambda, double h, std::vector<double>& out) {
+    out.resize(lambda.size());
+    for (std::size_t k = 0; k < lambda.size(); ++k)
+      out[k] = ratio * lambda[k] + (1.0 - ratio) * lambda[k] * (1.0 + 0.25 * lambda[k] * h * h);
+  };
+  mix(poisson_->eigenvalues_x(), grid_.dx(), mixed_x_);
+  mix(poisson_->eigenvalues_y(), grid_.dy(), mixed_y_);
+  mixed_ratio_ = ratio;
+}
+
+SpectralSolveStats FluidSolver::solve_poisson(double ratio) {
+  if (ratio == 1.0) return poisson_->solve(/*a=*/0.0, /*b=*/1.0, buffer_.data(), buffer_.data());
+  mixed_eigenvalues(ratio);
+  return poisson_->solve(/*a=*/0.0, /*b=*/1.0, buffer_.data(), buffer_.data(), mixed_x_, mixed_y_);
+}
+
+void FluidSolver::correct_faces(double dt, double ratio, FaceField& face_x, FaceField& face_y) const {
+  // grad_ holds G_c phi with even ghosts: M G_c phi at an outflow face is the last cell's G_c phi,
+  // the mean under the transform's extension (phi odd about the face, G_c phi even).
+  const FaceRange faces = corrected_faces();
+  const double inv_dx = 1.0 / grid_.dx(), inv_dy = 1.0 / grid_.dy();
+  IBMS_PARALLEL_ROWS
+  for (int j = 0; j < grid_.ny; ++j)
+    for (int i = faces.x_first; i <= faces.x_last; ++i)
+      face_x(i, j) -= dt * (ratio * (phi_(i, j) - phi_(i - 1, j)) * inv_dx +
+                            (1.0 - ratio) * 0.5 * (grad_x_(i - 1, j) + grad_x_(i, j)));
+  IBMS_PARALLEL_ROWS
+  for (int j = faces.y_first; j <= faces.y_last; ++j)
+    for (int i = 0; i < grid_.nx; ++i)
+      face_y(i, j) -= dt * (ratio * (phi_(i, j) - phi_(i, j - 1)) * inv_dy +
+                            (1.0 - ratio) * 0.5 * (grad_y_(i, j - 1) + grad_y_(i, j)));
 }
 
 void FluidSolver::set_given_faces(double time, FaceField& face_x, FaceField& face_y) const {
@@ -351,18 +388,50 @@ ProjectionStats FluidSolver::project(FluidState& state, double dt, const FaceFor
     for (int j = faces.y_first; j <= faces.y_last; ++j)
       for (int i = 0; i < grid_.nx; ++i) star_face_y_(i, j) += (*forcing->face_y)(i, j);
   }
+  const double ratio = interpolation_ratio(dt);
+  if (ratio != 1.0) {
+    // U*_f = M u~ + (tau/dt) (U*_f - M u~): the face term tau (I - M A)(S_f F - G_f p^n).
+    lap_x_ = star_x_;
+    lap_y_ = star_y_;
+    fill_neumann_ghosts(grid_, lap_x_);
+    fill_neumann_ghosts(grid_, lap_y_);
+    IBMS_PARALLEL_ROWS
+    for (int j = 0; j < grid_.ny; ++j)
+      for (int i = faces.x_first; i <= faces.x_last; ++i) {
+        const double mean = 0.5 * (lap_x_(i - 1, j) + lap_x_(i, j));
+        star_face_x_(i, j) = mean + ratio * (star_face_x_(i, j) - mean);
+      }
+    IBMS_PARALLEL_ROWS
+    for (int j = faces.y_first; j <= faces.y_last; ++j)
+      for (int i = 0; i < grid_.nx; ++i) {
+        const double mean = 0.5 * (lap_y_(i, j - 1) + lap_y_(i, j));
+        star_face_y_(i, j) = mean + ratio * (star_face_y_(i, j) - mean);
+      }
+  }
   set_given_faces(state.time + dt, star_face_x_, star_face_y_);  // walls, inflows at t^{n+1}
   sync_periodic_faces(grid_, star_face_x_, star_face_y_);
   stats.max_divergence_before = max_abs_divergence(grid_, star_face_x_, star_face_y_);
 
   // docs/method.md §2.3 step 4: L_c phi = D U* / dt, pure Neumann (mean removed) or periodic.
   divergence(grid_, star_face_x_, star_face_y_, 1.0 / dt, buffer_.data());
-  stats.removed_mean = poisson_->solve(/*a=*/0.0, /*b=*/1.0, buffer_.data(), buffer_.data()).removed_mean;
+  stats.removed_mean = solve_poisson(ratio).removed_mean;
   phi_.copy_interior_from(buffer_.data());
   fill_correction_ghosts(grid_, boundaries_, phi_);
+  if (ratio != 1.0) {
+    centre_gradient(grid_, phi_, grad_x_, grad_y_);
+    fill_neumann_ghosts(grid_, grad_x_);
+    fill_neumann_ghosts(grid_, grad_y_);
+  }
 
   // Step 5: U^{n+1} = U* - dt G_f phi; faces with a given flux take it (walls, inflows at t^{n+1}).
   set_given_faces(state.time + dt, state.velocity_face_x, state.velocity_face_y);
+  if (ratio != 1.0) {
+    for (int j = 0; j < grid_.ny; ++j)
+      for (int i = faces.x_first; i <= faces.x_last; ++i) state.velocity_face_x(i, j) = star_face_x_(i, j);
+    for (int j = faces.y_first; j <= faces.y_last; ++j)
+      for (int i = 0; i < grid_.nx; ++i) state.velocity_face_y(i, j) = star_face_y_(i, j);
+    correct_faces(dt, ratio, state.velocity_face_x, state.velocity_face_y);
+  } else {
   IBMS_PARALLEL_ROWS
   for (int j = 0; j < grid_.ny; ++j)
     for (int i = faces.x_first; i <= faces.x_last; ++i)
@@ -371,6 +440,7 @@ ProjectionStats FluidSolver::project(FluidState& state, double dt, const FaceFor
   for (int j = faces.y_first; j <= faces.y_last; ++j)
     for (int i = 0; i < grid_.nx; ++i)
       state.velocity_face_y(i, j) = star_face_y_(i, j) - dt * (phi_(i, j) - phi_(i, j - 1)) * inv_dy;
+  }
   sync_periodic_faces(grid_, state.velocity_face_x, state.velocity_face_y);
   stats.max_divergence_after = max_abs_divergence(grid_, state.velocity_face_x, state.velocity_face_y);
 
@@ -401,6 +471,24 @@ ProjectionStats FluidSolver::project(FluidState& state, double dt, const FaceFor
 void FluidSolver::homogeneous_face_projection(double dt, const FaceField& face_increment_x,
                                               const FaceField& face_increment_y) {
   set_star_faces(face_increment_x, face_increment_y);
+  const double ratio = interpolation_ratio(dt);
+  if (ratio != 1.0) {
+    // The faces take (M A + (tau/dt)(I - M A)) g: A g is the cells' increment (their face mean).
+    const FaceRange faces = corrected_faces();
+    for (int j = 0; j < grid_.ny; ++j)
+      for (int i = 0; i < grid_.nx; ++i) {
+        lap_x_(i, j) = 0.5 * (face_increment_x(i, j) + face_increment_x(i + 1, j));
+        lap_y_(i, j) = 0.5 * (face_increment_y(i, j) + face_increment_y(i, j + 1));
+      }
+    fill_neumann_ghosts(grid_, lap_x_);
+    fill_neumann_ghosts(grid_, lap_y_);
+    for (int j = 0; j < grid_.ny; ++j)
+      for (int i = faces.x_first; i <= faces.x_last; ++i)
+        star_face_x_(i, j) = ratio * star_face_x_(i, j) + (1.0 - ratio) * 0.5 * (lap_x_(i - 1, j) + lap_x_(i, j));
+    for (int j = faces.y_first; j <= faces.y_last; ++j)
+      for (int i = 0; i < grid_.nx; ++i)
+        star_face_y_(i, j) = ratio * star_face_y_(i, j) + (1.0 - ratio) * 0.5 * (lap_y_(i, j - 1) + lap_y_(i, j));
+  }
   project_star_faces(dt);
 }
 
@@ -420,6 +508,9 @@ void FluidSolver::set_star_faces(const FaceField& face_increment_x, const FaceFi
 void FluidSolver::project_star_faces(double dt) { project_faces(dt, star_face_x_, star_face_y_); }
 
 void FluidSolver::project_faces_in_place(double dt, FaceField& face_x, FaceField& face_y) {
+  if (interpolation_ratio(dt) != 1.0)
+    throw std::logic_error("project_faces_in_place: the face increments of fluid.interpolation_time > 0 need "
+                           "homogeneous_face_projection");
   const FaceRange faces = corrected_faces();
   for (int j = 0; j < grid_.ny; ++j) {  // faces with a given flux: no increment
     for (int i = 0; i < faces.x_first; ++i) face_x(i, j) = 0.0;
@@ -434,9 +525,18 @@ void FluidSolver::project_faces_in_place(double dt, FaceField& face_x, FaceField
 void FluidSolver::project_faces(double dt, FaceField& face_x, FaceField& face_y) {
   sync_periodic_faces(grid_, face_x, face_y);
   divergence(grid_, face_x, face_y, 1.0 / dt, buffer_.data());
-  poisson_->solve(/*a=*/0.0, /*b=*/1.0, buffer_.data(), buffer_.data());
+  const double ratio = interpolation_ratio(dt);
+  solve_poisson(ratio);
   phi_.copy_interior_from(buffer_.data());
   fill_correction_ghosts(grid_, boundaries_, phi_);
+  if (ratio != 1.0) {
+    centre_gradient(grid_, phi_, grad_x_, grad_y_);
+    fill_neumann_ghosts(grid_, grad_x_);
+    fill_neumann_ghosts(grid_, grad_y_);
+    correct_faces(dt, ratio, face_x, face_y);
+    sync_periodic_faces(grid_, face_x, face_y);
+    return;
+  }
   subtract_face_gradient(dt, face_x, face_y);
 }
 
@@ -498,6 +598,8 @@ double FluidSolver::project_increment(FluidState& state, double dt, CellField& i
 double FluidSolver::add_projected_increment(FluidState& state, double dt, CellField& increment_x,
                                             CellField& increment_y, const FaceField& face_increment_x,
                                             const FaceField& face_increment_y, const CellField& phi) {
+  if (interpolation_time_ > 0.0)
+    throw std::logic_error("add_projected_increment: fluid.interpolation_time > 0 projects with project_increment");
   phi_ = phi;
   set_star_faces(face_increment_x, face_increment_y);
   sync_periodic_faces(grid_, star_face_x_, star_face_y_);

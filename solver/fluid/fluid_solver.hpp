@@ -89,6 +89,8 @@ struct FluidSchemes {
   // estimate (complete_prediction); 0: always FluidSolver::closure_sweeps sweeps from u^n.
   double single_sweep_viscous_number = 0.25;
   FftPlanning fft_planning = FftPlanning::measure;  // the three spectral solvers' plans
+  // tau of the momentum interpolation's face term; 0: the step (FluidSolver::set_interpolation_time).
+  double interpolation_time = 0.0;
 };
 
 // A force of the step as it enters the face velocities of the momentum interpolation (balanced
@@ -171,6 +173,9 @@ class FluidSolver {
                            const FaceField* face_increment_x = nullptr, const FaceField* face_increment_y = nullptr);
   // The potential phi of the last homogeneous (face) projection, ghosts filled: L phi = D U_g / dt.
   const CellField& correction_potential() const { return phi_; }
+  // Whether fluid.interpolation_time sets the face term's time scale (project_faces_in_place and
+  // add_projected_increment then do not apply: they assume the step's).
+  bool fixed_interpolation_time() const { return interpolation_time_ > 0.0; }
   // project_increment in the balanced form with the potential of these face increments given
   // (phi: L phi = D U_g / dt, e.g. a combination of earlier projections' potentials, the
   // projection being linear), so that no Poisson solve is needed: u += g - dt G_c phi,
@@ -182,6 +187,14 @@ class FluidSolver {
   void end_step(FluidState& state);
   // project, end_step and tick: the step of a scene without immersed boundary.
   ProjectionStats project_smac(FluidState& state, double dt);
+
+  // The time scale tau of the momentum interpolation's face term (0: the step dt, the classic form).
+  // With tau > 0 the face velocities differ from the mean of the cell velocities by
+  // tau (I - M A)(S_f F - G_f p) whatever the step, and the projection solves the operator
+  // D (dt M A + tau (I - M A)) G_f (the wide and compact Laplacians mixed), which the transforms
+  // diagonalise; the cells are corrected by dt A G_f phi as before.
+  void set_interpolation_time(double tau) { interpolation_time_ = tau; }
+  double interpolation_time() const { return interpolation_time_; }
 
   // Kinetic energy per unit density and depth, 0.5 sum |u|^2 dx dy [length^4/time^2].
   double kinetic_energy(const FluidState& state) const;
@@ -216,6 +229,17 @@ class FluidSolver {
   void subtract_centre_gradient(double dt, CellField& increment_x, CellField& increment_y);
   // u += increment, U_f += star_face_, p += phi_; returns max |increment|.
   double add_increment(FluidState& state, const CellField& increment_x, const CellField& increment_y);
+  double interpolation_time_ = 0.0;
+  // tau / dt (1 when interpolation_time_ is 0: the classic code path, bit for bit).
+  double interpolation_ratio(double dt) const { return interpolation_time_ > 0.0 ? interpolation_time_ / dt : 1.0; }
+  // The Poisson problem's eigenvalues for the ratio r: r lambda + (1 - r) lambda (1 + lambda h^2/4).
+  void mixed_eigenvalues(double ratio);
+  // Poisson solve of buffer_ in place (compact operator, or the mixed one for ratio != 1).
+  SpectralSolveStats solve_poisson(double ratio);
+  // face -= dt (ratio G_f phi + (1 - ratio) M G_c phi) on the corrected faces; grad_ must hold G_c phi.
+  void correct_faces(double dt, double ratio, FaceField& face_x, FaceField& face_y) const;
+  std::vector<double> mixed_x_, mixed_y_;
+  double mixed_ratio_ = 1.0;
   std::unique_ptr<SpectralSolver> poisson_;    // Neumann/periodic
   // Dirichlet/periodic, one per velocity component: the same transforms (FFTW reuses the first
   // plan's wisdom), so that with two threads the two solves run side by side.

@@ -83,6 +83,11 @@ SpectralSolver::~SpectralSolver() {
 }
 
 SpectralSolveStats SpectralSolver::solve(double a, double b, const double* rhs, double* solution) {
+  return solve(a, b, rhs, solution, lambda_x_, lambda_y_);
+}
+
+SpectralSolveStats SpectralSolver::solve(double a, double b, const double* rhs, double* solution,
+                                         const std::vector<double>& ex, const std::vector<double>& ey) {
   SpectralSolveStats stats;
   const std::size_t n = static_cast<std::size_t>(nx_) * ny_;
   std::copy(rhs, rhs + n, buffer_);
@@ -93,9 +98,9 @@ SpectralSolveStats SpectralSolver::solve(double a, double b, const double* rhs, 
   for (int l = 0; l < ny_; ++l) {
     double* row = buffer_ + static_cast<std::size_t>(nx_) * l;
     for (int k = 0; k < nx_; ++k) {
-      const double diagonal = (a + b * (lambda_x_[k] + lambda_y_[l])) * normalisation_;
-      if (std::abs(a + b * (lambda_x_[k] + lambda_y_[l])) <= 1e-300 ||
-          (a == 0.0 && lambda_x_[k] == 0.0 && lambda_y_[l] == 0.0)) {
+      const double diagonal = (a + b * (ex[k] + ey[l])) * normalisation_;
+      if (std::abs(a + b * (ex[k] + ey[l])) <= 1e-300 ||
+          (a == 0.0 && ex[k] == 0.0 && ey[l] == 0.0)) {
         // Constant mode of the singular problem: the forward transform of the constant mode is
         // the rhs sum times the transform's weight, i.e. mean * normalisation.
         stats.removed_mean = row[k] / normalisation_;

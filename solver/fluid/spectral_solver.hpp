@@ -39,6 +39,10 @@ class SpectralSolver {
   // vanishes (the constant mode of a pure Neumann/periodic Poisson problem) that mode of the
   // solution is set to 0 (zero mean) and the rhs mean is reported as removed.
   SpectralSolveStats solve(double a, double b, const double* rhs, double* solution);
+  // The same with the 1D eigenvalues given (ex: nx values, ey: ny values, transform order) in place
+  // of the compact Laplacian's: a + b (ex_k + ey_l). Any operator the transforms diagonalise.
+  SpectralSolveStats solve(double a, double b, const double* rhs, double* solution, const std::vector<double>& ex,
+                           const std::vector<double>& ey);
 
   // Eigenvalues of the 1D operators in transform order [1/length^2].
   const std::vector<double>& eigenvalues_x() const { return lambda_x_; }

@@ -114,6 +114,9 @@ std::string resolved_scene_toml(const Scene& scene) {
   out += fmt::format("convection = {}\n", toml_string(scene_schema::name_of(scene.fluid.convection)));
   out += fmt::format("wall_closure = {}\n", toml_string(scene_schema::name_of(scene.fluid.wall_closure)));
   out += fmt::format("gravity = {}\n", toml_pair(scene.fluid.gravity));
+  // Only when set: the scenes that do not use it keep the resolved text (and restarts) they had.
+  if (scene.fluid.interpolation_time > 0.0)
+    out += fmt::format("interpolation_time = {}\n", toml_float(scene.fluid.interpolation_time));
 
   out += "\n[walls]\n";
   const std::pair<const char*, const WallSpec*> walls[] = {

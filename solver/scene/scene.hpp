@@ -66,6 +66,11 @@ struct FluidSpec {
   // values central | quick | fromm | upwind3, and the viscous wall closure linear | quadratic.
   Convection convection = Convection::central;
   WallClosure wall_closure = WallClosure::linear;
+  // The time scale of the momentum interpolation's face term, tau (FluidSolver::set_interpolation_time):
+  // 0, the default, takes the step dt (the classic form, whose solution depends on dt where the
+  // pressure or an immersed-boundary force is sharp); > 0 a fixed tau, so that the solution does
+  // not depend on the step (give tau no smaller than the largest step).
+  double interpolation_time = 0.0;   // [time]
 };
 
 // One side of the box ([walls.<side>], fluid/boundary_conditions.hpp): a wall (tangential speed,

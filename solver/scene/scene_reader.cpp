@@ -58,6 +58,7 @@ void read_fluid(const TomlTableReader& table, FluidSpec& fluid) {
   table.read_pair("gravity", fluid.gravity, Need::optional);
   table.read_choice("convection", fluid.convection);
   table.read_choice("wall_closure", fluid.wall_closure);
+  table.read_real("interpolation_time", fluid.interpolation_time, Need::optional, non_negative);
 }
 
 // The four sides of the box (fluid/boundary_conditions.hpp). A side of a periodic direction is

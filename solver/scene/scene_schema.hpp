@@ -26,7 +26,7 @@ inline constexpr std::string_view run_keys[] = {"end_time",         "time_step",
 inline constexpr std::string_view domain_keys[] = {"length_x", "length_y",   "cells_x",
                                                    "cells_y",  "periodic_x", "periodic_y"};
 inline constexpr std::string_view fluid_keys[] = {"density", "kinematic_viscosity", "gravity", "convection",
-                                                  "wall_closure"};
+                                                  "wall_closure", "interpolation_time"};
 inline constexpr std::string_view wall_names[] = {"left", "right", "bottom", "top"};
 inline constexpr std::string_view wall_keys[] = {"kind",     "speed",       "stop_time",     "profile",
                                                  "velocity", "time_factor", "ramp_time",     "factor_offset",

@@ -101,3 +101,53 @@ BOOST_AUTO_TEST_CASE(checkerboard_pressure_mode_decays_at_large_viscous_number) 
   BOOST_TEST_MESSAGE("max |p| after 20 steps at nu dt/h^2 = 10, from 1: " << p_max);
   BOOST_TEST(p_max < 1.0);  // decayed (the compact rotational update would give ~40^20)
 }
+
+// A fixed time scale tau of the momentum interpolation (FluidSolver::set_interpolation_time,
+// docs/method.md §2.3): the projection solves D (dt M A + tau (I - M A)) G_f phi = D U*, which the
+// transforms diagonalise, so the faces are divergence-free to round-off for tau above and below
+// the step, with walls, periodic sides and an inflow-outflow channel; and after every step the
+// faces differ from the mean of the cells by -tau (I - M A) G_f p^{n+1} (no force), whatever dt.
+BOOST_AUTO_TEST_CASE(fixed_interpolation_time_keeps_faces_divergence_free) {
+  struct Case { const char* name; bool px, py; double lid; bool channel; };
+  for (const Case& c : {Case{"walls, moving lid", false, false, 1.0, false}, Case{"periodic box", true, true, 0.0, false},
+                        Case{"periodic x, walls y with lid", true, false, 1.0, false},
+                        Case{"inflow-outflow channel", false, false, 0.0, true}}) {
+    for (const double dt : {0.002, 0.008}) {
+      const double tau = 0.005;
+      const Grid g(48, 40, 1.0, 0.8, c.px, c.py);
+      FluidBoundaries bc;
+      if (!c.py) bc.top.speed = c.lid;
+      if (c.channel) {
+        bc.left.kind = SideKind::inflow;
+        bc.left.inflow.shape = InflowProfile::Shape::parabolic;
+        bc.left.inflow.velocity = 1.0;
+        bc.right.kind = SideKind::outflow;
+      }
+      FluidSolver solver(g, 0.01, bc, FluidSchemes{.interpolation_time = tau});
+      FluidState s = solver.make_state();
+      randomise(g, s, 42);
+      solver.initialise_faces(s);
+      for (int step = 0; step < 5; ++step) {
+        solver.predict_momentum(s, dt, nullptr, nullptr);
+        solver.velocity_star_x()(10, 10) += 0.3;
+        const ProjectionStats stats = solver.project_smac(s, dt);
+        const double ratio = stats.max_divergence_after / stats.max_divergence_before;
+        BOOST_TEST_MESSAGE(c.name << ", dt " << dt << ", step " << step << ": max|DU^{n+1}|/max|DU*| = " << ratio);
+        BOOST_TEST(ratio < 1e-12);
+        // U_f - M u = -tau (I - M A) G_f p on the x-faces two cells from any side.
+        const double h = g.dx();
+        double defect = 0.0, size = 0.0;
+        for (int j = 0; j < g.ny; ++j)
+          for (int i = 2; i <= g.nx - 2; ++i) {
+            const auto gf = [&](int k) { return (s.pressure(k, j) - s.pressure(k - 1, j)) / h; };
+            const double b = gf(i) - 0.25 * (gf(i - 1) + 2.0 * gf(i) + gf(i + 1));
+            const double d = s.velocity_face_x(i, j) - 0.5 * (s.velocity_x(i - 1, j) + s.velocity_x(i, j));
+            defect = std::max(defect, std::abs(d + tau * b));
+            size = std::max(size, std::abs(d));
+          }
+        BOOST_TEST_MESSAGE("  max|U_f - M u| = " << size << ", defect of -tau (I - M A) G_f p: " << defect);
+        BOOST_TEST(defect < 1e-12 * std::max(1.0, size));
+      }
+    }
+  }
+}

@@ -101,11 +101,17 @@ NoSlipResult hold_no_slip(const Grid& grid, KernelKind kernel, const WallVelocit
   // Under the face constraint with the cells from the faces the product reads the projected faces
   // only: the cells' increment is left to the correction at the end.
   const bool faces_only = on_faces && cells_from_faces;
+  // The faces' own projection in place and the corrections from the products' potentials assume
+  // the face term's time scale is the step's (fluid.interpolation_time = 0).
+  const bool in_place = faces_only && !solver.fixed_interpolation_time();
   const auto product = [&](const double* x, double* y) {
     scatter(x, coupling);
-    if (faces_only) {
+    if (in_place) {
       spread_face_increment();
       solver.project_faces_in_place(dt, face_increment_x, face_increment_y);
+    } else if (faces_only) {
+      spread_face_increment();
+      solver.homogeneous_face_projection(dt, face_increment_x, face_increment_y);
     } else {
       spread_increment();
       solver.homogeneous_projection(dt, increment_x, increment_y, &face_increment_x, &face_increment_y);
@@ -114,7 +120,7 @@ NoSlipResult hold_no_slip(const Grid& grid, KernelKind kernel, const WallVelocit
     for (std::size_t b = 0; b < coupling.size(); ++b) {
       BodyCoupling& c = coupling[b];
       const std::size_t first = k;
-      if (faces_only)
+      if (in_place)
         interpolate_faces(grid, c.face_stencils, at_rest, face_increment_x, face_increment_y, c.interpolated_velocity);
       else if (on_faces)
         interpolate_faces(grid, c.face_stencils, at_rest, solver.projected_face_increment_x(),
@@ -179,7 +185,8 @@ NoSlipResult hold_no_slip(const Grid& grid, KernelKind kernel, const WallVelocit
     std::fill(work.rotated.begin(), work.rotated.end(), 0.0);
     work.rotated[0] = beta;
     int m = 0;
-    const int kept = static_cast<int>(work.potentials.size()) - 1;  // potentials phi_j kept (may be -1)
+    // potentials phi_j kept (-1: none, the corrections projected with a solve of their own)
+    const int kept = solver.fixed_interpolation_time() ? -1 : static_cast<int>(work.potentials.size()) - 1;
     while (m < m_max && result.products < max_products) {
       const int j = m;
       double* w = V + (j + 1) * n;
