@@ -619,8 +619,8 @@ def literature_for(case, source, params):
                      "\\texttt{no\\_slip} coupling holds to \\texttt{ibm.slip\\_tolerance}%s; dashed: the "
                      "cell-centred velocity interpolated at the markers (\\texttt{slip\\_max}), which no "
                      "constraint holds: the cell velocities differ from the face velocities by the momentum "
-                     "interpolation's pressure term (\\texttt{docs/method.md} \\S2.3), largest where the "
-                     "pressure jumps across the rim." % (" (dotted line, %s)" % ", ".join(num(t) for t in tols)
+                     "interpolation's face term, $\\Delta t\\,(I-MA)(S_f\\mathbf F-G_fp)$ (\\texttt{docs/method.md} \\S2.3), "
+                     "largest where the pressure and the force jump across the rim." % (" (dotted line, %s)" % ", ".join(num(t) for t in tols)
                                                           if tols else ""))
     if case == "settling_disk":
         ref = rd(source, case, "settling_disk_rho1.25.csv")

@@ -346,7 +346,7 @@ CAUSES = [
      "grid. The shipped scene holds no-slip on the face velocities with the cells forced by the face mean "
      "(\\texttt{ibm.coupling = \"no\\_slip\"}, \\texttt{constrained\\_velocity = \"faces\"}): max $c_D$ 3.2499 "
      "at $D/h=20$ and 3.2403 at 40, 0.3\\,\\% and 0.01\\,\\% above the published upper bound 3.24, moving by "
-     "$+0.07$\\,\\% from CFL 0.5 to 0.125; the cause of the excess is not established (README)."),
+     "$+0.07$\\,\\% from CFL 0.5 to 0.125; the README names no cause of the excess."),
     ("dfg_cylinder_2d1", r"^drag_coefficient at",
      "The diffuse interface's body acts about $0.285h$ larger than its rim; the shipped scene retracts the markers "
      "by $0.25h$ under the no-slip coupling ($+0.79$, $+0.42$, $+0.38$\\,\\% at $D/h = 20, 30, 40$); the papers' "

@@ -222,7 +222,9 @@ def traceability_section(out, source, tests, ctest_results):
         failed = sum(1 for _, v in cited if v == "FAIL")
         names = ", ".join(tt(t) for t, _ in sorted(set(cited))[:6]) + (" (+%d)" % (len(set(cited)) - 6)
                                                                        if len(set(cited)) > 6 else "")
-        matrix.append(["M%s" % esc(n), md_text(clip_words(title, 60)), names, "%d / %d%s" % (passed, len(set(cited)),
+        # the title without its parenthesis (which may hold math that a cut would break)
+        short = re.sub(r"\s*\(.*$", "", title) or title
+        matrix.append(["M%s" % esc(n), md_text(clip_words(short, 60)), names, "%d / %d%s" % (passed, len(set(cited)),
                                                                              ", %d FAIL" % failed if failed else "")])
     out.append(r"{\fontsize{7}{8}\selectfont" + "\n" +
                longtable(r"l>{\raggedright\arraybackslash}p{4.2cm}>{\raggedright\arraybackslash}p{8.4cm}r",
