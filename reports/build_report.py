@@ -31,7 +31,8 @@ import report_solid as solid  # noqa: E402
 import report_sweeps as sweeps  # noqa: E402
 import report_cases as cases_mod  # noqa: E402
 import report_trace as trace  # noqa: E402
-from report_latex import esc, md_text, num, status_cell, figure, longtable, tt  # noqa: E402
+from report_latex import (TABLE_PT, esc, join_lines, md_text, num, sentences_within, status_cell, figure,  # noqa: E402
+                          longtable, tt)
 
 PREAMBLE = r"""\documentclass[10pt,a4paper]{article}
 \usepackage[T1]{fontenc}
@@ -45,6 +46,15 @@ PREAMBLE = r"""\documentclass[10pt,a4paper]{article}
 \definecolor{missorange}{rgb}{0.85,0.33,0.0}
 \setlength{\LTcapwidth}{\textwidth}
 \setlength{\emergencystretch}{2em}
+% Sub- and superscripts at 7 pt or more whatever the text size (LaTeX's defaults set them at 5 and
+% 6 pt in 7 to 9 pt text): no text of the report prints below 7 pt.
+\DeclareMathSizes{7}{7}{7}{7}
+\DeclareMathSizes{7.5}{7.5}{7}{7}
+\DeclareMathSizes{8}{8}{7}{7}
+\DeclareMathSizes{9}{9}{7}{7}
+\DeclareMathSizes{10}{10}{7}{7}
+\DeclareMathSizes{10.95}{10.95}{8}{7}
+\DeclareMathSizes{12}{12}{8}{7}
 \begin{document}
 """
 
@@ -67,9 +77,15 @@ def case_list(build, source, results):
     return order, folders
 
 
+# A README excerpt longer than this (characters) is cut at the last sentence end before it, and the
+# report says where the rest is (every case's first paragraph is shorter).
+EXCERPT_LIMIT = 1600
+
+
 def readme_summary(source, case):
     """First paragraph of validation/<case>/README.md after its heading and the Validates /
-    Compared-with lines, if any."""
+    Compared-with lines, if any: (text, cut), the paragraph whole, or its sentences up to
+    EXCERPT_LIMIT characters with cut True; None without one."""
     path = os.path.join(source, "validation", case, "README.md")
     if not os.path.isfile(path):
         return None
@@ -88,15 +104,12 @@ def readme_summary(source, case):
             started = True
             lines.append(s)
     # Markdown kept (code spans, ASCII notation): the quoting code sets it as LaTeX (md_text).
-    text = " ".join(lines).replace("**", "")
+    text = join_lines(lines).replace("**", "")
     # Pointers to the project's issue tracker mean nothing to a reader of the report.
     text = re.sub(r"\s*\((?:see )?issue \d+(?:\s*(?:§|item)\s*\d+)?\)", "", text)
     text = re.sub(r"[:;,]?\s*issue \d+(?:\s*(?:§|item)\s*\d+)?", "", text)
-    if len(text) > 900:  # whole sentences, else whole words, never a word cut in two
-        cut = text.rfind(". ", 0, 900)
-        space = text.rfind(" ", 0, 900)
-        text = text[:cut + 1] + " ..." if cut > 300 else text[:space if space > 0 else 900] + " ..."
-    return text or None
+    # whole sentences, never a sentence or a word cut in two
+    return sentences_within(text, EXCERPT_LIMIT) if text.strip() else None
 
 
 # ---------------------------------------------------------------- run parameters (from the outputs)
@@ -293,7 +306,7 @@ def summary_page(out, order, metas, judged, params, not_run=()):
         rows.append([r"\hyperref[case:%s]{%s}" % (case, tt(case)),
                      validates, against, grids_text(params.get(case, []), c["rows"]),
                      cases_mod.verdict_cell(c["verdict"]), _headline(c)])
-    out.append(r"{\fontsize{7}{8}\selectfont\setlength{\tabcolsep}{3pt}" + "\n" +
+    out.append(r"{\fontsize{%g}{%g}\selectfont\setlength{\tabcolsep}{3pt}" % TABLE_PT + "\n" +
                longtable(r">{\raggedright\arraybackslash}p{2.1cm}>{\raggedright\arraybackslash}p{3.6cm}"
                          r">{\raggedright\arraybackslash}p{3.5cm}>{\raggedright\arraybackslash}p{1.5cm}c"
                          r">{\raggedright\arraybackslash}p{4.6cm}",
@@ -321,7 +334,8 @@ def summary_page(out, order, metas, judged, params, not_run=()):
                                                           esc(r["row_case"]), md_text(r["metric"]),
                                                           cases_mod.measured_text(r), r["target_text"])
                  for case, r in misses]
-        out.append(r"{\fontsize{7}{8}\selectfont\begin{itemize}\setlength{\itemsep}{0pt}\setlength{\parskip}{0pt}" + "\n" +
+        out.append(r"{\fontsize{%g}{%g}\selectfont\begin{itemize}\setlength{\itemsep}{0pt}\setlength{\parskip}{0pt}"
+                   % TABLE_PT + "\n" +
                    "\n".join(r"\item " + i for i in items) + r"\end{itemize}}")
     else:
         out.append(r"\paragraph{No miss and no failure} among the judged figures.")
@@ -421,7 +435,6 @@ def quantities_summary_section(out, order, metas, judged, fig_dir):
         ax.plot([], [], "o", color=colour, label=verdict)
     ax.plot([], [], "k:", label="$\\pm$10 %")
     ax.legend(loc="upper left", fontsize=7)
-    ax.tick_params(labelsize=7)
     # The same figures as deviations from their references, numbered as in the table below: each
     # target's band drawn from its lower to its upper bound and the figure as its own point, so a
     # miss shows outside its band (per-cent misses that the log-log panel cannot show).
@@ -439,7 +452,7 @@ def quantities_summary_section(out, order, metas, judged, fig_dir):
     # value on either side (symlog: logarithmic beyond +-1 %).
     ext = [v for _, d, dlo, dhi, _ in rows for v in (d, dlo, dhi) if math.isfinite(v)] or [0.0]
     dax.set_ylim(-_symlog_margin(-min(ext)), _symlog_margin(max(ext)))
-    dax.tick_params(labelsize=7)
+    dax.tick_params(axis="x", labelsize=7)  # one number per figure: many, and without scripts
     fig.tight_layout()
     path = os.path.join(fig_dir, "quantities_summary.pdf")
     figs.save(fig, path)
@@ -494,7 +507,7 @@ def checks_by_case_section(out, order, metas, judged):
             mark = "own" if r["own"] else m["mark"]
             metric = md_text(r["metric"]) + ("" if r["row_case"] == case else
                                          r" {\scriptsize(\texttt{%s})}" % esc(r["row_case"][len(case):].lstrip("_")))
-            target = r["target_text"] + (r"\newline{\tiny %s}" % r["target_source"] if r["target_source"] else "")
+            target = r["target_text"] + (r"\newline{\scriptsize %s}" % r["target_source"] if r["target_source"] else "")
             rows.append([cases_mod.mark_cell(mark), metric, target, cases_mod.measured_text(r),
                          cases_mod.verdict_cell(r["verdict"]), r["gate"]])
     if rows:
@@ -613,7 +626,7 @@ def literature_for(case, source, params):
                        if p["scene"].get("ibm", {}).get("coupling") == "no_slip"})
         for tol in tols:
             lit["lines"].setdefault("face_slip_max", []).append(
-                (tol, "ibm.slip_tolerance %s" % num(tol)))
+                (tol, "ibm.slip_tolerance %g" % tol))
         notes.append("Right: the largest slip at the markers relative to $U_{\\rm mean}$, log scale. Solid: the "
                      "face velocities' slip (\\texttt{face\\_slip\\_max}), the one the end-of-step "
                      "\\texttt{no\\_slip} coupling holds to \\texttt{ibm.slip\\_tolerance}%s; dashed: the "
@@ -754,9 +767,12 @@ def case_section(out, case, meta, build, source, judged, params, fig_dir):
     if summary:
         # The README's own words, set apart and labelled: figures in it were measured in the runs its
         # authors made, not in this one (this run's are in the tables and figures below).
+        text, cut = summary
         out.append(r"\begin{quote}\small\textbf{The case README's text} (\texttt{validation/%s/README.md}, its "
-                   r"first paragraph; any figure in it is the README's, from an earlier run, not this run's "
-                   r"result): ``%s''\end{quote}" % (esc(case), md_text(summary)) + "\n")
+                   r"first paragraph%s; any figure in it is the README's, from an earlier run, not this run's "
+                   r"result): ``%s''%s\end{quote}" %
+                   (esc(case), ", its first sentences" if cut else "", md_text(text),
+                    r" (the paragraph goes on in the README, under its title)" if cut else "") + "\n")
     parameter_table(out, params)
     statement = grid_statement(params)
     if statement:
@@ -765,7 +781,7 @@ def case_section(out, case, meta, build, source, judged, params, fig_dir):
         out.append(r"\emph{Not run: no lines for this case in \texttt{validation/results.csv}.}" + "\n")
     case_dir = os.path.join(build, "validation", case)
     ref_dir = os.path.join(source, "validation", case, "reference")
-    made = 0
+    made, misses_shown = 0, False
     if os.path.isdir(case_dir):
         stem = case.replace(".", "_")
         labels = {"ghia": "Ghia et al. (1982)", "botella": "Botella & Peyret (1998) extrema"}
@@ -816,6 +832,7 @@ def case_section(out, case, meta, build, source, judged, params, fig_dir):
             made += 1
             out.append(figure(p, "Body histories from %s. %s" %
                               (", ".join(tt(os.path.basename(f)) for f in files), note)))
+            misses_shown = case_misses(out, case, c)  # below the histories that show them against the literature
         contact_pairs_table(out, case_dir)
         others = [f for f in sorted(glob.glob(os.path.join(case_dir, "*.csv")))
                   if "_centreline_" not in f and not f.endswith("_bodies.csv")
@@ -828,6 +845,27 @@ def case_section(out, case, meta, build, source, judged, params, fig_dir):
                                      "column, one panel per unit." % esc(os.path.basename(f))))
     if made == 0:
         out.append(r"\emph{No figures: no run outputs in \texttt{BUILD/validation/%s} (not run).}" % esc(case) + "\n")
+    if not misses_shown:
+        case_misses(out, case, c)
+
+
+def case_misses(out, case, c):
+    """Once per case, where its figures show them (below its body histories, else at the section's
+    end): every figure of the case that misses its target or fails its check, measured against
+    target, with its cause as the case README states it (report_cases.CAUSES, the text Known
+    limitations repeats). Returns whether it printed any."""
+    rows = [r for r in (c or {}).get("rows", []) if r["verdict"] in ("miss", "fail")]
+    if not rows:
+        return False
+    out.append(r"\paragraph{Misses of this case and their causes} (the causes and their figures are the case "
+               r"README's, from its own runs; this run's figure is the one before the cause)")
+    out.append(r"\begin{itemize}\setlength{\itemsep}{1pt}" + "\n" + "\n".join(
+        r"\item %s %s%s: %s (target %s). %s" % (
+            cases_mod.verdict_cell(r["verdict"]), md_text(r["metric"]),
+            "" if r["row_case"] == case else r" (\texttt{%s})" % esc(r["row_case"][len(case):].lstrip("_")),
+            cases_mod.measured_text(r), r["target_text"], cases_mod.cause_of(case, r["metric"])) for r in rows)
+        + r"\end{itemize}" + "\n")
+    return True
 
 
 # ---------------------------------------------------------------- closing sections

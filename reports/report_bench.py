@@ -45,9 +45,12 @@ def _float(text):
 
 
 def _plain(text):
-    """A number as %.8g, plain text (ranges in a narrow column)."""
+    """A number as %.8g (ranges in a narrow column), a power of ten as one (no e-notation)."""
     value = _float(text)
-    return "nan" if math.isnan(value) else ("%.8g" % value).replace("-", "$-$")
+    if math.isnan(value):
+        return "nan"
+    mant, _, ten = ("%.8g" % value).partition("e")
+    return r"$%s\times10^{%d}$" % (mant, int(ten)) if ten else mant.replace("-", "$-$")
 
 
 def log_log_slope(x, y):
@@ -304,7 +307,8 @@ def body_work_precision(out, build, fig_dir, source, cases):
         ax.set_xlabel("wall time [s]")
         ax.set_ylabel("error")
         ax.margins(x=0.2, y=0.2)
-        ax.legend(loc="best", fontsize=7)
+        # below the panel, outside the axes: the curves and their labels fill the panel's corners
+        ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.3), fontsize=7, frameon=False)
     path = os.path.join(fig_dir, "work_precision_bodies.pdf")
     fig.tight_layout()
     figs.save(fig, path)

@@ -355,9 +355,12 @@ CAUSES = [
      "Max $c_L$ is not converged in the time step under the face constraint: 0.9725, 0.9779, 0.9863, 0.9986 at "
      "\\texttt{run.cfl} 0.5, 0.25, 0.125, 0.0625 ($D/h=20$), each halving adding more than the one before, and "
      "the grids do not reduce the deficit at the shipped CFL (0.9725, 0.9721, 0.9735 at $D/h = 20, 30, 40$). The "
-     "cause is the momentum interpolation's face term, whose time scale is the step: with it fixed "
-     "(\\texttt{fluid.interpolation\\_time}) max $c_L$ stays at 0.9717--0.9720 from CFL 0.5 to 0.0625 and "
-     "moves with that time scale instead (README, docs/method.md \\S2.3)."),
+     "cause is the momentum interpolation's face term $\\Delta t\\,(I-MA)(S_f\\mathbf F-G_fp)$: the faces are made "
+     "again from the cells at every step, and this term, which ties them to the cells' grid-scale part near the "
+     "rim, is proportional to the step, so the cell and face velocities drift apart near the rim as the step "
+     "shrinks. With its time scale fixed (\\texttt{fluid.interpolation\\_time}) max $c_L$ stays at "
+     "0.9717--0.9720 from CFL 0.5 to 0.0625 and moves with that time scale instead (README, docs/method.md "
+     "\\S2.3)."),
     ("dfg_cylinder_2d1", r"lift_coefficient",
      "$c_L$ at Re 20 is a small asymmetry of the flow (about 1\\,\\% of $c_D$) that the smeared interface does "
      "not resolve at these grids (README)."),
@@ -391,6 +394,15 @@ CAUSES = [
      "Set by when the pair tumbles, which the symmetry-breaking offset of the upper disk controls (README, "
      "$D/h = 16$: horizontal at 2.61 / 2.29 / 1.98\\,s for offsets 0.001 / 0.01 / 0.03\\,cm, about 0.3\\,s per "
      "factor 3 of the offset); Wan \\& Turek state no perturbation; not gated."),
+    ("settling_disk", r"^max settling speed",
+     "The README's own runs measure 5.5769\\,cm/s at $D/h = 25$: $+1.4$\\,\\% against Wan \\& "
+     "Turek's 5.5 $\\pm$ 0.05\\,cm/s read off their curve, inside the range 5.49--5.58\\,cm/s of Wan \\& Turek "
+     "and Glowinski et al., 0.85\\,\\% above Glowinski et al.'s cited 5.53. Finer grids do not lower it (5.5778, "
+     "5.5783\\,cm/s at $D/h = 37.5, 50$), and three set-ups (the papers' coupling with the $\\nu\\Delta t/h^2$ "
+     "cap, the face constraint without and with $0.25h$ retraction) extrapolate to 5.588--5.593\\,cm/s from "
+     "both sides, so the README finds the difference is not the coupling but points at the references: "
+     "Glowinski et al.'s own fine-mesh values as cited extrapolate to 5.578\\,cm/s, and Wan \\& Turek's value "
+     "is read off a curve (README)."),
     ("settling_disk", r"Richardson|observed order",
      "Recorded, not gated: under the end-of-step coupling with the markers retracted by $0.3h$ the diffuse "
      "interface's first-order term is cancelled, and three grids give an order above the scheme's (the wheel's "

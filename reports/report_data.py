@@ -288,8 +288,10 @@ def environment(build, source, h5_paths):
     if state:
         env.append(("build's source tree at report time", "%s: %s, %s" % (
             state["path"], state["describe"],
-            "%d tracked file(s) changed against HEAD: %s" % (len(state["changed"]), ", ".join(state["changed"][:6]) +
-                                                           (", ..." if len(state["changed"]) > 6 else ""))
+            "%d tracked file(s) changed against HEAD: %s" % (
+                len(state["changed"]), ", ".join(state["changed"][:6]) +
+                (" and %d more (git status in %s)" % (len(state["changed"]) - 6, state["path"])
+                 if len(state["changed"]) > 6 else ""))
             if state["changed"] else "no tracked file changed against HEAD")))
     else:
         env.append(("build's source tree at report time", "not found (no CMakeCache.txt or no git tree)"))

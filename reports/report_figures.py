@@ -18,21 +18,104 @@ import numpy as np  # noqa: E402
 import matplotlib.patheffects  # noqa: E402
 import matplotlib.text  # noqa: E402
 import report_data as data  # noqa: E402
-from report_latex import FIGURE_TEXT, TEXT_WIDTH_PT, pdf_size  # noqa: E402
+from report_latex import FIGURE_TEXT, TEXT_WIDTH_PT, mathtext, pdf_size  # noqa: E402
 
+# An axis's offset and scale factor as mathtext ($\times10^{-14}$), not e-notation (1e-14).
 plt.rcParams.update({"font.size": 9, "axes.titlesize": 9, "legend.fontsize": 7,
-                     "pdf.fonttype": 42, "figure.dpi": 100, "savefig.bbox": "tight"})
+                     "pdf.fonttype": 42, "figure.dpi": 100, "savefig.bbox": "tight",
+                     "axes.formatter.use_mathtext": True})
+
+# Sub- and superscripts of matplotlib's mathtext ($c_D$, the exponents of log-axis ticks) are set at
+# SCRIPT_RATIO of their text per level. matplotlib's 0.7 (TeX's ratio at 10 pt) prints the 9 pt
+# ticks' exponents at 6.3 pt; 0.78 prints them at 7 pt, as the preamble's \DeclareMathSizes sets
+# LaTeX's. Text with scripts is set at script_size() or larger.
+SCRIPT_RATIO = 0.78
+try:
+    import matplotlib._mathtext as _mathtext  # noqa: E402
+    if hasattr(_mathtext, "SHRINK_FACTOR"):
+        _mathtext.SHRINK_FACTOR = SCRIPT_RATIO
+    else:  # a matplotlib without the constant: its own ratio, which save() then measures
+        SCRIPT_RATIO = 0.7
+except ImportError:
+    SCRIPT_RATIO = 0.7
+
+
+def script_depth(text):
+    """How many levels of sub- or superscript the mathtext of a text holds (0 without math): 1 for
+    '$c_D$' or '$10^{-3}$', 2 for '$x_{a_b}$'."""
+    if text.replace("\\$", "").count("$") < 2:
+        return 0
+    deepest = 0
+    for group in re.findall(r"(?<!\\)\$(.*?)(?<!\\)\$", text):
+        level, stack, pending = 0, [], False
+        for c in group:
+            if c in "^_":
+                pending = True
+                deepest = max(deepest, level + 1)
+            elif c == "{":
+                stack.append(level)
+                if pending:
+                    level += 1
+                pending = False
+            elif c == "}":
+                level = stack.pop() if stack else 0
+            elif pending and not c.isspace():
+                pending = False  # a one-character script: the level is back after it
+    return deepest
+
+
+def script_size(texts, size=7.0, minimum=7.0):
+    """The smallest font size at or above `size` at which every script of `texts` (labels of one
+    legend, say) prints at `minimum` pt at full size: `size` when none has a script."""
+    depth = max([script_depth(t) for t in texts] or [0])
+    return max(size, math.ceil(10 * minimum / SCRIPT_RATIO ** depth - 1e-9) / 10)
+
+
+def _scripts_legible(fig):
+    """Text with sub- or superscripts set at script_size(), so that its scripts are 7 pt at full
+    size: a log axis's tick labels through the axis, the axes' titles of the figure at one size and
+    each legend at one size for all its entries, every other text alone."""
+    fig.canvas.draw()  # tick labels exist from here on
+    done = set()
+    for ax in fig.axes:
+        for name, axis in (("x", ax.xaxis), ("y", ax.yaxis)):
+            for which, labels in (("major", axis.get_majorticklabels()), ("minor", axis.get_minorticklabels())):
+                labels = [t for t in labels if t.get_visible() and t.get_text().strip()]
+                done.update(id(t) for t in labels)
+                if labels:
+                    now = max(t.get_fontsize() for t in labels)
+                    size = script_size([t.get_text() for t in labels], now)
+                    if size > now:
+                        ax.tick_params(axis=name, which=which, labelsize=size)
+    # the axes' titles of one figure at one size, each legend at one size for all its entries
+    groups = [[ax.title for ax in fig.axes if ax.title.get_text().strip()]]
+    legends = [ax.get_legend() for ax in fig.axes if ax.get_legend()] + list(fig.legends)
+    groups += [legend.get_texts() for legend in legends]
+    for texts in groups:
+        done.update(id(t) for t in texts)
+        if texts:
+            now = max(t.get_fontsize() for t in texts)
+            size = script_size([t.get_text() for t in texts], now)
+            if size > now:
+                for t in texts:
+                    t.set_fontsize(size)
+    for t in fig.findobj(matplotlib.text.Text):
+        if id(t) not in done and t.get_visible() and t.get_text().strip():
+            t.set_fontsize(script_size([t.get_text()], t.get_fontsize()))
 
 
 def save(fig, path):
-    """Writes the figure (vector PDF, tight bounding box) and closes it. A figure wider than the
-    text is narrowed (its text kept at its size, the layout redone) until it fits, so that LaTeX
-    prints it at full size; records its smallest visible text size (tick labels, legends,
-    annotations, titles) for the print-size check of report_latex.figure()."""
-    fig.savefig(path)  # draws the figure: its tick labels exist from here on
+    """Writes the figure (vector PDF, tight bounding box) and closes it. Text with sub- or
+    superscripts is first set large enough for its scripts (_scripts_legible). A figure wider than
+    the text is narrowed (its text kept at its size, the layout redone) until it fits, so that
+    LaTeX prints it at full size; records its smallest visible text size (tick labels, legends,
+    annotations, titles, and the sub- and superscripts in them) for the print-size check of
+    report_latex.figure()."""
+    _scripts_legible(fig)
+    fig.savefig(path)  # draws the figure again, with the sizes set
     for _ in range(4):
         width = pdf_size(path)[0]
-        if width is None or width <= TEXT_WIDTH_PT + 0.5:
+        if width is None or width <= TEXT_WIDTH_PT:
             break
         w_in, h_in = fig.get_size_inches()
         fig.set_size_inches(max(w_in - 1.02 * (width - TEXT_WIDTH_PT) / 72.0, 1.5), h_in)
@@ -40,7 +123,8 @@ def save(fig, path):
             warnings.simplefilter("ignore")
             fig.tight_layout()
         fig.savefig(path)
-    sizes = [t.get_fontsize() for t in fig.findobj(matplotlib.text.Text)
+    # each text's smallest glyphs: its size, or its deepest script's (SCRIPT_RATIO per level)
+    sizes = [t.get_fontsize() * SCRIPT_RATIO ** script_depth(t.get_text()) for t in fig.findobj(matplotlib.text.Text)
              if t.get_visible() and t.get_text().strip() and t.get_figure() is fig]
     plt.close(fig)
     if sizes:
@@ -134,7 +218,7 @@ def cavity_profiles(case_dir, case, ref_dir, out, labels=None):
             if arr.shape[0] == 0:
                 continue
             x, y = arr[:, 0], arr[:, 1]
-            label = "%d$^2$" % n if n else os.path.basename(path)
+            label = "%d$\\times$%d" % (n, n) if n else os.path.basename(path)
             line, = (ax.plot(y, x, lw=1, label=label) if comp == "u" else ax.plot(x, y, lw=1, label=label))
             if comp in refs:
                 c, val, flag, _ = refs[comp]
@@ -301,10 +385,17 @@ def snapshots(case_dir, case, out, max_panels=3, path=None, vlim=None, system=No
             ax.set_ylabel(_axis_label("y", "length", system))
         if cs is not None:
             fig.colorbar(cs, ax=[a for a in axes.flat if a.get_visible()], shrink=0.85,
-                         label=_axis_label("vorticity", "1/time", system), format="%.3g",
+                         label=_axis_label("vorticity", "1/time", system),
+                         format=matplotlib.ticker.FuncFormatter(lambda v, _: _number(v)),
                          ticks=np.linspace(-lim, lim, 5))
         save(fig, out)
     return out, path
+
+
+def _number(value):
+    """A tick value to three digits, a power of ten as mathtext ($3.83\\times10^{-5}$, not 3.83e-05)."""
+    mant, _, ten = ("%.3g" % value).partition("e")
+    return r"$%s\times10^{%d}$" % (mant, int(ten)) if ten else mant
 
 
 def _body_label(names, k):
@@ -460,7 +551,7 @@ def trajectories(path, out):
     ax.set_aspect("equal")
     ax.set_xlabel("x")
     ax.set_ylabel("y")
-    ax.set_title("%.3g <= t <= %.3g" % (arr[:, 0].min(), arr[:, 0].max()))
+    ax.set_title("%.3g $\\leq t \\leq$ %.3g" % (arr[:, 0].min(), arr[:, 0].max()))
     ax.grid(alpha=0.3)
     fig.tight_layout()
     save(fig, out)
@@ -526,8 +617,8 @@ def convergence_study(name, refined, items, out):
         slope = t.get("fit_order", math.nan)
         # the set-up is the figure's title: the legend names what differs (variable and norm)
         rest = title[len(name):].lstrip(", ") if title.startswith(name + ",") else title.split(": ", 1)[-1]
-        # ASCII exponents (64^2) as mathtext superscripts, after wrapping at spaces
-        lab = "(%d) %s" % (k, re.sub(r"\^(-?\d+)", r"$^{\1}$", _wrap(rest, 40)))
+        # ASCII notation (64^2, nu, <=) as mathtext, after wrapping at spaces
+        lab = "(%d) %s" % (k, mathtext(_wrap(rest, 40)))
         if np.isfinite(slope):
             lab += ": %.2f" % slope
         line, = ax.loglog(h[ok], e[ok], "o-", ms=3.5, lw=1, label=lab)

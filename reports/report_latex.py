@@ -116,6 +116,10 @@ def longtable(spec, header, rows, caption=None, size="small", tabcolsep="4pt", k
 # smallest font size of each saved figure at its own size (report_figures.save); figure() records
 # every figure printed with smaller text in SMALL_TEXT, which build_report reports as an error.
 MIN_PRINT_PT = 7.0
+# The dense tables' type (page 1's summary and list of misses, the traceability tables), size and
+# baseline skip in pt: the document's smallest text, its sub- and superscripts at MIN_PRINT_PT
+# (the preamble's \\DeclareMathSizes).
+TABLE_PT = (7.5, 9)
 TEXT_WIDTH_PT, TEXT_HEIGHT_PT = 504.6, 756.8  # A4 less the preamble's geometry margins
 FIGURE_TEXT = {}
 SMALL_TEXT = []
@@ -146,11 +150,12 @@ def figure(path, caption, height=0.42):
     allowance grows (to 0.9 at most) where the figure's smallest text would print below
     MIN_PRINT_PT, which is recorded in SMALL_TEXT where even that does not suffice."""
     smallest, scale = FIGURE_TEXT.get(path), print_scale(path, height)
-    if smallest is not None and scale is not None and smallest * scale < MIN_PRINT_PT - 0.05:
+    if smallest is not None and scale is not None and smallest * scale < MIN_PRINT_PT - 0.01:
         w, h = pdf_size(path)
-        height = max(height, min(0.9, 1.005 * MIN_PRINT_PT / smallest * h / TEXT_HEIGHT_PT))
+        # rounded up to the hundredth the LaTeX source states
+        height = max(height, min(0.9, math.ceil(100 * MIN_PRINT_PT / smallest * h / TEXT_HEIGHT_PT) / 100))
         scale = print_scale(path, height)
-        if smallest * scale < MIN_PRINT_PT - 0.05:
+        if smallest * scale < MIN_PRINT_PT - 0.01:
             SMALL_TEXT.append((os.path.basename(path), smallest * scale))
     return "\n".join([r"\begin{figure}[H]", r"\centering",
                       r"\includegraphics[width=\textwidth,height=%.2f\textheight,keepaspectratio]{%s}"
@@ -159,43 +164,157 @@ def figure(path, caption, height=0.42):
 
 
 # ASCII notation of READMEs, results.csv metrics and test headers set as LaTeX: exponents (32^2,
-# [1/s^2], 10^-4), one-letter or Greek symbols with a short subscript (c_D, u_min, v_0.30, rho_s)
-# as math, everything else escaped. Names of several letters joined by '_' (drag_coefficient_max,
-# n_surface_points) are not subscripts and stay text.
-_GREEK = ("alpha", "beta", "gamma", "delta", "Delta", "epsilon", "mu", "nu", "omega", "Omega", "phi", "rho",
-          "sigma", "tau", "theta", "kappa", "lambda", "xi", "zeta", "eta", "pi")
+# [1/s^2], 10^-4), one-letter or Greek symbols with a short subscript (c_D, u_min, v_0.30, rho_s,
+# dV_l, sum_l) as math, Greek names standing alone (2 pi f t, h^2 / pi, at Omega) as their letters,
+# relations (<=, >=, !=, ==, +-, ->, ~ before a number) as their signs, numbers in e-notation (1e-4,
+# 5e-15) as powers of ten, sqrt(...) as a root, a digit x digit as a times sign, everything else
+# escaped. Names of several letters joined by '_' (drag_coefficient_max, n_surface_points) are not
+# subscripts and stay text; so does 'delta' before a word ("the four delta kernels").
+_GREEK = ("alpha", "beta", "gamma", "Gamma", "delta", "Delta", "epsilon", "mu", "nu", "omega", "Omega", "phi",
+          "Phi", "rho", "sigma", "tau", "theta", "kappa", "lambda", "xi", "zeta", "eta", "pi")
+# (names both LaTeX and matplotlib's mathtext know: figure labels take the same notation)
+_RELATIONS = {"<=": r"\leq", ">=": r"\geq", "!=": r"\neq", "==": "=", "+-": r"\pm", "->": r"\to", "~": r"\approx"}
 _NOTATION = re.compile(
     r"\^(?P<exp>\{[^{}]*\}|-?\d+(?:\.\d+)?|[A-Za-z](?![A-Za-z]))"
-    r"|(?<![\w\\.])(?P<base>%s|[A-Za-z]|[ρνΔωδζπμ])_(?P<sub>[A-Za-z0-9]{1,4}(?:\.\d+)?)(?![\w])" % "|".join(_GREEK))
+    r"|(?<![\w\\.])(?P<base>sum|%s|d?[A-Za-z]|[ρνΔωδζπμ])_(?P<sub>[A-Za-z0-9]{1,5}(?:\.\d+)?)(?![\w])"
+    r"|(?<=\))_(?P<psub>[A-Za-z0-9]{1,4})(?![\w])"
+    r"|(?P<rel><=|>=|!=|==|\+-|->|(?<![\w~])~(?=\d))"
+    r"|(?<![\w.])(?P<mant>\d+(?:\.\d+)?)[eE](?P<ten>[+-]?\d+)(?!\w|\.\d)"
+    r"|(?<![\w\\])sqrt\((?P<root>[^()]*)\)"
+    r"|(?<=\d) ?x ?(?=\d)"
+    r"|(?<![\w\\])(?P<greek>%s)(?![\w])(?!(?<=delta) [A-Za-z])" % ("|".join(_GREEK), "|".join(_GREEK)))
 
 
 def _sub(text):
     return text if len(text) == 1 or re.fullmatch(r"[0-9.]+", text) else r"\mathrm{%s}" % text
 
 
-def notation(text):
-    """Plain text (no code spans) with its ASCII exponents and subscripts as LaTeX math, the rest
-    escaped (esc)."""
+def _symbol(name):
+    """LaTeX of a subscript's base or a standalone name: a Greek name or letter as its letter, sum as
+    the summation sign, a letter as itself."""
+    if name in _GREEK or name == "sum":
+        return "\\" + name
+    return _UNICODE[name].strip("$") if name in _UNICODE else name
+
+
+def notation(text, escape=esc):
+    """Plain text (no code spans) with its ASCII notation (above) as LaTeX math, the rest escaped
+    (`escape`: esc for LaTeX, mathtext() for a figure's labels); adjacent math groups are joined
+    ($T_{c}^{2}$, not $T_{c}$$^{2}$)."""
     out, pos = [], 0
     for m in _NOTATION.finditer(text):
-        out.append(esc(text[pos:m.start()]))
+        out.append(escape(text[pos:m.start()]))
         if m.group("exp") is not None:
-            out.append(r"$^{%s}$" % esc(m.group("exp").strip("{}")).replace("-{}", "-"))
-        else:
-            base = m.group("base")
-            symbol = "\\" + base if base in _GREEK else _UNICODE[base].strip("$") if base in _UNICODE else base
-            out.append(r"$%s_{%s}$" % (symbol, _sub(m.group("sub"))))
+            exp = m.group("exp").strip("{}")
+            out.append(r"$^{%s}$" % (esc(exp).replace("-{}", "-") if escape is esc else exp))
+        elif m.group("base") is not None:
+            out.append(r"$%s_{%s}$" % (_symbol(m.group("base")), _sub(m.group("sub"))))
+        elif m.group("psub") is not None:
+            out.append(r"$_{%s}$" % _sub(m.group("psub")))
+        elif m.group("rel") is not None:
+            out.append(r"$%s$" % _RELATIONS[m.group("rel")])
+        elif m.group("mant") is not None:
+            mant, ten = m.group("mant"), int(m.group("ten"))
+            out.append(r"$10^{%d}$" % ten if float(mant) == 1 else r"$%s\times10^{%d}$" % (mant, ten))
+        elif m.group("root") is not None and escape is esc:
+            out.append(r"$\sqrt{\mbox{%s}}$" % notation(m.group("root")))
+        elif m.group("root") is not None:  # mathtext has no \mbox: the root's text as math
+            out.append(r"$\sqrt{%s}$" % m.group("root"))
+        elif m.group("greek") is not None:
+            out.append(r"$%s$" % _symbol(m.group("greek")))
+        else:  # digit x digit
+            out.append(r"$\times$")
         pos = m.end()
-    out.append(esc(text[pos:]))
-    return "".join(out)
+    out.append(escape(text[pos:]))
+    return re.sub(r"(?<!\\)\$\$", "", "".join(out))
+
+
+def mathtext(text):
+    """A figure label's ASCII notation (pi/N_l, 10^-4, <=) as matplotlib mathtext, line by line (a
+    math group ends with its line); its other characters as they are, a '$' escaped."""
+    return "\n".join(notation(line, escape=lambda s: s.replace("$", r"\$")) for line in str(text).split("\n"))
 
 
 def md_text(text):
     """Markdown-ish text of a README or a source header as LaTeX: `code` spans in typewriter
-    (breakable after '_' and '/'), **bold** markers dropped, ASCII notation set by notation();
-    an unpaired backtick (text cut inside a code span) is dropped."""
+    (breakable after '_' and '/'), **bold** markers dropped, *emphasis* in italics, ASCII notation
+    set by notation(); an unpaired backtick (text cut inside a code span) is dropped."""
     text = str(text).replace("**", "")
     parts = text.split("`")
     if len(parts) % 2 == 0:  # an unpaired backtick: the last one opens nothing
         parts = parts[:-2] + [parts[-2] + parts[-1]]
-    return "".join(tt(p) if k % 2 else notation(p) for k, p in enumerate(parts))
+    return "".join(tt(p) if k % 2 else _emphasis(p) for k, p in enumerate(parts))
+
+
+def _emphasis(text):
+    """notation() of text whose *words* between single asterisks are set in italics (an asterisk
+    that pairs with none, as in 'J*', stays)."""
+    pieces = re.split(r"(?<![\w*])\*(?=\S)([^*]+?)(?<=\S)\*(?![\w*])", text)
+    return "".join(r"\emph{%s}" % notation(p) if k % 2 else notation(p) for k, p in enumerate(pieces))
+
+
+def join_lines(lines):
+    """Lines of a Markdown paragraph or a source comment joined into one text, one line break
+    between them (sentence_ends reads a full stop at a line's end as a sentence end), runs of
+    spaces collapsed and list-item markers ('- ', '* ', '+ ' opening a line) dropped, so that the
+    items read as the clauses they are ("...: on square cells ...; on cells dx x dy ...") instead of
+    printing a dash."""
+    return "\n".join(" ".join(re.sub(r"^\s*[-*+]\s+(?=\S)", "", line).split()) for line in lines).strip()
+
+
+# A full stop after one of these is no sentence end.
+_ABBREVIATION = re.compile(r"(?:\bet al|\be\.g|\bi\.e|\bcf|\bvs|\bFigs?|\bEqs?|\bNo|\bapprox|\bresp|\bSec)\.$")
+
+
+def sentence_ends(text):
+    """The indices just after each sentence end of text: a '.', '!' or '?' at a line's end, or
+    followed by a space and a capital, a digit, an opening bracket or quote, or by the end of the
+    text; not inside brackets or a code span, not an ellipsis ('FILE...'), an abbreviation ('et
+    al.', 'e.g.') or an item number ('1. it reached')."""
+    ends, depth, code = [], 0, False
+    for i, c in enumerate(text):
+        if c == "`":
+            code = not code
+        elif code:
+            continue
+        elif c in "([{":
+            depth += 1
+        elif c in ")]}":
+            depth = max(0, depth - 1)
+        elif c in ".!?" and depth == 0:
+            rest = text[i + 1:]
+            if rest and not rest[0].isspace():
+                continue  # 3.4, file.cpp, e.g
+            if c == "." and text[i - 1:i] == ".":
+                continue  # an ellipsis
+            line_end = rest.lstrip(" \t")[:1] == "\n"
+            rest = rest.lstrip()
+            if rest and not line_end and not (rest[0].isupper() or rest[0].isdigit() or rest[0] in "([`\"'"):
+                continue
+            if c == "." and (_ABBREVIATION.search(text[:i + 1]) or re.search(r"(?:^|\s)\d{1,2}\.$", text[:i + 1])
+                             and rest and not rest[0].isupper()):
+                continue
+            ends.append(i + 1)
+    return ends
+
+
+def _one_line(text):
+    return " ".join(text.split())
+
+
+def first_sentence(text):
+    """The first sentence of text (sentence_ends), whole, on one line; the text itself when it has
+    no end."""
+    ends = sentence_ends(text)
+    return _one_line(text[:ends[0]] if ends else text)
+
+
+def sentences_within(text, limit):
+    """text whole (on one line) if it has at most `limit` characters, else its sentences up to the
+    last end at or before `limit` (at least the first sentence): (text, True when cut)."""
+    if len(_one_line(text)) <= limit:
+        return _one_line(text), False
+    ends = [e for e in sentence_ends(text) if len(_one_line(text[:e])) <= limit] or sentence_ends(text)[:1]
+    if not ends or not text[ends[-1]:].strip():
+        return _one_line(text), False
+    return _one_line(text[:ends[-1]]), True

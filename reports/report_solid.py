@@ -19,7 +19,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import matplotlib.ticker  # noqa: E402
 
 import report_figures as figs  # noqa: E402
-from report_latex import esc, num, figure, longtable  # noqa: E402
+from report_latex import esc, md_text, mathtext, num, figure, longtable  # noqa: E402
 
 
 def _rows(path, required):
@@ -166,10 +166,10 @@ def restitution_subsection(out, results, fig_dir):
                    "wheel-wheel and wheel-wall, with no fluid "
                    "(\\texttt{verification/contact/test\\_wheel\\_restitution.cpp}); $e$ measured "
                    "on the (centre-of-mass) velocities before and after.\n")
-        table = [[esc(c), num(r["e_target"], 3), num(r["e_measured"], 6), num(r["rel_error"], 3),
+        table = [[md_text(c), num(r["e_target"], 3), num(r["e_measured"], 6), num(r["rel_error"], 3),
                   num(r["tolerance"], 3), num(r["steps_per_contact"], 4)]
                  for (c, _), r in sorted(last.items(), key=lambda kv: (kv[0][0], _float(kv[0][1])))]
-        out.append(longtable(r"p{6.4cm}rrrrr", ["case", "$e$ target", "$e$ measured",
+        out.append(longtable(r">{\raggedright\arraybackslash}p{6.4cm}rrrrr", ["case", "$e$ target", "$e$ measured",
                                                "rel. error", "tolerance", "steps/contact"], table,
                              caption="Restitution (\\texttt{restitution.csv}); the tests require "
                                      "the relative error within the tolerance."))
@@ -189,7 +189,7 @@ def restitution_subsection(out, results, fig_dir):
             pts = sorted((_float(r["e_target"]), _float(r["e_measured"])) for (c, _), r in last.items() if c == case)
             et, em = [p[0] for p in pts], [p[1] for p in pts]
             m = markers[k % len(markers)]
-            axes[0].plot(et, em, m, ms=5, mfc="none", label=_wrap(case, 34))
+            axes[0].plot(et, em, m, ms=5, mfc="none", label=mathtext(_wrap(case, 34)))
             signed = [(a, 100 * (b - a) / a) for a, b in zip(et, em) if a != 0 and math.isfinite(a)]
             axes[1].plot([a + 0.012 * (k - (len(cases) - 1) / 2) for a, _ in signed],
                          [d for _, d in signed], m, ms=5, mfc="none")
@@ -198,7 +198,9 @@ def restitution_subsection(out, results, fig_dir):
         axes[0].set_aspect("equal")
         axes[0].set_xlabel(r"$e$ target")
         axes[0].set_ylabel(r"$e$ measured")
-        axes[0].legend(loc="upper left", fontsize=7)
+        # above the panels: in the left one it would cover the points near e = 1
+        fig.legend(*axes[0].get_legend_handles_labels(), loc="lower center", bbox_to_anchor=(0.5, 1.0), ncol=2,
+                   fontsize=7, frameon=False)
         axes[1].set_xlabel(r"$e$ target (cases offset slightly)")
         axes[1].set_ylabel(r"$(e_{meas} - e_{target})/e_{target}$ [%]")
         axes[1].legend(loc="best", fontsize=7)
@@ -214,7 +216,7 @@ def restitution_subsection(out, results, fig_dir):
         last = OrderedDict((r["case"], r) for r in elastic)
         out.append(longtable(r"lrrrr", ["case ($e = 1$)", "KE before", "KE after", "rel. change",
                                         "tolerance"],
-                             [[esc(c), num(r["ke_before"], 6), num(r["ke_after"], 6),
+                             [[md_text(c), num(r["ke_before"], 6), num(r["ke_after"], 6),
                                num(r["rel_change"], 3), num(r["tolerance"], 3)] for c, r in last.items()],
                              caption="Elastic collisions of stiff wheels: centre-of-mass kinetic "
                                      "energy before and after (\\texttt{restitution\\_elastic.csv})."))
@@ -245,7 +247,7 @@ def contact_history_subsection(out, results, fig_dir):
                             color=colour, label="e = %.3g" % e)
             axes[0][j].axhline(e, color=colour, ls=":", lw=0.8)
             axes[1][j].plot(t, [100 * _float(r["overlap_over_diameter"]) for r in rs], lw=1, color=colour)
-        axes[0][j].set_title(_wrap(case, 26), fontsize=7)
+        axes[0][j].set_title(mathtext(_wrap(case, 20)), fontsize=9)
         axes[1][j].set_xlabel("time / contact duration")
         for ax in (axes[0][j], axes[1][j]):
             ax.axvline(1.0, color="0.5", lw=0.6, ls="--")

@@ -11,7 +11,7 @@ import re
 import subprocess
 from collections import OrderedDict
 
-from report_latex import esc, longtable, md_text, tt
+from report_latex import TABLE_PT, esc, first_sentence, join_lines, longtable, md_text, tt
 
 # A section number: 2, 1.9, A8, A10a. A citation is 'method.md §N', or one 'method.md' with a list of
 # sections each written with its '§' ('method.md §1.9, §A8', '§4 and §A9'); test_method_citations.sh
@@ -135,37 +135,32 @@ def validation_programs(source):
 
 
 def first_claim(paths):
-    """The first sentence of the first source's leading comment (its stated claim)."""
+    """The first sentence of the first source's leading comment (its stated claim), whole, and that
+    source's path: (claim, path), ("", None) without one. List items of the comment read as clauses
+    (report_latex.join_lines); the sentence ends at a full stop, not at a semicolon, an ellipsis, an
+    abbreviation or inside brackets (report_latex.sentence_ends)."""
     for path in paths:
         try:
             with open(path, encoding="utf-8", errors="replace") as f:
                 lines = f.read().splitlines()
         except OSError:
             continue
+        # C and C++ comments are '//' lines ('#include' is code), scripts' and CMake's '#' lines
+        marker = r"//+" if re.search(r"\.(cpp|hpp|h|cc)$", path) else r"#+"
         text = []
         for line in lines:
             s = line.strip()
             if s.startswith("#!") or (not text and not s):
                 continue
-            m = re.match(r"(//+|#+)\s?(.*)", s)
+            m = re.match(r"(%s)\s?(.*)" % marker, s)
             if not m:
                 break
             text.append(m.group(2))
-        claim = re.sub(r"\s+", " ", " ".join(text)).strip()
-        claim = re.sub(r"^Claims?(,? labels? \w+)?( \([^)]*\))?:\s*(- )?", "", claim)
+        claim = join_lines(text)
+        claim = re.sub(r"^Claims?(,? labels? \w+)?( \([^)]*\))?:\s*", "", claim)
         if claim:
-            # the first full stop or semicolon after a word, not after an item number ("1.")
-            sentence = re.split(r"(?<=[^0-9\s][.;])\s", claim, 1)[0]
-            return clip_words(sentence, 400)
-    return ""
-
-
-def clip_words(text, limit):
-    """text in full up to `limit` characters, else cut after the last whole word before it and
-    ended by an ellipsis (never a word cut in two)."""
-    if len(text) <= limit:
-        return text
-    return text[:limit].rsplit(" ", 1)[0].rstrip(" ,;:") + " ..."
+            return first_sentence(claim), path
+    return "", None
 
 
 def cited_sections(paths):
@@ -220,13 +215,13 @@ def traceability_section(out, source, tests, ctest_results):
             continue
         passed = sum(1 for _, v in cited if v == "pass")
         failed = sum(1 for _, v in cited if v == "FAIL")
-        names = ", ".join(tt(t) for t, _ in sorted(set(cited))[:6]) + (" (+%d)" % (len(set(cited)) - 6)
-                                                                       if len(set(cited)) > 6 else "")
-        # the title without its parenthesis (which may hold math that a cut would break)
+        names = ", ".join(tt(t) for t, _ in sorted(set(cited)))
+        # the title whole, without its parenthesis (method.md's LaTeX math or a key, which
+        # docs/method.md gives)
         short = re.sub(r"\s*\(.*$", "", title) or title
-        matrix.append(["M%s" % esc(n), md_text(clip_words(short, 60)), names, "%d / %d%s" % (passed, len(set(cited)),
+        matrix.append(["M%s" % esc(n), md_text(short), names, "%d / %d%s" % (passed, len(set(cited)),
                                                                              ", %d FAIL" % failed if failed else "")])
-    out.append(r"{\fontsize{7}{8}\selectfont" + "\n" +
+    out.append(r"{\fontsize{%g}{%g}\selectfont" % TABLE_PT + "\n" +
                longtable(r"l>{\raggedright\arraybackslash}p{4.2cm}>{\raggedright\arraybackslash}p{8.4cm}r",
                          ["req.", "method section", "tests citing it", "pass / tests"], matrix, size=None,
                          caption="Method sections of \\texttt{docs/method.md} and the tests that cite them.") + "}")
@@ -237,15 +232,29 @@ def traceability_section(out, source, tests, ctest_results):
         parts = []
         if descriptive:
             parts.append("descriptive (marked in \\texttt{docs/method.md}): " +
-                         "; ".join("M%s (%s)" % (esc(n), md_text(clip_words(why, 160))) for n, why in descriptive.items()))
+                         "; ".join("M%s (%s)" % (esc(n), md_text(why)) for n, why in descriptive.items()))
         if groups:
             parts.append("headings that group their subsections: " + ", ".join("M%s" % esc(n) for n in groups))
         out.append("\\noindent\\emph{Sections that state no requirement} (%d of %d sections): %s.\n" %
                    (len(descriptive) + len(groups), len(sections), "; ".join(parts)))
-    table = [[tt(name), esc(", ".join(labels)), md_text(claim) or "--", verdict_text(v)] for name, labels, claim, v in rows]
+    # The test's name and, under it, the source whose header states the claim (where the rest of
+    # that header is); the claim is the header's first sentence, whole. A long claim that an
+    # earlier row printed from the same source (the runs and checks of one case share their
+    # program) names that row's test instead of printing it again.
+    table, first_row = [], {}
+    for name, labels, (claim, path), v in rows:
+        if len(claim) > 150 and (claim, path) in first_row:
+            text = r"\emph{the claim of} %s \emph{(above; the same source)}" % tt(first_row[(claim, path)])
+        else:
+            first_row.setdefault((claim, path), name)
+            text = md_text(claim) or "--"
+        table.append([tt(name) + (r"\newline {\color{darkgray}%s}" % tt(os.path.relpath(path, source)) if path else ""),
+                      esc(", ".join(labels)), text, verdict_text(v)])
     out.append(r"\subsection*{Every test with its stated claim}")
-    out.append(r"{\fontsize{7}{8}\selectfont" + "\n" +
-               longtable(r">{\raggedright\arraybackslash}p{4.2cm}l>{\raggedright\arraybackslash}p{9.0cm}l",
-                         ["test", "labels", "claim (the first sentence of its source's header)", "verdict"], table,
+    out.append(r"{\fontsize{%g}{%g}\selectfont" % TABLE_PT + "\n" +
+               longtable(r">{\raggedright\arraybackslash}p{4.4cm}l>{\raggedright\arraybackslash}p{8.8cm}l",
+                         ["test (grey: the source of its claim)", "labels",
+                          "claim (the first sentence of its source's header, whole)", "verdict"], table,
                          size=None, caption="Every test the build defines with its stated claim and its verdict "
-                                            "in this build.") + "}")
+                                            "in this build; the claim's source (grey, under the test) holds the "
+                                            "rest of the header.") + "}")

@@ -11,13 +11,16 @@ rerun row is not; a DFG 2D-2 max c_D of +12.34 % filed as info by its check is a
 page-1 row (its headline, though a max c_L of -60 % misses by more), in the page-1 list of misses and in Known limitations; a time study's order below its
 asserted band is FAIL against its formal order; the title block gives the outputs' commit with its
 dirty flag and Basilisk's version; a snapshot's body rims are read as closed rims; README excerpts
-are labelled with their path and end at a sentence or with an ellipsis; no figure text prints below
-7 pt; no control character in the source and a caption on every table, page 1's counts table
-unbroken; a control-volume against immersed-boundary c_D line marked O; the summary plot's band
-drawn as the band, not out to the point; README and header notation (code spans, 32^2, c_D, rho_s)
-set as LaTeX, the kernel formula one math group, nan errors '--', long claims cut at a word; the
-run-time table and the verification count place test_end_of_run_forces and settling_disk_rigid_*
-right; and a results.csv case without a README source mark stops the build with an error naming it.
+are labelled with their path and end at a sentence, with no ellipsis; no figure text (scripts
+included) prints below 7 pt, and the LaTeX source sets no size below 7 pt (no \tiny, sub- and
+superscripts at 7 pt by \DeclareMathSizes); no control character in the source and a caption on
+every table, page 1's counts table unbroken; a control-volume against immersed-boundary c_D line
+marked O; the summary plot's band drawn as the band, not out to the point; README and header
+notation (code spans, 32^2, c_D, rho_s, sum_l, pi, <=, 1e-4, list items) set as LaTeX, the kernel
+formula one math group, nan errors '--', a claim the whole first sentence of its header (not cut
+at a semicolon, an ellipsis or inside brackets); the run-time table and the verification count
+place test_end_of_run_forces and settling_disk_rigid_* right; and a results.csv case without a
+README source mark stops the build with an error naming it.
 Stage `pdf` (skipped without LaTeX): the whole report compiles to a PDF whose text holds the same
 figures, with no overfull line in LaTeX's log.
 usage: test_build_report.py tex|pdf WORK_DIR     exit 0 pass, 1 fail, 77 skipped (pdf stage, no LaTeX)"""
@@ -292,14 +295,21 @@ if stage == "tex":
     if "time step $\\Delta t$" not in tex:
         fail("the time study's figure caption does not name the time step")
     # README excerpts: labelled as the README's text with its path (their figures are not this
-    # run's), and each ends at a sentence or with an ellipsis after a whole word.
+    # run's), each whole or cut at a sentence end, never with an ellipsis.
     excerpts = re.findall(r"\\textbf\{The case README's text\} \(\\texttt\{validation/([^}]*)/README\.md\}.*?``(.*?)''"
                           r"\\end\{quote\}", tex, re.S)
     if not any(c == "lid\\_driven\\_cavity\\_re100" for c, _ in excerpts):
         fail("the README excerpt of lid_driven_cavity_re100 is not labelled as the README's text with its path")
     for c, text in excerpts:
-        if not re.search(r"([.!?)]|\w \.\.\.)\}?$", text.strip()):
-            fail("the README excerpt of %s ends mid-sentence without an ellipsis: ...%r" % (c, text[-60:]))
+        if not re.search(r"[.!?)]\}?$", text.strip()) or text.strip().endswith("..."):
+            fail("the README excerpt of %s does not end at a sentence end: ...%r" % (c, text[-60:]))
+    # No text smaller than 7 pt in the LaTeX source: no \tiny, no \fontsize below 7, and math
+    # scripts held at 7 pt in the small sizes the tables use.
+    sizes = [float(v) for v in re.findall(r"\\fontsize\{([0-9.]+)\}", tex)]
+    if "\\tiny" in tex or any(v < 7 for v in sizes) or "\\DeclareMathSizes{7.5}{7.5}{7}{7}" not in tex \
+            or "\\DeclareMathSizes{8}{8}{7}{7}" not in tex:
+        fail("the LaTeX source sets text below 7 pt (\\tiny, a \\fontsize below 7: %r) or leaves math scripts "
+             "at LaTeX's 5-6 pt" % sizes)
     # The DFG slip panel: the caption says the face velocities' slip is the constrained one and the
     # cell velocities' slip is the momentum-interpolated one, not held to the tolerance.
     if "face velocities' slip (\\texttt{face\\_slip\\_max})" not in tex or "momentum interpolation" not in tex:
@@ -382,7 +392,8 @@ if stage == "tex":
              "bounds [-0.31, +0.31] %%" % (lo, hi))
     # README and header text set as LaTeX: code spans in typewriter, ASCII exponents and subscripts
     # as math; the kernel table's formula in one math group (its '-' a minus inside it, no break);
-    # a range claim's nan error shown as '--'; long claims cut at a word with an ellipsis.
+    # a range claim's nan error shown as '--'; ASCII notation (sums, Greek names, relations, e-notation)
+    # as math; a claim the whole first sentence of its header.
     import report_latex  # noqa: E402
     import report_bench  # noqa: E402
     import report_trace  # noqa: E402
@@ -394,9 +405,21 @@ if stage == "tex":
     formula = report_bench._formula("K = 59/60 - sqrt(29)/20")
     if formula != r"$K = 59/60 - \sqrt {29}/20$" or report_bench._max_error("nan") != "--":
         fail("the kernel table's formula %r is not one math group, or a nan error is not '--'" % formula)
-    clipped = report_trace.clip_words("alpha beta gamma delta", 14)
-    if clipped != "alpha beta ...":
-        fail("a long claim is cut as %r, not at a word with an ellipsis" % clipped)
+    got = report_latex.md_text("sum_l dV_l F_l = 2 pi/N_l, 10 <= t, 1e-4, ~1.2, the delta kernels")
+    want = (r"$\sum_{l}$ $dV_{l}$ $F_{l}$ = 2 $\pi$/$N_{l}$, 10 $\leq$ t, $10^{-4}$, $\approx$1.2, "
+            r"the delta kernels")
+    if got != want:
+        fail("ASCII notation set as %r, not %r" % (got, want))
+    header = os.path.join(work, "claim_header.cpp")
+    with open(header, "w", encoding="utf-8") as f:
+        f.write("// A claim (Celik et al. 2008): `ibms run SCENE --set ...` accepts it; the list:\n"
+                "//  - on square cells the value (round-off tolerance;\n//    see below);\n"
+                "//  - elsewhere zero.\n// usage: none\n#include <cmath>\n")
+    claim, source = report_trace.first_claim([header])
+    if claim != ("A claim (Celik et al. 2008): `ibms run SCENE --set ...` accepts it; the list: on square "
+                 "cells the value (round-off tolerance; see below); elsewhere zero.") or source != header:
+        fail("a header's first sentence is read as %r, not whole (list items as clauses, no cut at a "
+             "semicolon, an ellipsis, an abbreviation or inside brackets)" % claim)
     # Traceability on a tiny source tree: a list of citations with an appendix section (sections
     # 1.1 and A8 after one 'method.md', each with its '§') traces the test to both sections; a
     # section marked Descriptive under its heading and a heading that only groups its subsections
