@@ -166,13 +166,12 @@ struct CouplingSettings {
 const CouplingSettings uhlmann_coupling{
     "uhlmann", {"ibm.coupling=\"uhlmann\"", "ibm.constrained_velocity=\"cells\"", "ibm.forcing_passes=3",
                 "ibm.marker_retraction=0.25", "run.max_viscous_number=0.2"}};
-// no_slip: the forces as the Lagrange multipliers of no-slip on the face velocities, as
-// validation/dfg_cylinder_2d2/scene.toml ships it: slip tolerance 1e-4, no retraction, no cap on
-// nu dt / h^2, one forcing pass for the first step's guess (the 2D-1 scene ships it with 0.25 h
-// retraction; this bench keeps one set of keys for both cases).
+// no_slip: the forces as the Lagrange multipliers of no-slip on the face velocities, as both DFG
+// scenes ship it: slip tolerance 1e-4, markers retracted by 0.3 h (the face constraint's effective
+// radius, docs/method.md §3.7), no cap on nu dt / h^2, one forcing pass for the first step's guess.
 const CouplingSettings no_slip_coupling{
     "no_slip", {"ibm.coupling=\"no_slip\"", "ibm.constrained_velocity=\"faces\"", "ibm.slip_tolerance=1e-4",
-                "ibm.forcing_passes=1", "ibm.marker_retraction=0", "run.max_viscous_number=0"}};
+                "ibm.forcing_passes=1", "ibm.marker_retraction=0.3", "run.max_viscous_number=0"}};
 
 // The DFG channel at D/h = n: 22 n x round(4.1 n) cells, round(pi n) markers (rim spacing ~h), as
 // the cases' CMakeLists.txt set their grids.

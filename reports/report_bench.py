@@ -279,13 +279,11 @@ def body_work_precision(out, build, fig_dir, source, cases):
                "and \\texttt{\\_2d2}, each scene's grid refined as its CMakeLists does) under the papers' direct forcing "
                "%s (\\texttt{uhlmann}: 3 passes, markers retracted by $0.25h$, $\\nu\\Delta t/h^2 \\le 0.2$, as the 2D-1 "
                "case calibrated it) and under the no-slip coupling on the face velocities (\\texttt{no\\_slip}: slip tolerance "
-               "$10^{-4}$, no retraction, as the 2D-2 scene ships it; the 2D-1 scene ships it with the markers retracted "
-               "by $0.25h$, its README; docs/method.md \\S3.7). 2D-1 runs to the steady "
+               "$10^{-4}$, markers retracted by $0.3h$, as both scenes ship it; docs/method.md \\S3.7). 2D-1 runs to the steady "
                "criterion under \\texttt{uhlmann} and to $t = 10$ under \\texttt{no\\_slip}, 2D-2 to $t = 12$; the no-slip "
                "coupling is the end-of-step constraint of Taira \\& Colonius %s. These are not the validation runs: "
-               "2D-1's \\texttt{no\\_slip} errors here are at $D/h = 10$ and 20 \\emph{without} retraction, "
-               "where the 2D-1 case's lines (\\S\\ref{sec:checks}) are its shipped scene's, with the markers retracted by "
-               "$0.25h$ (so its $c_D$ at $D/h = 20$ differs from the one here); and the figures the case READMEs "
+               "the bench runs its own grids ($D/h = 10$ and 20 here) with the case scenes' \\texttt{no\\_slip} settings, "
+               "while the cases' lines (\\S\\ref{sec:checks}) come from the validation runs; and the figures the case READMEs "
                "state (quoted in Known limitations, e.g.\\ the excess of max $c_D$ under the papers' coupling) "
                "come from the READMEs' own runs and settings, not from these.\n" % (report_cases.cite("uhlmann2005"),
                                                                                 report_cases.cite("taira2007")))

@@ -464,7 +464,7 @@ if stage == "tex":
     if "Consistency check against ibms's own runs, not validation" not in row:
         fail("swelling_sedimentation (mark own) is not called a consistency check in its page-1 row: %r" % row[:200])
     if "These are not the validation runs" not in tex:
-        fail("the DFG work-precision text does not say its runs (no retraction) are not the validation runs")
+        fail("the DFG work-precision text does not say its runs are not the validation runs")
     if "Known limitations" not in tex or "momentum interpolation" not in tex:
         fail("the Known limitations section does not list the miss with its cause")
     # A case without a source mark (no README with a Compared-with line) stops the build.
