@@ -99,7 +99,7 @@ struct WallsSpec {
 struct IbmSpec {
   using Kernel = KernelKind;  // core/options.hpp
   enum class ForcingStage { explicit_estimate, implicit_prediction };
-  enum class InnerFluidInertia { kempe, none };
+  enum class InnerFluidInertia { kempe, none, kempe_by_mass };
   enum class Coupling { uhlmann, no_slip };
   enum class ConstrainedVelocity { cells, faces };
   enum class RigidResponse { implicit, virtual_mass };
@@ -109,7 +109,9 @@ struct IbmSpec {
   // u^n + dt(-N + nu L u^n - G p^n), the force then enters the Crank-Nicolson solve) or
   // "implicit_prediction" (the Crank-Nicolson prediction, force added after it).
   ForcingStage forcing_stage = ForcingStage::explicit_estimate;
-  // kempe (variant K) | none (variant A, the papers' literal form)
+  // kempe (variant K, each fan triangle's force a third to each of its vertices) | none (variant A,
+  // the papers' literal form) | kempe_by_mass (variant K, the body's inner-fluid force and torque
+  // laid on its points as the load of a rigid motion of their masses; docs/method.md §1.7)
   InnerFluidInertia inner_fluid_inertia = InnerFluidInertia::kempe;
   bool sub_markers = false;          // extra IB markers when marker spacing exceeds the cell size
   // Markers moved towards the body's centre by this fraction of h (Breugem 2012 "retraction"): the

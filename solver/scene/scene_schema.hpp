@@ -91,7 +91,8 @@ IBMS_OPTION_NAMES(FluidSpec::WallClosure, {FluidSpec::WallClosure::linear, "line
 IBMS_OPTION_NAMES(IbmSpec::ForcingStage, {IbmSpec::ForcingStage::explicit_estimate, "explicit_estimate"},
                    {IbmSpec::ForcingStage::implicit_prediction, "implicit_prediction"});
 IBMS_OPTION_NAMES(IbmSpec::InnerFluidInertia, {IbmSpec::InnerFluidInertia::kempe, "kempe"},
-                   {IbmSpec::InnerFluidInertia::none, "none"});
+                   {IbmSpec::InnerFluidInertia::none, "none"},
+                   {IbmSpec::InnerFluidInertia::kempe_by_mass, "kempe_by_mass"});
 IBMS_OPTION_NAMES(IbmSpec::Coupling, {IbmSpec::Coupling::uhlmann, "uhlmann"},
                    {IbmSpec::Coupling::no_slip, "no_slip"});
 IBMS_OPTION_NAMES(IbmSpec::ConstrainedVelocity, {IbmSpec::ConstrainedVelocity::cells, "cells"},

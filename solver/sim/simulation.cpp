@@ -235,9 +235,17 @@ std::vector<std::string> Simulation::stage_names() const {
     stages.push_back(corrections);
   if (has_bodies()) {
     stages.push_back("fluid reaction on the rim points");
-    stages.push_back(scene_.ibm.inner_fluid_inertia == IbmSpec::InnerFluidInertia::kempe
-                         ? "inner-fluid inertia (variant K: exact triangle-cell overlaps, Reynolds-transport form)"
-                         : "inner-fluid inertia off (variant A)");
+    switch (scene_.ibm.inner_fluid_inertia) {
+      case IbmSpec::InnerFluidInertia::kempe:
+        stages.push_back("inner-fluid inertia (variant K: exact triangle-cell overlaps, Reynolds-transport form, a third "
+                         "of each triangle's force to each of its vertices)");
+        break;
+      case IbmSpec::InnerFluidInertia::kempe_by_mass:
+        stages.push_back("inner-fluid inertia (variant K: exact triangle-cell overlaps, Reynolds-transport form, the "
+                         "body's force and torque laid on its points as a rigid motion of their masses)");
+        break;
+      case IbmSpec::InnerFluidInertia::none: stages.push_back("inner-fluid inertia off (variant A)"); break;
+    }
     std::string kinds;
     if (scene_.has_kind(BodySpec::Kind::mass_spring))
       kinds += "mass-spring: symplectic Euler sub-steps, or implicit Euler for stiff springs (springs, buoyant gravity, "

@@ -127,6 +127,44 @@ void kempe_inner_fluid_inertia(const Grid& grid, double fluid_density, const Flu
   });
 }
 
+void kempe_inner_fluid_inertia_by_mass(const Grid& grid, double fluid_density, const FluidState& fluid,
+                                       const std::vector<MassSpringBody>& bodies, double dt,
+                                       std::vector<BodyCoupling>& coupling) {
+  kempe_inner_fluid_inertia(grid, fluid_density, fluid, bodies, dt, coupling);
+  for_each_body(bodies.size(), [&](std::size_t b) {
+    const MassSpringBody& body = bodies[b];
+    if (whole_polygon(body)) return;  // all on the centre point already: its points move together
+    BodyCoupling& c = coupling[b];
+    // The body's force F = sum of the triangles' and its torque about X_c^n (rho_f dI/dt, rho_f dL/dt).
+    Vec2 force{0.0, 0.0}, centre_of_mass{0.0, 0.0};
+    double mass = 0.0;
+    for (int p = 0; p < body.n_points(); ++p) {
+      for (int d = 0; d < 2; ++d) {
+        force[d] += c.inner_fluid_force[p][d];
+        centre_of_mass[d] += body.mass[p] * body.position[p][d];
+      }
+      mass += body.mass[p];
+    }
+    for (double& x : centre_of_mass) x /= mass;
+    // The load of a rigid motion: f_p = m_p (A + alpha z x r_p), r_p = x_p - x_G, with
+    // M A = F and J_G alpha = T_G, the torque about the centre of mass x_G.
+    const Vec2& x_c = body.position[body.centre_index()];
+    const double torque = c.inner_fluid_torque + (x_c[0] - centre_of_mass[0]) * force[1] -
+                          (x_c[1] - centre_of_mass[1]) * force[0];
+    double inertia = 0.0;
+    for (int p = 0; p < body.n_points(); ++p) {
+      const double rx = body.position[p][0] - centre_of_mass[0], ry = body.position[p][1] - centre_of_mass[1];
+      inertia += body.mass[p] * (rx * rx + ry * ry);
+    }
+    const double alpha = inertia > 0.0 ? torque / inertia : 0.0;
+    for (int p = 0; p < body.n_points(); ++p) {
+      const double rx = body.position[p][0] - centre_of_mass[0], ry = body.position[p][1] - centre_of_mass[1];
+      c.inner_fluid_force[p][0] = body.mass[p] * (force[0] / mass - alpha * ry);
+      c.inner_fluid_force[p][1] = body.mass[p] * (force[1] / mass + alpha * rx);
+    }
+  });
+}
+
 void no_inner_fluid_inertia(const Grid&, double, const FluidState&, const std::vector<MassSpringBody>&, double,
                             std::vector<BodyCoupling>& coupling) {
   for (BodyCoupling& c : coupling) {
@@ -139,6 +177,7 @@ InnerFluidInertia inner_fluid_inertia_of(IbmSpec::InnerFluidInertia variant) {
   switch (variant) {
     case IbmSpec::InnerFluidInertia::kempe: return &kempe_inner_fluid_inertia;
     case IbmSpec::InnerFluidInertia::none: return &no_inner_fluid_inertia;
+    case IbmSpec::InnerFluidInertia::kempe_by_mass: return &kempe_inner_fluid_inertia_by_mass;
   }
   throw std::invalid_argument("unknown ibm.inner_fluid_inertia");
 }
