@@ -4,15 +4,17 @@ particles (README.md). Diameters D0 in [0.10, 0.15] and spring stiffnesses k_s i
 are drawn from Python's Mersenne Twister with seed 2023 (random.Random(SEED).uniform, stable
 across Python versions); the centres are a 4 x 4 lattice at x, y in {0.17, 0.39, 0.61, 0.83}.
 The scenes are committed; `ctest -R make_scenes` checks they are what this script writes.
-With --256 it writes instead scene_256_nonswelling.toml and scene_256_swelling.toml (an experiment,
-not a shipped case: both runs stop at t = 2.2-2.4, README.md "256 particles"), the same cavity with 256
-particles: a 16 x 16 lattice (spacing 1/16, the first centre 1/32 from the walls), every length of a
+With --256 it writes instead scene_256_nonswelling.toml and scene_256_swelling.toml (committed too,
+the `slow` runs of README.md "256 particles"), the same cavity with 256 particles: a 16 x 16 lattice (spacing 1/16, the first centre 1/32 from the walls), every length of a
 particle a quarter of the 16-particle case's (D0 in [0.025, 0.0375] with the same draws' law, the
 swelling rate a quarter, so that each particle reaches 1.5 D0 at the same time), so that the area
-fraction (0.196) is the same; the springs four times stiffer (k_s in [2.24, 3.52]: with the papers'
-k_s the particle that the flow carries into the top-left corner, under the moving lid, deforms by
-0.63 and its centre point leaves the box at t = 1.34); the grid is four times finer (400 x 400, D/h
-as in the 16-particle case) and the step bound a quarter (README.md, "256 particles").
+fraction (0.196) is the same; the springs four times stiffer (k_s in [2.24, 3.52]: the elastic
+capillary number mu U / (k_s D0) of the 16-particle case, the lid's viscous stress on a particle
+that reaches its corner growing as 1/D); the grid is four times finer (400 x 400, D/h as in the
+16-particle case) and the step bound a quarter; the inner fluid's force laid on the points as a
+rigid motion of their masses (ibm.inner_fluid_inertia = "kempe_by_mass": with a third of each fan
+triangle's on the centre point the hub mode of the wheels riding along the lids grows until a body
+guard stops the run; README.md, "256 particles").
 usage: make_scenes.py [--256] [OUTPUT_DIR]   (default: this folder)"""
 import os
 import random
@@ -69,6 +71,12 @@ density = 1.5
 spring_stiffness = {k:.6f}
 restitution_coefficient = 1.0
 """
+
+# The 256-particle scenes' inner-fluid load (README.md, "256 particles"): with a third of each fan
+# triangle's force on the centre point, the hub mode of the small wheels riding along the lids grows
+# until a body guard stops the run.
+INNER_256 = ('inner_fluid_inertia = "kempe_by_mass"  # the inner fluid\'s force and torque as a rigid-motion load '
+             '(docs/method.md \u00a71.7)\n')
 
 BODY_256 = BODY.replace("centre = [{x:.2f}, {y:.2f}]", "centre = [{x:.5f}, {y:.5f}]")
 
@@ -135,7 +143,9 @@ def scene(name):
     if len(bodies) != 16:  # the scaled-up cavity: what differs from the paper's (module docstring)
         first = text.index("\n") + 1
         text = (text[:first] + "# Scaled up (not in the paper): every length of a particle a quarter of the 16-particle\n"
-                "# case's on a grid four times finer, the springs four times stiffer (make_scenes.py).\n" + text[first:])
+                "# case's on a grid four times finer, the springs four times stiffer, the inner fluid's\n"
+                "# force laid on the points as a rigid motion of their masses (make_scenes.py).\n" + text[first:])
+        text = text.replace('inner_fluid_inertia = "kempe"\n', INNER_256)
     for x, y, d, k in bodies:
         if len(bodies) == 16:
             text += BODY.format(x=x, y=y, d=d, k=k)

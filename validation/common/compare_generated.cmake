@@ -1,9 +1,9 @@
 # Runs a case's scene generator into WORK_DIR and fails unless every file in FILES is identical
 # to the committed one in CASE_DIR (the committed scenes are exactly what the script writes).
-# usage: cmake -DPYTHON=... -DSCRIPT=... -DCASE_DIR=... -DWORK_DIR=... -DFILES="a;b" -P compare_generated.cmake
+# usage: cmake -DPYTHON=... -DSCRIPT=... [-DSCRIPT_ARGS=...] -DCASE_DIR=... -DWORK_DIR=... -DFILES="a;b" -P compare_generated.cmake
 file(REMOVE_RECURSE ${WORK_DIR})
 file(MAKE_DIRECTORY ${WORK_DIR})
-execute_process(COMMAND ${PYTHON} ${SCRIPT} ${WORK_DIR} RESULT_VARIABLE rc ERROR_VARIABLE err)
+execute_process(COMMAND ${PYTHON} ${SCRIPT} ${SCRIPT_ARGS} ${WORK_DIR} RESULT_VARIABLE rc ERROR_VARIABLE err)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "${SCRIPT} failed (${rc}): ${err}")
 endif()
