@@ -109,10 +109,11 @@ struct IbmSpec {
   // u^n + dt(-N + nu L u^n - G p^n), the force then enters the Crank-Nicolson solve) or
   // "implicit_prediction" (the Crank-Nicolson prediction, force added after it).
   ForcingStage forcing_stage = ForcingStage::explicit_estimate;
-  // kempe (variant K, each fan triangle's force a third to each of its vertices) | none (variant A,
-  // the papers' literal form) | kempe_by_mass (variant K, the body's inner-fluid force and torque
-  // laid on its points as the load of a rigid motion of their masses; docs/method.md §1.7)
-  InnerFluidInertia inner_fluid_inertia = InnerFluidInertia::kempe;
+  // kempe_by_mass (variant K, the body's inner-fluid force and torque laid on its points as the
+  // load of a rigid motion of their masses) | kempe (variant K, each fan triangle's force a third to
+  // each of its vertices) | none (variant A, the papers' literal form); docs/method.md §1.7. For a
+  // rigid or prescribed body the two kempe variants are one computation.
+  InnerFluidInertia inner_fluid_inertia = InnerFluidInertia::kempe_by_mass;
   bool sub_markers = false;          // extra IB markers when marker spacing exceeds the cell size
   // Markers moved towards the body's centre by this fraction of h (Breugem 2012 "retraction"): the
   // regularised kernel makes the forced body look larger than its rim by a fraction of a cell
@@ -153,7 +154,7 @@ struct IbmSpec {
   //  "implicit"      in the marker system, with its mass less the inner fluid's: the constraint
   //                  holds the rim at the velocity the body reaches at the end of the step;
   //  "virtual_mass"  one step late, with virtual_mass_coefficient (Schwarz, Kempe & Froehlich 2015).
-  // A body no heavier than the fluid (with inner_fluid_inertia = "kempe") takes the virtual mass.
+  // A body no heavier than the fluid (with an inner_fluid_inertia other than "none") takes the virtual mass.
   RigidResponse rigid_response = RigidResponse::implicit;
 };
 

@@ -131,8 +131,8 @@ Simulation::Simulation(const Scene& scene)
         scene.bodies[b].reference_speed > 0.0 ? scene.bodies[b].reference_speed : instability_.driving_speed;
   coupling_ = make_coupling(scene_, grid_, kernel_, bodies_, markers_, rigid_);
   if (scene.contact.enabled()) wire_contacts();
-  // Variant K: I_T at t = 0 (region X^0, velocity u^0), the first "previous" value.
-  if (inner_fluid_inertia_ == &kempe_inner_fluid_inertia)
+  // Variant K (both loads): I_T at t = 0 (region X^0, velocity u^0), the first "previous" value.
+  if (inner_fluid_inertia_ != &no_inner_fluid_inertia)
     sample_inner_fluid_momentum(grid_, fluid_, bodies_, markers_);
 }
 

@@ -40,7 +40,7 @@ kernel = "roma3"
 coupling = "no_slip"
 constrained_velocity = "faces"
 forcing_passes = 1          # the first step's direct forcing
-inner_fluid_inertia = "kempe"
+inner_fluid_inertia = "kempe_by_mass"
 """
 
 BODY = """

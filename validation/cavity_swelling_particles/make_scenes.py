@@ -11,10 +11,7 @@ swelling rate a quarter, so that each particle reaches 1.5 D0 at the same time),
 fraction (0.196) is the same; the springs four times stiffer (k_s in [2.24, 3.52]: the elastic
 capillary number mu U / (k_s D0) of the 16-particle case, the lid's viscous stress on a particle
 that reaches its corner growing as 1/D); the grid is four times finer (400 x 400, D/h as in the
-16-particle case) and the step bound a quarter; the inner fluid's force laid on the points as a
-rigid motion of their masses (ibm.inner_fluid_inertia = "kempe_by_mass": with a third of each fan
-triangle's on the centre point the hub mode of the wheels riding along the lids grows until a body
-guard stops the run; README.md, "256 particles").
+16-particle case) and the step bound a quarter (README.md, "256 particles").
 usage: make_scenes.py [--256] [OUTPUT_DIR]   (default: this folder)"""
 import os
 import random
@@ -59,7 +56,7 @@ kernel = "roma3"
 coupling = "no_slip"
 constrained_velocity = "faces"
 forcing_passes = 1          # the first step's direct forcing
-inner_fluid_inertia = "kempe"
+inner_fluid_inertia = "kempe_by_mass"  # the inner fluid's force and torque as a rigid-motion load (docs/method.md \u00a71.7)
 """
 
 BODY = """
@@ -71,12 +68,6 @@ density = 1.5
 spring_stiffness = {k:.6f}
 restitution_coefficient = 1.0
 """
-
-# The 256-particle scenes' inner-fluid load (README.md, "256 particles"): with a third of each fan
-# triangle's force on the centre point, the hub mode of the small wheels riding along the lids grows
-# until a body guard stops the run.
-INNER_256 = ('inner_fluid_inertia = "kempe_by_mass"  # the inner fluid\'s force and torque as a rigid-motion load '
-             '(docs/method.md \u00a71.7)\n')
 
 BODY_256 = BODY.replace("centre = [{x:.2f}, {y:.2f}]", "centre = [{x:.5f}, {y:.5f}]")
 
@@ -143,9 +134,7 @@ def scene(name):
     if len(bodies) != 16:  # the scaled-up cavity: what differs from the paper's (module docstring)
         first = text.index("\n") + 1
         text = (text[:first] + "# Scaled up (not in the paper): every length of a particle a quarter of the 16-particle\n"
-                "# case's on a grid four times finer, the springs four times stiffer, the inner fluid's\n"
-                "# force laid on the points as a rigid motion of their masses (make_scenes.py).\n" + text[first:])
-        text = text.replace('inner_fluid_inertia = "kempe"\n', INNER_256)
+                "# case's on a grid four times finer, the springs four times stiffer (make_scenes.py).\n" + text[first:])
     for x, y, d, k in bodies:
         if len(bodies) == 16:
             text += BODY.format(x=x, y=y, d=d, k=k)

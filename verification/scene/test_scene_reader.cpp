@@ -30,7 +30,7 @@ BOOST_AUTO_TEST_CASE(good_scene_is_read_and_defaults_are_filled) {
   BOOST_TEST(scene.walls.bottom.speed == 0.0);
   BOOST_TEST((scene.ibm.kernel == ibms::IbmSpec::Kernel::peskin4));
   BOOST_TEST(scene.ibm.forcing_passes == 1);             // default
-  BOOST_TEST((scene.ibm.inner_fluid_inertia == ibms::IbmSpec::InnerFluidInertia::kempe));  // default
+  BOOST_TEST((scene.ibm.inner_fluid_inertia == ibms::IbmSpec::InnerFluidInertia::kempe_by_mass));  // default
   BOOST_TEST_REQUIRE(scene.bodies.size() == 2u);
   BOOST_TEST(scene.bodies[0].centre[0] == 0.3);
   BOOST_TEST(scene.bodies[0].spring_damping < 0.0);      // default: from restitution

@@ -90,7 +90,7 @@ BOOST_AUTO_TEST_CASE(moving_body_balance_returns_the_reaction) {
   // With the default inner-fluid term (variant K) the body force contains rho dI/dt of the grid
   // fluid inside the rim instead of rho d(A V)/dt: reported, not a claim about the balance.
   const Differences k = run(oscillating_disk, 200, 0.0025);
-  BOOST_TEST_MESSAGE("oscillating disk, inner_fluid_inertia = kempe: RMS |F_ib| " << k.rms_force << ", RMS |F_cv - F_ib| "
+  BOOST_TEST_MESSAGE("oscillating disk, inner-fluid term (variant K): RMS |F_ib| " << k.rms_force << ", RMS |F_cv - F_ib| "
                      << k.rms_difference << ", RMS |F_cv - rho d(A V)/dt - F_ib| " << k.rms_difference_without_av);
 }
 
