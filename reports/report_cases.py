@@ -342,9 +342,9 @@ TARGET_RULES = [
 CAUSES = [
     ("dfg_cylinder_2d2", r"drag_coefficient_max",
      "The shipped scene retracts the markers by $0.3h$, the face constraint's effective radius, as every scene "
-     "under that coupling does: max $c_D$ rises to the bounds from below as the grid is refined ($-2.88$, "
-     "$-2.11$, $-0.88$\\,\\% at $D/h = 20, 30, 40$), the boundary layer, 2 to 4 cells thick there, being "
-     "smeared by the kernel. Under the papers' coupling the slip left at the end of the step and, on the "
+     "under that coupling does: max $c_D$ rises towards the bounds from below as the grid is refined ($-2.88$, "
+     "$-2.11$, $-0.88$, $-0.60$\\,\\% at $D/h = 20, 30, 40, 60$; Richardson value over the finest three "
+     "$-0.57$\\,\\%), the boundary layer, 2 to 4 cells thick on the coarse grids, being smeared by the kernel. Under the papers' coupling the slip left at the end of the step and, on the "
      "collocated grid, the momentum interpolation's flux through the body, proportional to $\\Delta t$, raise "
      "max $c_D$ by 11--12\\,\\% on every grid (README)."),
     ("dfg_cylinder_2d1", r"^drag_coefficient at",
@@ -353,11 +353,11 @@ CAUSES = [
      "$D/h = 20, 30, 40$, inside the bounds); the papers' coupling converges at first order and reaches 1\\,\\% "
      "only from $D/h = 60$ (README)."),
     ("dfg_cylinder_2d2", r"lift_coefficient",
-     "With the markers retracted by the effective radius ($0.3h$) max $c_L$ rises towards the bounds from below "
-     "as the grid is refined ($-10.2$, $-7.3$, $-3.8$\\,\\% at $D/h = 20, 30, 40$): the deficit is made where "
-     "the boundary layer, 2 to 4 cells thick, meets the kernel's 3-cell support. Without the retraction the lift "
-     "sat at $-2.7$\\,\\% on all three grids, that deficit cancelled in part by the larger effective body. "
-     "It also depends on the time step through the momentum interpolation's face term "
+     "With the markers retracted by the effective radius ($0.3h$) max $c_L$ rises from below as the grid is "
+     "refined ($-10.2$, $-7.3$, $-3.8$, $-2.95$\\,\\% at $D/h = 20, 30, 40, 60$), to about 0.97 at CFL 0.5: "
+     "the coarse grids' deficit is made where the boundary layer, 2 to 4 cells thick, meets the kernel's 3-cell "
+     "support (without the retraction it sat at $-2.7$\\,\\% on $D/h = 20$--40, cancelled in part by the larger "
+     "effective body). What the grids leave depends on the time step through the momentum interpolation's face term "
      "$\\Delta t\\,(I-MA)(S_f\\mathbf F-G_fp)$, whose time scale is the step: with it fixed "
      "(\\texttt{fluid.interpolation\\_time}) max $c_L$ stays within 0.0003 from CFL 0.5 to 0.0625 and moves with "
      "that time scale instead (README, docs/method.md \\S2.3)."),
