@@ -139,6 +139,14 @@ ContactStats add_contact_forces(const ContactModel& model, const std::vector<Mas
   // One body has no partner: skip the pair search entirely, walls only.
   if (members.count(bodies.size()) > 1) collect_pair_contacts(model, bodies, members, box, contacts, stats);
   if (model.walls) collect_wall_contacts(model, bodies, members, box, contacts, stats);
+  // Room for twice the contacts of the busiest step so far: a few more contacts in a later step
+  // (another trajectory of the same scene) then do not reallocate the scratch.
+  if (const std::size_t room = 2 * contacts.size() + 16; group_of.capacity() < 2 * contacts.size()) {
+    contacts.reserve(room);
+    groups.reserve(room);
+    group_of.reserve(room);
+    damping_factor.reserve(room);
+  }
 
   if (model.share_damping_among_active_pairs) count_parallel_pairs(contacts, groups, group_of, damping_factor);
   for (std::size_t k = 0; k < contacts.size(); ++k) {
