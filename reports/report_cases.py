@@ -357,10 +357,10 @@ CAUSES = [
      "refined ($-10.2$, $-7.3$, $-3.8$, $-2.95$\\,\\% at $D/h = 20, 30, 40, 60$), to about 0.97 at CFL 0.5: "
      "the coarse grids' deficit is made where the boundary layer, 2 to 4 cells thick, meets the kernel's 3-cell "
      "support (without the retraction it sat at $-2.7$\\,\\% on $D/h = 20$--40, cancelled in part by the larger "
-     "effective body). What the grids leave depends on the time step through the momentum interpolation's face term "
-     "$\\Delta t\\,(I-MA)(S_f\\mathbf F-G_fp)$, whose time scale is the step: with it fixed "
-     "(\\texttt{fluid.interpolation\\_time}) max $c_L$ stays within 0.0003 from CFL 0.5 to 0.0625 and moves with "
-     "that time scale instead (README, docs/method.md \\S2.3)."),
+     "effective body). What holds the converged lift near 0.97 is not established: not the step, since the "
+     "retracted scene's lift at $D/h = 20$ moves by $-0.4$\\,\\% from CFL 0.5 to 0.125, where the unretracted one's "
+     "rose by $+1.4$\\,\\% through the momentum interpolation's face term $\\Delta t\\,(I-MA)(S_f\\mathbf F-G_fp)$, "
+     "whose time scale is the step (README, docs/method.md \\S2.3)."),
     ("dfg_cylinder_2d1", r"lift_coefficient",
      "$c_L$ at Re 20 is a small asymmetry of the flow (about 1\\,\\% of $c_D$) that the smeared interface does "
      "not resolve at these grids (README)."),
