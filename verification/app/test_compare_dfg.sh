@@ -19,6 +19,21 @@ work=$(mktemp -d); trap 'rm -rf "$work"' EXIT
 cd "$work"
 failures=0
 run() { "$ibms" compare "$@" --validation-dir "$validation"; }
+# copy_reference DIR CASE FILE EDIT: the case's reference folder copied to DIR/CASE, then its FILE
+# rewritten by the Python statements EDIT, which change `lines` (the file's lines; `data` holds the
+# indices of the data rows, after the header).
+copy_reference() {
+  mkdir -p "$1/$2"
+  cp -r "$validation/$2/reference" "$1/$2/"
+  /usr/bin/python3 - "$1/$2/reference/$3" "$4" <<'PY'
+import sys
+path, edit = sys.argv[1], sys.argv[2]
+lines = open(path).read().splitlines()
+data = [k for k, l in enumerate(lines) if l and not l.startswith("#")][1:]
+exec(edit)
+open(path, "w").write("\n".join(lines) + "\n")
+PY
+}
 
 # 2D-1: ibms's reference is 5.5843 (+0.09 % from the published value): 5.62 is within 1 % of both.
 printf '# synthetic\nc_d,c_l,delta_p\n5.62,0.0106,0.1175\n' > within.csv
@@ -30,18 +45,10 @@ expect_exit "2D-1 ibms's own reference inside the published interval is gated" 0
   run dfg_cylinder_2d1 "$validation/dfg_cylinder_2d1/reference/ibms_dfg_2d1.csv"
 # A reference outside the published interval (5.6006, the 0.25 h scene's, in a copy of the case
 # folder) is shown, not gated.
-mkdir -p outside/dfg_cylinder_2d1
-cp -r "$validation/dfg_cylinder_2d1/reference" outside/dfg_cylinder_2d1/
-/usr/bin/python3 - outside/dfg_cylinder_2d1/reference/ibms_dfg_2d1.csv <<'PY'
-import sys
-path = sys.argv[1]
-lines = open(path).read().splitlines()
-row = [k for k, l in enumerate(lines) if l and not l.startswith("#")][1]
-cells = lines[row].split(",")
+copy_reference outside dfg_cylinder_2d1 ibms_dfg_2d1.csv '
+cells = lines[data[0]].split(",")
 cells[0] = "5.6006"
-lines[row] = ",".join(cells)
-open(path, "w").write("\n".join(lines) + "\n")
-PY
+lines[data[0]] = ",".join(cells)'
 expect_exit "2D-1 ibms's own reference outside the published interval is not gated" 0 \
   "not gated: ibms's own c_D 5.6006 lies outside the published \[5.57, 5.59\]" \
   "$ibms" compare dfg_cylinder_2d1 within.csv --validation-dir outside
@@ -71,20 +78,12 @@ expect_exit "2D-2 St = 0.3 and max c_D = 3.24 pass against the published values"
   "St / 0.3 \(Schaefer & Turek 1996\) - 1\|.*pass" run dfg_cylinder_2d2 st.csv
 # A reference whose max c_D lies inside the published interval is gated: the shipped one with its
 # drag scaled to a largest value of 3.23, in a copy of the case folder.
-mkdir -p inside/dfg_cylinder_2d2
-cp -r "$validation/dfg_cylinder_2d2/reference" inside/dfg_cylinder_2d2/
-/usr/bin/python3 - inside/dfg_cylinder_2d2/reference/ibms_dfg_2d2_forces.csv <<'PY'
-import sys
-path = sys.argv[1]
-lines = open(path).read().splitlines()
-data = [k for k, l in enumerate(lines) if l and not l.startswith("#")][1:]
+copy_reference inside dfg_cylinder_2d2 ibms_dfg_2d2_forces.csv '
 largest = max(float(lines[k].split(",")[1]) for k in data)
 for k in data:
     cells = lines[k].split(",")
     cells[1] = "%.10g" % (float(cells[1]) * 3.23 / largest)
-    lines[k] = ",".join(cells)
-open(path, "w").write("\n".join(lines) + "\n")
-PY
+    lines[k] = ",".join(cells)'
 "$ibms" compare dfg_cylinder_2d2 st.csv --validation-dir inside > inside.txt 2>&1
 grep -qE "\|max c_D / 3\.23[0-9]* \(ibms reference\) - 1\|.*pass" inside.txt ||
   { echo "FAIL 2D-2 a reference max c_D inside the published interval should be gated (and pass)"; failures=$((failures + 1)); }
