@@ -136,29 +136,24 @@ void kempe_inner_fluid_inertia_by_mass(const Grid& grid, double fluid_density, c
     if (whole_polygon(body)) return;  // all on the centre point already: its points move together
     BodyCoupling& c = coupling[b];
     // The body's force F = sum of the triangles' and its torque about X_c^n (rho_f dI/dt, rho_f dL/dt).
-    Vec2 force{0.0, 0.0}, centre_of_mass{0.0, 0.0};
-    double mass = 0.0;
-    for (int p = 0; p < body.n_points(); ++p) {
-      for (int d = 0; d < 2; ++d) {
-        force[d] += c.inner_fluid_force[p][d];
-        centre_of_mass[d] += body.mass[p] * body.position[p][d];
-      }
-      mass += body.mass[p];
-    }
-    for (double& x : centre_of_mass) x /= mass;
+    Vec2 force{0.0, 0.0};
+    for (int p = 0; p < body.n_points(); ++p)
+      for (int d = 0; d < 2; ++d) force[d] += c.inner_fluid_force[p][d];
+    const double mass = body.total_mass();
+    const std::array<double, 2> x_g = ibms::centre_of_mass(body);
     // The load of a rigid motion: f_p = m_p (A + alpha z x r_p), r_p = x_p - x_G, with
     // M A = F and J_G alpha = T_G, the torque about the centre of mass x_G.
     const Vec2& x_c = body.position[body.centre_index()];
-    const double torque = c.inner_fluid_torque + (x_c[0] - centre_of_mass[0]) * force[1] -
-                          (x_c[1] - centre_of_mass[1]) * force[0];
+    const double torque = c.inner_fluid_torque + (x_c[0] - x_g[0]) * force[1] -
+                          (x_c[1] - x_g[1]) * force[0];
     double inertia = 0.0;
     for (int p = 0; p < body.n_points(); ++p) {
-      const double rx = body.position[p][0] - centre_of_mass[0], ry = body.position[p][1] - centre_of_mass[1];
+      const double rx = body.position[p][0] - x_g[0], ry = body.position[p][1] - x_g[1];
       inertia += body.mass[p] * (rx * rx + ry * ry);
     }
     const double alpha = inertia > 0.0 ? torque / inertia : 0.0;
     for (int p = 0; p < body.n_points(); ++p) {
-      const double rx = body.position[p][0] - centre_of_mass[0], ry = body.position[p][1] - centre_of_mass[1];
+      const double rx = body.position[p][0] - x_g[0], ry = body.position[p][1] - x_g[1];
       c.inner_fluid_force[p][0] = body.mass[p] * (force[0] / mass - alpha * ry);
       c.inner_fluid_force[p][1] = body.mass[p] * (force[1] / mass + alpha * rx);
     }
