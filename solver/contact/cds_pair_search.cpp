@@ -26,7 +26,7 @@ void gather_contact_spheres(const ContactModel& model, const std::vector<MassSpr
   for (std::size_t i = 0; i < members.count(bodies.size()); ++i) {
     const int b = static_cast<int>(members.at(i));
     const double radius = model.cds_radius_of(bodies[b]);
-    for (int k = 0; k < bodies[b].n_surface; ++k) {  // surface points only; the centre has no CDS
+    for (int k = 0; k < model.cds_points(bodies[b]); ++k) {  // surface points (and the centre with centre_point)
       spheres.centre.push_back(bodies[b].position[k]);
       spheres.radius.push_back(radius);
       spheres.body.push_back(b);

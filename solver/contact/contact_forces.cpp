@@ -84,7 +84,7 @@ void collect_wall_contacts(const ContactModel& model, const std::vector<MassSpri
     const int b = static_cast<int>(members.at(i));
     if (bodies[b].kind == BodyKind::prescribed) continue;  // its motion is given, walls cannot push it
     const double radius = model.cds_radius_of(bodies[b]);
-    for_each_point_near_walls(bodies[b].position, bodies[b].n_surface, box, radius, 0.0,
+    for_each_point_near_walls(bodies[b].position, model.cds_points(bodies[b]), box, radius, 0.0,
                               [&](int k, int c, int side, double distance) {
                                 // delta = r_c - d_wall (docs/method.md §1.9); n points out of the box, towards the wall.
                                 ActiveContact contact;

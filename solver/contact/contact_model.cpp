@@ -52,6 +52,7 @@ double lightest_cds_point_mass(const std::vector<MassSpringBody>& bodies, const 
   for (std::size_t i = 0; i < members.count(bodies.size()); ++i) {
     const MassSpringBody& body = bodies[members.at(i)];
     if (body.kind == BodyKind::prescribed) continue;  // infinitely heavy: its partner's mass counts
+    // The surface points: a centre point's CDS (ContactModel::centre_point) is no lighter (mass lumping, §1.3).
     for (int k = 0; k < body.n_surface; ++k) lightest = std::min(lightest, cds_point_mass(body, k));
   }
   return lightest;
@@ -74,7 +75,7 @@ ContactSubstepBounds contact_substep_bounds(const ContactModel& model, const std
     ++n_members;
     if (bodies[b].kind == BodyKind::prescribed) continue;
     heaviest_body = std::max(heaviest_body, bodies[b].total_mass());
-    for (int k = 0; k < bodies[b].n_surface; ++k) heaviest_point = std::max(heaviest_point, cds_point_mass(bodies[b], k));
+    for (int k = 0; k < model.cds_points(bodies[b]); ++k) heaviest_point = std::max(heaviest_point, cds_point_mass(bodies[b], k));
   }
   if (!std::isfinite(lightest_point)) return bounds;  // prescribed only
   // Two equal lightest points in a pair have m_eff = m_p / 2; against a wall m_eff = m_p.
@@ -116,7 +117,7 @@ namespace {
 
 struct BoundingCircle {
   std::array<double, 2> centre{0.0, 0.0};  // [length]
-  double radius = 0.0;                     // holds every rim point and its CDS [length]
+  double radius = 0.0;                     // holds every CDS point and its CDS [length]
   double speed = 0.0;                      // largest point speed [length/time]
 };
 
@@ -126,7 +127,7 @@ BoundingCircle bounding_circle(const ContactModel& model, const MassSpringBody& 
     for (int d = 0; d < 2; ++d) circle.centre[d] += body.position[k][d] / body.n_surface;
   for (int p = 0; p < body.n_points(); ++p) {
     circle.speed = std::max(circle.speed, std::hypot(body.velocity[p][0], body.velocity[p][1]));
-    if (p < body.n_surface)
+    if (p < model.cds_points(body))
       circle.radius = std::max(circle.radius, std::hypot(body.position[p][0] - circle.centre[0],
                                                          body.position[p][1] - circle.centre[1]));
   }

@@ -33,6 +33,9 @@ struct ContactModel {
   double cds_radius = 0.0;               // absolute CDS radius [length]; 0: use the fraction
   double cds_radius_fraction = 0.0;      // CDS radius / current body diameter [-]
   bool walls = true;                     // CDS-wall contacts on the non-periodic walls
+  // A CDS on each mass-spring body's centre point as well as on its surface points (docs/method.md
+  // §1.9): the centre point of a wheel crushed flat cannot then pass through a wall or another body.
+  bool centre_point = false;
   ContactEffectiveMass effective_mass = ContactEffectiveMass::body;
   // Departure from docs/method.md §1.9 (on by default): the CDS pairs active between the same two bodies
   // (or a body and a wall) act in parallel, S = sum_p (n_p . N)^2 of them along their mean normal N
@@ -53,6 +56,11 @@ struct ContactModel {
   // std::invalid_argument naming the first inconsistent parameter.
   void check() const;
 
+  // The points 0 .. cds_points(body) - 1 of a body carry a CDS: its surface points, and its centre
+  // point (the last) with centre_point on a mass-spring body.
+  int cds_points(const MassSpringBody& body) const {
+    return centre_point && body.kind == BodyKind::mass_spring ? body.n_points() : body.n_surface;
+  }
   bool enabled() const { return stiffness > 0.0 || law == ContactLawKind::collision_time; }
   // The model of a fluid step of length dt: T_c = collision_steps dt (collision_time; linear: unchanged).
   ContactModel for_fluid_step(double dt) const;

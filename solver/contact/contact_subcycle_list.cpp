@@ -158,7 +158,7 @@ void ContactSubcycler::build_list(const ContactModel& model, const WallBox& box,
     for (std::size_t i = 0; i < members.count(bodies.size()); ++i) {
       const int b = static_cast<int>(members.at(i));
       const double radius = model.cds_radius_of(bodies[b]) + time * radius_rate_[b];
-      for_each_point_near_walls(bodies[b].position, bodies[b].n_surface, box, radius, half_skin,
+      for_each_point_near_walls(bodies[b].position, model.cds_points(bodies[b]), box, radius, half_skin,
                                 [&](int k, int c, int side, double /*distance*/) {
                                   Wall wall;
                                   wall.a = candidate(b, k, bodies);

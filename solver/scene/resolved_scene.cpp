@@ -165,6 +165,7 @@ std::string resolved_scene_toml(const Scene& scene) {
   out += fmt::format("cds_radius = {}\n", toml_float(contact.cds_radius));
   out += fmt::format("cds_radius_fraction = {}\n", toml_float(contact.cds_radius_fraction));
   out += fmt::format("walls = {}\n", toml_bool(contact.walls));
+  out += fmt::format("centre_point = {}\n", toml_bool(contact.centre_point));
   out += fmt::format("time_stepping = {}\n", toml_string(scene_schema::name_of(contact.time_stepping)));
   out += fmt::format("inner_step = {}\n", toml_string(scene_schema::name_of(contact.inner_step)));
   out += fmt::format("model = {}\n", toml_string(scene_schema::name_of(contact.model)));

@@ -207,6 +207,9 @@ struct ContactSpec {
   double cds_radius = 0.0;           // absolute CDS radius [length]; 0: use cds_radius_fraction
   double cds_radius_fraction = 0.0;  // CDS radius as a fraction of the body diameter [-]
   bool walls = true;                 // body-wall contacts
+  // A CDS on each mass-spring body's centre point too (walls and other bodies), not only on its
+  // surface points (docs/method.md §1.9): keeps a crushed wheel's centre point in the box.
+  bool centre_point = false;
   // "inner_loop": a group of mass-spring bodies that may touch something takes its springs'
   // sub-step, the contact sub-step only in an inner loop over the points near a contact
   // (contact/contact_subcycle.hpp); "shared": every point of the group at the contact sub-step.

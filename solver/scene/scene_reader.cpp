@@ -272,6 +272,7 @@ Scene scene_from_table(const toml::table& root, SceneDiagnostics& diagnostics) {
   contact.read_real("cds_radius_fraction", scene.contact.cds_radius_fraction, Need::optional,
                     non_negative);
   contact.read_bool("walls", scene.contact.walls);
+  contact.read_bool("centre_point", scene.contact.centre_point);
   contact.read_choice("time_stepping", scene.contact.time_stepping);
   contact.read_choice("inner_step", scene.contact.inner_step);
   contact.read_choice("model", scene.contact.model);

@@ -63,7 +63,7 @@ inline constexpr std::string_view prescribed_body_keys[] = {
     "reference_speed", "reference_length"};
 inline constexpr std::string_view swelling_keys[] = {"onset_time", "rate", "max_diameter"};
 inline constexpr std::string_view contact_keys[] = {"stiffness", "restitution_coefficient",
-                                                    "cds_radius", "cds_radius_fraction", "walls",
+                                                    "cds_radius", "cds_radius_fraction", "walls", "centre_point",
                                                     "time_stepping", "inner_step", "model", "collision_steps"};
 inline constexpr std::string_view output_keys[] = {"file", "series_every", "snapshot_interval",
                                                    "centreline_profiles", "progress", "checkpoint_every",

@@ -58,6 +58,7 @@ ContactModel contact_model_of(const ContactSpec& spec) {
   model.cds_radius = spec.cds_radius;
   model.cds_radius_fraction = spec.cds_radius_fraction;
   model.walls = spec.walls;
+  model.centre_point = spec.centre_point;
   model.inner_step = spec.inner_step;
   model.check();
   return model;

@@ -153,7 +153,7 @@ void advance_group(const SolidStepInputs& in, const std::vector<SwellingSchedule
     // displacement the position update made), prescribed bodies included.
     for (std::size_t i = 0; i < members.count(bodies.size()); ++i) {
       const std::size_t b = members.at(i);
-      for (int p = 0; p < bodies[b].n_surface; ++p)
+      for (int p = 0; p < bodies[b].n_points(); ++p)
         contact_energy += dt_sub * (contact_work[b][p][0] * bodies[b].velocity[p][0] +
                                     contact_work[b][p][1] * bodies[b].velocity[p][1]);
     }
