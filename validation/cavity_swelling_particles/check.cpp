@@ -14,12 +14,13 @@
 //      run has more touching CDS pairs on average than the non-swelling run, and its particles'
 //      mean path length is larger.
 // usage: cavity_particles_check <min_gap> <case_name> <base_nonswelling> <base_swelling> <out_dir>
-//        [exact <swelling_rate>]
+//        [exact <swelling_rate> <swelling_scene>]
 // t_stop, t_late and t_end are solver/metrics/case_criteria.hpp's (one definition with `ibms compare`).
 // With `exact` (the 256-particle cavity, README.md) it checks 1 and 2 only, what holds exactly
 // whatever the chaotic paths do, and adds in both runs:
 //   5. each diameter D(t) follows its schedule, D0 constant without swelling and
-//      min(D0 + rate t, 1.5 D0) with it, to 1e-9 of D0 (D0 from the first row);
+//      min(D0 + rate t, D_max) with it, to 1e-9 of D0 (D0 from the first row; D_max the body's
+//      max_diameter in the swelling scene, 1.5 D0 to the scene's 6 decimals);
 //   and records, not gated, the range of the rim-polygon areas over the regular rim polygon of D(t)
 //   and the largest count of folded rims' crossing edge pairs (bodies/n_self_crossings): the papers'
 //   soft 21-point wheels fold in the 16-particle runs too (README.md), so neither holds exactly.
@@ -28,6 +29,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -91,23 +93,38 @@ void write_trajectories(const SeriesTable& s, double t0, double t1, const std::s
   }
 }
 
+// The max_diameter values of a scene's [bodies.swelling] tables, in the order of its bodies (the
+// scenes of make_scenes.py give every body one).
+std::vector<double> max_diameters(const std::string& scene_path) {
+  std::ifstream in(scene_path);
+  if (!in) throw std::runtime_error("cannot read " + scene_path);
+  std::vector<double> values;
+  const std::string key = "max_diameter = ";
+  for (std::string line; std::getline(in, line);)
+    if (line.compare(0, key.size(), key) == 0) values.push_back(std::stod(line.substr(key.size())));
+  return values;
+}
+
 }  // namespace
 
 // Check 5 of one run (header): the diameters against their schedule; the rims' areas against the
 // regular polygon of D(t) with n_rim points and the folded rims, recorded. Returns pass.
 bool check_schedule(const std::string& name, const std::string& label, const SeriesTable& s,
-                              double rate, int n_rim) {
+                              double rate, const std::vector<double>& max_diameter, int n_rim) {
   const auto& t = s.at("time");
   const int n = count_bodies(s);
   double worst_diameter = 0.0, area_low = INFINITY, area_high = 0.0, self_crossings = 0.0;
   for (double v : s.at("bodies/n_self_crossings")) self_crossings = std::max(self_crossings, v);
   const double polygon = 0.5 * n_rim * std::sin(2.0 * std::acos(-1.0) / n_rim);  // area / R^2 of the regular polygon
+  if (rate != 0.0 && static_cast<int>(max_diameter.size()) != n)
+    throw std::runtime_error("the swelling scene gives " + std::to_string(max_diameter.size()) +
+                             " max_diameter values for " + std::to_string(n) + " bodies");
   for (int b = 0; b < n; ++b) {
     const auto& d = s.at(body(b, "diameter"));
     const auto& a = s.at(body(b, "area"));
     const double d0 = d[0] - rate * t[0];
     for (std::size_t k = 0; k < t.size(); ++k) {
-      const double scheduled = std::min(d0 + rate * t[k], 1.5 * d0);
+      const double scheduled = rate == 0.0 ? d0 : std::min(d0 + rate * t[k], max_diameter[b]);
       worst_diameter = std::max(worst_diameter, std::abs(d[k] - scheduled) / d0);
       const double ratio = a[k] / (polygon * 0.25 * d[k] * d[k]);
       area_low = std::min(area_low, ratio);
@@ -128,10 +145,10 @@ bool check_schedule(const std::string& name, const std::string& label, const Ser
 }
 
 int main(int argc, char** argv) {
-  const bool exact = argc == 8 && std::string(argv[6]) == "exact";
+  const bool exact = argc == 9 && std::string(argv[6]) == "exact";
   if (argc != 6 && !exact) {
     std::fprintf(stderr, "usage: %s <min_gap> <case_name> <base_nonswelling> <base_swelling> <out_dir> "
-                 "[exact <swelling_rate>]\n", argv[0]);
+                 "[exact <swelling_rate> <swelling_scene>]\n", argv[0]);
     return 2;
   }
   try {
@@ -173,8 +190,9 @@ int main(int argc, char** argv) {
              min_rim, apart);
       all = all && stable && walls_ok && apart;
       if (exact) {
-        const double rate = std::string(label) == "swelling" ? std::atof(argv[7]) : 0.0;
-        all = check_schedule(name, l, *s, rate, 21) && all;
+        const bool swelling = std::string(label) == "swelling";
+        const double rate = swelling ? std::atof(argv[7]) : 0.0;
+        all = check_schedule(name, l, *s, rate, swelling ? max_diameters(argv[8]) : std::vector<double>{}, 21) && all;
       }
     }
     if (exact) return all ? 0 : 1;

@@ -11,7 +11,8 @@ swelling rate a quarter, so that each particle reaches 1.5 D0 at the same time),
 fraction (0.196) is the same; the springs four times stiffer (k_s in [2.24, 3.52]: the elastic
 capillary number mu U / (k_s D0) of the 16-particle case, the lid's viscous stress on a particle
 that reaches its corner growing as 1/D); the grid is four times finer (400 x 400, D/h as in the
-16-particle case) and the step bound a quarter (README.md, "256 particles").
+16-particle case) and the step bound a quarter, and each particle's centre point carries a CDS
+(contact.centre_point, README.md, "256 particles").
 usage: make_scenes.py [--256] [OUTPUT_DIR]   (default: this folder)"""
 import os
 import random
@@ -84,7 +85,7 @@ stiffness = 1.0e7
 restitution_coefficient = 1.0
 cds_radius_fraction = 0.167
 walls = true
-
+{centre_point}
 [output]
 file = "cavity_swelling_particles_{name}.h5"
 series_every = {series_every}
@@ -142,7 +143,11 @@ def scene(name):
             text += BODY_256.format(x=x, y=y, d=d, k=k)
         if variant == "swelling":
             text += SWELLING.format(rate=rate, d_max=1.5 * d)
-    return text + FOOTER.format(name=name, series_every=series_every)
+    # The scaled-up cavity crushes wheels flat in the corners where a lid leaves a wall; a CDS on the
+    # centre point keeps such a wheel's centre point in the box (README.md, "256 particles").
+    centre_point = "" if len(bodies) == 16 else (
+        "centre_point = true  # a CDS on the centre point too (not in the paper; docs/method.md §1.9)\n")
+    return text + FOOTER.format(name=name, series_every=series_every, centre_point=centre_point)
 
 
 def main():
