@@ -343,8 +343,8 @@ CAUSES = [
     ("dfg_cylinder_2d2", r"drag_coefficient_max",
      "The shipped scene retracts the markers by $0.3h$, the face constraint's effective radius, as every scene "
      "under that coupling does: max $c_D$ rises towards the bounds from below as the grid is refined ($-2.88$, "
-     "$-2.11$, $-0.88$, $-0.60$\\,\\% at $D/h = 20, 30, 40, 60$; Richardson value over the finest three "
-     "$-0.57$\\,\\%), the boundary layer, 2 to 4 cells thick on the coarse grids, being smeared by the kernel. Under the papers' coupling the slip left at the end of the step and, on the "
+     "$-2.11$, $-0.88$, $-0.66$, $-0.60$, $-0.39$\\,\\% at $D/h = 20, 30, 40, 50, 60, 80$; Richardson value over "
+     "50, 60, 80 3.2243, inside the bounds), the boundary layer, 2 to 4 cells thick on the coarse grids, being smeared by the kernel. Under the papers' coupling the slip left at the end of the step and, on the "
      "collocated grid, the momentum interpolation's flux through the body, proportional to $\\Delta t$, raise "
      "max $c_D$ by 11--12\\,\\% on every grid (README)."),
     ("dfg_cylinder_2d1", r"^drag_coefficient at",
@@ -353,14 +353,14 @@ CAUSES = [
      "$D/h = 20, 30, 40$, inside the bounds); the papers' coupling converges at first order and reaches 1\\,\\% "
      "only from $D/h = 60$ (README)."),
     ("dfg_cylinder_2d2", r"lift_coefficient",
-     "With the markers retracted by the effective radius ($0.3h$) max $c_L$ rises from below as the grid is "
-     "refined ($-10.2$, $-7.3$, $-3.8$, $-2.95$\\,\\% at $D/h = 20, 30, 40, 60$), to about 0.97 at CFL 0.5: "
-     "the coarse grids' deficit is made where the boundary layer, 2 to 4 cells thick, meets the kernel's 3-cell "
-     "support (without the retraction it sat at $-2.7$\\,\\% on $D/h = 20$--40, cancelled in part by the larger "
-     "effective body). What holds the converged lift near 0.97 is not established: not the step, since the "
-     "retracted scene's lift at $D/h = 20$ moves by $-0.4$\\,\\% from CFL 0.5 to 0.125, where the unretracted one's "
-     "rose by $+1.4$\\,\\% through the momentum interpolation's face term $\\Delta t\\,(I-MA)(S_f\\mathbf F-G_fp)$, "
-     "whose time scale is the step (README, docs/method.md \\S2.3)."),
+     "With the markers retracted by the effective radius ($0.3h$) max $c_L$ rises from below at about the "
+     "diffuse interface's first order as the grid is refined ($-10.2$, $-7.3$, $-3.8$, $-3.2$, $-2.95$, "
+     "$-2.33$\\,\\% at $D/h = 20, 30, 40, 50, 60, 80$), towards 0.98--0.99 (a fit $a + bh$ over $D/h = 40$--80: "
+     "0.990; Richardson over 50, 60, 80: 0.986): the coarse grids' deficit is the regularised interface's "
+     "first-order error where the boundary layer, 2 to 4 cells thick, meets the kernel's 3-cell support; the "
+     "retraction removes the effective radius' share (the body's size), not the smearing of the shear layer. "
+     "Not the step: the retracted scene's lift at $D/h = 20$ moves by $-0.4$\\,\\% from CFL 0.5 to 0.125 "
+     "(README, docs/method.md \\S3.7)."),
     ("dfg_cylinder_2d1", r"lift_coefficient",
      "$c_L$ at Re 20 is a small asymmetry of the flow (about 1\\,\\% of $c_D$) that the smeared interface does "
      "not resolve at these grids (README)."),
