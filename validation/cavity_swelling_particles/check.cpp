@@ -37,6 +37,7 @@
 #include "metrics/body_series.hpp"
 #include "metrics/case_criteria.hpp"
 #include "metrics/csv_reader.hpp"
+#include "scene/scene_reader.hpp"
 
 using namespace ibms;
 using namespace ibms::validation;
@@ -93,15 +94,11 @@ void write_trajectories(const SeriesTable& s, double t0, double t1, const std::s
   }
 }
 
-// The max_diameter values of a scene's [bodies.swelling] tables, in the order of its bodies (the
-// scenes of make_scenes.py give every body one).
+// The max_diameter of each body's swelling law, in the order of its bodies, read by the solver's
+// own scene reader (the scenes of make_scenes.py give every body one).
 std::vector<double> max_diameters(const std::string& scene_path) {
-  std::ifstream in(scene_path);
-  if (!in) throw std::runtime_error("cannot read " + scene_path);
   std::vector<double> values;
-  const std::string key = "max_diameter = ";
-  for (std::string line; std::getline(in, line);)
-    if (line.compare(0, key.size(), key) == 0) values.push_back(std::stod(line.substr(key.size())));
+  for (const BodySpec& body : read_scene_file(scene_path).bodies) values.push_back(body.swelling.max_diameter);
   return values;
 }
 
