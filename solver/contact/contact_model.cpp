@@ -47,13 +47,13 @@ double cds_point_mass(const MassSpringBody& body, int point) {
   return body.kind == BodyKind::rigid ? body.total_mass() / 3.0 : body.mass[point];
 }
 
-double lightest_cds_point_mass(const std::vector<MassSpringBody>& bodies, const BodySet& members) {
+double lightest_cds_point_mass(const ContactModel& model, const std::vector<MassSpringBody>& bodies,
+                               const BodySet& members) {
   double lightest = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < members.count(bodies.size()); ++i) {
     const MassSpringBody& body = bodies[members.at(i)];
     if (body.kind == BodyKind::prescribed) continue;  // infinitely heavy: its partner's mass counts
-    // The surface points: a centre point's CDS (ContactModel::centre_point) is no lighter (mass lumping, §1.3).
-    for (int k = 0; k < body.n_surface; ++k) lightest = std::min(lightest, cds_point_mass(body, k));
+    for (int k = 0; k < model.cds_points(body); ++k) lightest = std::min(lightest, cds_point_mass(body, k));
   }
   return lightest;
 }
@@ -67,7 +67,7 @@ ContactSubstepBounds contact_substep_bounds(const ContactModel& model, const std
   constexpr double dashpot_safety = 0.5;      // docs/method.md §5.3 safety factor on a stability limit
   ContactSubstepBounds bounds;
   if (!model.enabled() || bodies.empty()) return bounds;
-  const double lightest_point = lightest_cds_point_mass(bodies, members);
+  const double lightest_point = lightest_cds_point_mass(model, bodies, members);
   double heaviest_body = 0.0, heaviest_point = 0.0;
   std::size_t n_members = 0;
   for (std::size_t i = 0; i < members.count(bodies.size()); ++i) {

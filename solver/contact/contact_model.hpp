@@ -122,8 +122,10 @@ double contact_dashpot_substep(const ContactModel& model, const std::vector<Mass
 // smallest effective mass of a rim point of a uniform rigid disk (pushed along its rim tangent,
 // 1/m_eff = 1/m + R^2/I = 3/m). Not for prescribed bodies (infinitely heavy).
 double cds_point_mass(const MassSpringBody& body, int point);
-// The lightest CDS point mass over the bodies that can move (infinity if none) [mass/length].
-double lightest_cds_point_mass(const std::vector<MassSpringBody>& bodies, const BodySet& members = {});
+// The lightest CDS point mass over the bodies that can move, their centre points included where
+// they carry a CDS (ContactModel::cds_points; infinity if none) [mass/length].
+double lightest_cds_point_mass(const ContactModel& model, const std::vector<MassSpringBody>& bodies,
+                               const BodySet& members = {});
 
 // Whether a contact can begin or is under way within the next fluid step of length dt (contact
 // sub-steps run only while a contact is possible). Each body is bounded by the circle about
