@@ -117,6 +117,13 @@ void ImplicitSpringSystem::factorise() {
   }
 }
 
+void ImplicitSpringSystem::factorise_with_added_diagonal(const std::vector<double>& extra,
+                                                         ImplicitSpringSystem& into) const {
+  into = *this;
+  for (int r = 0; r < n_; ++r) into.value_[diagonal_[r]] += extra[r];
+  into.factorise();
+}
+
 void ImplicitSpringSystem::solve(std::vector<double>& x) const {
   for (int j = 0; j < n_; ++j)
     for (int q = l_start_[j]; q < l_start_[j + 1]; ++q) x[l_row_[q]] -= l_value_[q] * x[j];

@@ -40,6 +40,10 @@ class ImplicitSpringSystem {
   // x := (M + dt D + dt^2 S)^{-1} x (two entries per point), the matrix of the latest advance or
   // velocity_change: the velocity change of the points per unit of impulse dt F.
   void response(std::vector<double>& x) const { solve(x); }
+  // The matrix of the latest advance or velocity_change with `extra` added to its diagonal (two
+  // entries per point), factorised into `into`, whose storage is reused: into.response then
+  // solves with M + diag(extra) + dt D + dt^2 S.
+  void factorise_with_added_diagonal(const std::vector<double>& extra, ImplicitSpringSystem& into) const;
 
  private:
   void analyse(const MassSpringBody& body);  // pattern, elimination tree, storage of L

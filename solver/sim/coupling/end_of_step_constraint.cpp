@@ -67,6 +67,7 @@ EndOfStepConstraint::EndOfStepConstraint(const Scene& scene, const Grid& grid, K
                               : scene.ibm.preconditioner_drift;
   arrays_.preconditioner.reserve(markers, scene.fluid.density, preconditioner_drift_);
   arrays_.response_systems.resize(bodies.size());
+  arrays_.preconditioner.attach_rim_systems(&arrays_.response_systems);
   for (std::size_t b = 0; b < bodies.size(); ++b) {
     if (bodies[b].kind != BodyKind::mass_spring) continue;
     markers[b].body_velocity_change.assign(markers[b].marker.size(), Vec2{0.0, 0.0});
@@ -198,7 +199,8 @@ std::string EndOfStepConstraint::correction_stage() const {
          fmt::format("{:g}", slip_tolerance_) +
          " U_ref; GMRES preconditioned body by body: " +
          (on_faces_ ? fmt::format("prescribed and responding rigid bodies by their own operator (lattice Green's "
-                                  "function, built again when their markers drift {:g} cells), others by J S and the "
+                                  "function, built again when their markers drift {:g} cells), mass-spring rims by "
+                                  "their response with the diagonal of J_f S_f (Woodbury), others by J S and the "
                                   "rim's leak", preconditioner_drift_)
                     : "J S and the rim's leak") +
          (has_responding_rigid_ ? "; rigid bodies: target at t^{n+1}, their response in the marker system" : "") +

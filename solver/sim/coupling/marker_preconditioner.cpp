@@ -83,14 +83,30 @@ bool MarkerPreconditioner::factorise(const Grid& grid, KernelKind kernel, bool o
     const Eigen::Index n = static_cast<Eigen::Index>(c.marker.size());
     Block& block = blocks_[b];
     // A rigid body that responds in the marker system takes A_b less its response. A mass-spring
-    // rim keeps the identity: its rim's inertia and springs, not the kernel, set that part of the
-    // system, and its own block (A_b less its response, rebuilt as the rim moves) halves the
-    // products but costs more to build than they save (docs/method.md §3.7).
+    // rim whose markers are its rim points takes (D + R)^-1 under the face constraint, D the
+    // diagonal of J_f S_f and R its response, by Woodbury through its implicit system with rho dV / D
+    // added to the rim points' masses: O(N) a step, where its own block (A_b less its response,
+    // rebuilt as the rim moves) costs more to build than the products it saves (docs/method.md §3.7).
+    // Other responding rims keep the identity.
     const bool responds = !c.body_velocity_change.empty();
     const bool rigid = c.response_mass > 0.0;
     block.identity = responds && !rigid;
+    block.rim = false;
     if (block.identity) {
       block.leak = 0.0;
+      if (rim_systems_ != nullptr && on_faces && c.response_work.size() == 2 * c.marker.size() + 2) {
+        block.rim = true;
+        block.rim_diagonal.resize(2 * n);
+        block.rim_work.assign(c.response_work.size(), 0.0);
+        for (Eigen::Index k = 0; k < n; ++k)
+          for (int d = 0; d < 2; ++d) {
+            marker_node_weights(grid, c.face_stencils[k], on_faces, d, weights_[0]);
+            const double diagonal = overlap(weights_[0], weights_[0]) * c.marker_volume[k] / cell_area_;
+            block.rim_diagonal[2 * k + d] = diagonal;
+            block.rim_work[2 * k + d] = fluid_density_ * c.marker_volume[k] / diagonal;
+          }
+        (*rim_systems_)[b].factorise_with_added_diagonal(block.rim_work, block.rim_system);
+      }
       continue;
     }
     block.exact = on_faces && may_take_own_operator(c) && n > 0;
@@ -350,6 +366,17 @@ void MarkerPreconditioner::apply(const std::vector<BodyCoupling>& coupling, cons
     const BodyCoupling& c = coupling[b];
     const Eigen::Index n = static_cast<Eigen::Index>(c.marker.size());
     Block& block = blocks_[b];
+    if (block.rim) {
+      // x = D^-1 (v - y), (K + rho dV D^-1) y = rho dV D^-1 v on the rim points.
+      std::vector<double>& t = block.rim_work;
+      std::fill(t.begin(), t.end(), 0.0);
+      for (Eigen::Index q = 0; q < 2 * n; ++q)
+        t[q] = fluid_density_ * c.marker_volume[q / 2] * v[first + q] / block.rim_diagonal[q];
+      block.rim_system.response(t);
+      for (Eigen::Index q = 0; q < 2 * n; ++q) x[first + q] = (v[first + q] - t[q]) / block.rim_diagonal[q];
+      first += 2 * static_cast<std::size_t>(n);
+      continue;
+    }
     if (block.identity) {
       std::copy(v + first, v + first + 2 * n, x + first);
       first += 2 * static_cast<std::size_t>(n);

@@ -28,9 +28,14 @@
 // ibm.preconditioner_drift cells of where it was built (0: built again at every move); it is built
 // from what it was built with (the markers, their volumes and radial factors, a rigid body's arms),
 // which the checkpoint keeps, so that a restarted run builds the same block (docs/method.md §3.7).
-// A body whose rim responds in the marker system (mass-spring, docs/method.md §3.7) keeps the
-// identity: its rim's inertia and springs dominate that part of the system, and J S there doubled
-// the products (16 swelling wheels in the two-sided cavity: 5.2 a step without it, 10.4 with it).
+// A body whose rim responds in the marker system (mass-spring, docs/method.md §3.7): its rim's
+// inertia and springs dominate that part of the system (J S alone there doubled the products: 16
+// swelling wheels in the two-sided cavity, 5.2 a step without it, 10.4 with it). Under the face
+// constraint, with the markers on its rim points, it takes (D + R)^-1, D the diagonal of J_f S_f and
+// R = B K^-1 B^T rho_f dV its response (K = M + dt D_s + dt^2 S its implicit system, B the rim
+// points), by Woodbury:  x = D^-1 (v - B y),  (K + B^T rho_f dV D^-1 B) y = B^T rho_f dV D^-1 v,
+// the rim's implicit system with rho_f dV_l / D_l added to each rim point's mass, factorised once a
+// step in O(N). Otherwise it keeps the identity.
 #pragma once
 #include <array>
 #include <cstddef>
@@ -46,6 +51,7 @@
 #include "ibm/delta_kernel.hpp"
 #include "ibm/ib_operators.hpp"
 #include "sim/coupling/body_coupling.hpp"
+#include "solid/implicit_euler.hpp"
 
 namespace ibms {
 
@@ -77,6 +83,8 @@ class MarkerPreconditioner {
   // prescribed and the responding rigid bodies only); fluid_density for the rigid bodies' response,
   // drift: ibm.preconditioner_drift [cells].
   void reserve(const std::vector<BodyCoupling>& coupling, double fluid_density, double drift);
+  // The mass-spring rims' implicit systems of the step (factorised before factorise is called).
+  void attach_rim_systems(const std::vector<ImplicitSpringSystem>* systems) { rim_systems_ = systems; }
   // The blocks of every body whose markers moved since they were last factorised (faces: the local
   // operator; cells: C and the outward normals), free_faces the faces the projection corrects;
   // returns whether leaks must be measured again (a body with a J S block moved).
@@ -118,7 +126,15 @@ class MarkerPreconditioner {
     bool identity = false;               // a responding (mass-spring) rim: no block, no leak
     ExactBlockInputs inputs;             // what local was built from (exact blocks)
     bool restored = false;               // inputs given back by a restart, block not yet built
+    // A responding mass-spring rim (markers = rim points, faces): (D + R)^-1 by Woodbury, D the
+    // diagonal of J_f S_f, R the rim's response; rim_system the rim's implicit system with
+    // rho_f dV / D added to its rim points' masses.
+    bool rim = false;
+    ImplicitSpringSystem rim_system;
+    std::vector<double> rim_diagonal;    // D per unknown 2k + d
+    std::vector<double> rim_work;        // two entries per body point
   };
+  const std::vector<ImplicitSpringSystem>* rim_systems_ = nullptr;
   std::vector<Block> blocks_;
   // A_b (less a rigid body's response) from block.inputs.
   void build_local(const Grid& grid, KernelKind kernel, const FluidSolver::FaceRange& free_faces, BodyCoupling& c,
