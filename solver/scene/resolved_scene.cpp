@@ -155,6 +155,7 @@ std::string resolved_scene_toml(const Scene& scene) {
   out += fmt::format("constrained_velocity = {}\n", toml_string(scene_schema::name_of(ibm.constrained_velocity)));
   out += fmt::format("virtual_mass_coefficient = {}\n", toml_float(ibm.virtual_mass_coefficient));
   out += fmt::format("rigid_response = {}\n", toml_string(scene_schema::name_of(ibm.rigid_response)));
+  out += fmt::format("rim_preconditioner = {}\n", toml_string(scene_schema::name_of(ibm.rim_preconditioner)));
 
   for (const BodySpec& body : scene.bodies) append_body(out, body);
 

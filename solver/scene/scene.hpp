@@ -103,6 +103,7 @@ struct IbmSpec {
   enum class Coupling { uhlmann, no_slip };
   enum class ConstrainedVelocity { cells, faces };
   enum class RigidResponse { implicit, virtual_mass };
+  enum class RimPreconditioner { identity, response };
   Kernel kernel = Kernel::roma3;     // roma3 | peskin4 | cosine4 | bkp6
   int forcing_passes = 1;            // multi-direct forcing passes [-]
   // Which velocity the markers force: "explicit_estimate" (Uhlmann 2005: the explicit estimate
@@ -156,6 +157,16 @@ struct IbmSpec {
   //  "virtual_mass"  one step late, with virtual_mass_coefficient (Schwarz, Kempe & Froehlich 2015).
   // A body no heavier than the fluid (with an inner_fluid_inertia other than "none") takes the virtual mass.
   RigidResponse rigid_response = RigidResponse::implicit;
+  // no_slip on "faces": the marker system's preconditioner block of a mass-spring rim whose markers
+  // are its rim points (docs/method.md §3.7, "Mass-spring rims"):
+  //  "identity"  none (the default);
+  //  "response"  (D + R)^-1, D the diagonal of J_f S_f and R the rim's response, by Woodbury through
+  //              the rim's implicit system: fewer products where the rims need a correction at
+  //              most steps (the papers' swelling cavity 6.2 -> 4.0 a step), but where corrections
+  //              come at a few steps only, their larger jumps leave the loose slip tolerance's
+  //              sawtooth in the body's motion (a settling wheel at 1e-3: its velocity's step-to-step
+  //              second difference 40 times the identity's).
+  RimPreconditioner rim_preconditioner = RimPreconditioner::identity;
 };
 
 // A body's [bodies.swelling] table: the swelling law's parameters (solid/swelling_schedule.hpp).

@@ -146,6 +146,7 @@ void read_ibm(const TomlTableReader& table, IbmSpec& ibm) {
   table.read_choice("constrained_velocity", ibm.constrained_velocity);
   table.read_real("virtual_mass_coefficient", ibm.virtual_mass_coefficient, Need::optional, Bounds{0.0, false, 10.0, false});
   table.read_choice("rigid_response", ibm.rigid_response);
+  table.read_choice("rim_preconditioner", ibm.rim_preconditioner);
 }
 
 void read_swelling(const TomlTableReader& table, double diameter, SwellingSpec& swelling) {

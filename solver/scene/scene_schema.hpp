@@ -41,7 +41,8 @@ std::span<const std::string_view> keys_of_side_kind(WallSpec::Kind kind);
 inline constexpr std::string_view ibm_keys[] = {"kernel", "forcing_passes", "forcing_stage",
                                                 "inner_fluid_inertia", "sub_markers", "marker_retraction",
                                                 "coupling", "slip_tolerance", "max_coupling_iterations", "preconditioner_drift",
-                                                "constrained_velocity", "virtual_mass_coefficient", "rigid_response"};
+                                                "constrained_velocity", "virtual_mass_coefficient", "rigid_response",
+                                                "rim_preconditioner"};
 inline constexpr std::string_view body_keys[] = {
     "kind",          "centre",           "velocity",       "angular_velocity",
     "diameter",      "n_surface_points", "density",        "spring_stiffness",
@@ -99,6 +100,8 @@ IBMS_OPTION_NAMES(IbmSpec::ConstrainedVelocity, {IbmSpec::ConstrainedVelocity::c
                    {IbmSpec::ConstrainedVelocity::faces, "faces"});
 IBMS_OPTION_NAMES(IbmSpec::RigidResponse, {IbmSpec::RigidResponse::implicit, "implicit"},
                    {IbmSpec::RigidResponse::virtual_mass, "virtual_mass"});
+IBMS_OPTION_NAMES(IbmSpec::RimPreconditioner, {IbmSpec::RimPreconditioner::identity, "identity"},
+                   {IbmSpec::RimPreconditioner::response, "response"});
 IBMS_OPTION_NAMES(ContactSpec::TimeStepping, {ContactSpec::TimeStepping::inner_loop, "inner_loop"},
                    {ContactSpec::TimeStepping::shared, "shared"});
 

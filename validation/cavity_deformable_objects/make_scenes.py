@@ -39,6 +39,7 @@ top = {{ speed = 0.1 }}
 kernel = "roma3"
 coupling = "no_slip"
 constrained_velocity = "faces"
+rim_preconditioner = "response"  # the rims' block from their response (docs/method.md \u00a73.7): corrections at most steps here
 forcing_passes = 1          # the first step's direct forcing
 inner_fluid_inertia = "kempe_by_mass"
 """

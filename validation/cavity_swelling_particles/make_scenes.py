@@ -56,6 +56,7 @@ bottom = {{ speed = -1.0, stop_time = 10.0 }}
 kernel = "roma3"
 coupling = "no_slip"
 constrained_velocity = "faces"
+rim_preconditioner = "response"  # the rims' block from their response (docs/method.md \u00a73.7): corrections at most steps here
 forcing_passes = 1          # the first step's direct forcing
 inner_fluid_inertia = "kempe_by_mass"  # the inner fluid's force and torque as a rigid-motion load (docs/method.md \u00a71.7)
 """

@@ -191,6 +191,23 @@ BOOST_AUTO_TEST_CASE(a_responding_rim_inverts_its_response_and_the_diagonal_of_t
   BOOST_TEST(response_size / size > 1e-2);  // the response is a part of the block, not a rounding
 }
 
+// ibm.rim_preconditioner reaches the coupling: the run's stage description names the rims' block
+// the scene chose (the identity by default).
+BOOST_AUTO_TEST_CASE(the_scene_chooses_the_rims_block) {
+  const auto description = [](const std::string& choice) {
+    const std::vector<std::string> set = choice.empty() ? std::vector<std::string>{}
+                                                        : std::vector<std::string>{"ibm.rim_preconditioner=" + choice};
+    const ibms::Scene scene = ibms::read_scene_file(IBMS_SCENE_FALLING_WHEEL, set);
+    const ibms::Simulation sim(scene);
+    for (const std::string& stage : sim.stage_names())
+      if (stage.find("mass-spring rims by") != std::string::npos) return stage;
+    return std::string("(no stage names the rims' block)");
+  };
+  BOOST_TEST(description("").find("mass-spring rims by the identity") != std::string::npos);
+  BOOST_TEST(description("\"identity\"").find("mass-spring rims by the identity") != std::string::npos);
+  BOOST_TEST(description("\"response\"").find("mass-spring rims by their response") != std::string::npos);
+}
+
 // ibm.preconditioner_drift = "auto" keeps the moving bodies' own blocks within 0.1 cell when their
 // unknowns, the sum of (2 n_b)^2, outnumber the grid's cells, and builds them at every move
 // otherwise; a number given in the scene is taken as it is. The run's stage description says which.

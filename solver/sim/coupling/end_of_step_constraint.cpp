@@ -67,7 +67,8 @@ EndOfStepConstraint::EndOfStepConstraint(const Scene& scene, const Grid& grid, K
                               : scene.ibm.preconditioner_drift;
   arrays_.preconditioner.reserve(markers, scene.fluid.density, preconditioner_drift_);
   arrays_.response_systems.resize(bodies.size());
-  arrays_.preconditioner.attach_rim_systems(&arrays_.response_systems);
+  rim_response_ = scene.ibm.rim_preconditioner == IbmSpec::RimPreconditioner::response;
+  if (rim_response_) arrays_.preconditioner.attach_rim_systems(&arrays_.response_systems);
   for (std::size_t b = 0; b < bodies.size(); ++b) {
     if (bodies[b].kind != BodyKind::mass_spring) continue;
     markers[b].body_velocity_change.assign(markers[b].marker.size(), Vec2{0.0, 0.0});
@@ -199,9 +200,11 @@ std::string EndOfStepConstraint::correction_stage() const {
          fmt::format("{:g}", slip_tolerance_) +
          " U_ref; GMRES preconditioned body by body: " +
          (on_faces_ ? fmt::format("prescribed and responding rigid bodies by their own operator (lattice Green's "
-                                  "function, built again when their markers drift {:g} cells), mass-spring rims by "
-                                  "their response with the diagonal of J_f S_f (Woodbury), others by J S and the "
-                                  "rim's leak", preconditioner_drift_)
+                                  "function, built again when their markers drift {:g} cells), mass-spring rims {}, "
+                                  "others by J S and the rim's leak",
+                                  preconditioner_drift_,
+                                  rim_response_ ? "by their response with the diagonal of J_f S_f (Woodbury)"
+                                                : "by the identity")
                     : "J S and the rim's leak") +
          (has_responding_rigid_ ? "; rigid bodies: target at t^{n+1}, their response in the marker system" : "") +
          (has_mass_spring_ ? "; mass-spring rims: target at t^{n+1}, their linearised response in the marker system)"

@@ -49,6 +49,7 @@ class EndOfStepConstraint final : public Coupling {
   bool has_mass_spring_;       // a mass-spring body responds in the marker system
   bool has_responding_rigid_ = false;  // a rigid body responds in the marker system
   double preconditioner_drift_ = 0.0;  // ibm.preconditioner_drift, "auto" resolved [cells]
+  bool rim_response_ = false;          // ibm.rim_preconditioner = "response"
   double fluid_density_;       // rho_f [mass/length^3]
   Vec2 gravity_;               // g [length/time^2]
   NoSlipArrays arrays_;

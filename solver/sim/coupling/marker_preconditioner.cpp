@@ -83,7 +83,8 @@ bool MarkerPreconditioner::factorise(const Grid& grid, KernelKind kernel, bool o
     const Eigen::Index n = static_cast<Eigen::Index>(c.marker.size());
     Block& block = blocks_[b];
     // A rigid body that responds in the marker system takes A_b less its response. A mass-spring
-    // rim whose markers are its rim points takes (D + R)^-1 under the face constraint, D the
+    // rim whose markers are its rim points takes, when the rims' systems are attached
+    // (ibm.rim_preconditioner = "response"), (D + R)^-1 under the face constraint, D the
     // diagonal of J_f S_f and R its response, by Woodbury through its implicit system with rho dV / D
     // added to the rim points' masses: O(N) a step, where its own block (A_b less its response,
     // rebuilt as the rim moves) costs more to build than the products it saves (docs/method.md §3.7).

@@ -30,12 +30,15 @@
 // which the checkpoint keeps, so that a restarted run builds the same block (docs/method.md §3.7).
 // A body whose rim responds in the marker system (mass-spring, docs/method.md §3.7): its rim's
 // inertia and springs dominate that part of the system (J S alone there doubled the products: 16
-// swelling wheels in the two-sided cavity, 5.2 a step without it, 10.4 with it). Under the face
-// constraint, with the markers on its rim points, it takes (D + R)^-1, D the diagonal of J_f S_f and
+// swelling wheels in the two-sided cavity, 5.2 a step without it, 10.4 with it). With
+// ibm.rim_preconditioner = "response" (attach_rim_systems), under the face constraint and with the
+// markers on its rim points, it takes (D + R)^-1, D the diagonal of J_f S_f and
 // R = B K^-1 B^T rho_f dV its response (K = M + dt D_s + dt^2 S its implicit system, B the rim
 // points), by Woodbury:  x = D^-1 (v - B y),  (K + B^T rho_f dV D^-1 B) y = B^T rho_f dV D^-1 v,
 // the rim's implicit system with rho_f dV_l / D_l added to each rim point's mass, factorised once a
-// step in O(N). Otherwise it keeps the identity.
+// step in O(N). Otherwise (the default) it keeps the identity: at a loose slip tolerance, where a
+// rim needs a correction at a few steps only, the block's nearly complete corrections leave the
+// tolerance's sawtooth in the body's motion (docs/method.md §3.7, the settling wheel).
 #pragma once
 #include <array>
 #include <cstddef>
@@ -83,7 +86,8 @@ class MarkerPreconditioner {
   // prescribed and the responding rigid bodies only); fluid_density for the rigid bodies' response,
   // drift: ibm.preconditioner_drift [cells].
   void reserve(const std::vector<BodyCoupling>& coupling, double fluid_density, double drift);
-  // The mass-spring rims' implicit systems of the step (factorised before factorise is called).
+  // The mass-spring rims' implicit systems of the step (factorised before factorise is called):
+  // their rims take (D + R)^-1 (ibm.rim_preconditioner = "response"); without them the identity.
   void attach_rim_systems(const std::vector<ImplicitSpringSystem>* systems) { rim_systems_ = systems; }
   // The blocks of every body whose markers moved since they were last factorised (faces: the local
   // operator; cells: C and the outward normals), free_faces the faces the projection corrects;
