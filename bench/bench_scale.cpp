@@ -37,9 +37,21 @@ namespace {
 constexpr double diameter = 1.0, spacing = 1.6;  // D, and the box per body and direction [length]
 constexpr int cells_per_diameter = 16, rim_points = 50;
 
+// What the command line chooses for every run.
+struct Options {
+  int steps = 40;
+  bool bed = false, collision_time = false;
+  std::string coupling = "uhlmann";
+  double drift = 0.0;
+  double outer_step_fraction = 0.0;  // contact.outer_step_fraction; 0: the scene's default
+};
+
 // The scene of n x n bodies of `kind` (rigid | wheel | swelling) as TOML.
-std::string scene_text(int n, const std::string& kind, int steps, bool bed, bool collision_time,
-                       const std::string& coupling, double drift, const std::string& output) {
+std::string scene_text(int n, const std::string& kind, const Options& o, const std::string& output) {
+  const int steps = o.steps;
+  const bool bed = o.bed, collision_time = o.collision_time;
+  const std::string& coupling = o.coupling;
+  const double drift = o.drift;
   const double length = spacing * n;
   const int cells = static_cast<int>(std::lround(length * cells_per_diameter / diameter));
   std::string text = fmt::format(R"([run]
@@ -79,6 +91,7 @@ coupling = "{}"
         text += "[bodies.swelling]\nonset_time = 0.0\nrate = 0.1\nmax_diameter = 1.1\n";
     }
   text += collision_time ? "[contact]\nmodel = \"collision_time\"\n" : "[contact]\nstiffness = 1.0e7\n";
+  if (o.outer_step_fraction > 0.0) text += fmt::format("outer_step_fraction = {}\n", o.outer_step_fraction);
   text += fmt::format(R"(restitution_coefficient = 0.5
 cds_radius = {}
 walls = true
@@ -97,11 +110,10 @@ struct Figures {
   double fluid = 0, ib = 0, bodies_stage = 0, contacts = 0, output = 0, other = 0, wall = 0;
 };
 
-Figures run(int n, const std::string& kind, int steps, bool bed, bool collision_time, const std::string& coupling,
-            double drift) {
+Figures run(int n, const std::string& kind, const Options& o) {
   const BenchScratch scratch("ibms_bench_scale");
   const std::string out = (scratch.path / "run.h5").string();
-  const Scene scene = read_scene_string(scene_text(n, kind, steps, bed, collision_time, coupling, drift, out), "bench_scale.toml");
+  const Scene scene = read_scene_string(scene_text(n, kind, o, out), "bench_scale.toml");
   Simulation sim(scene);
   const RunSummary summary = run_simulation(sim, {out, /*quiet=*/true});
   const StageTimers& t = sim.timers();
@@ -141,39 +153,41 @@ std::vector<std::string> split(const std::string& text) {
 
 int main(int argc, char** argv) {
   std::vector<std::string> sizes{"4", "8", "16", "32"}, kinds{"rigid", "wheel", "swelling"};
-  int steps = 40;
-  bool bed = false, collision_time = false;
-  std::string coupling = "uhlmann";
-  double drift = 0.0;
+  Options o;
   for (int a = 1; a < argc; ++a) {
     const std::string arg = argv[a];
     if (arg == "--n" && a + 1 < argc) sizes = split(argv[++a]);
     else if (arg == "--kinds" && a + 1 < argc) kinds = split(argv[++a]);
-    else if (arg == "--steps" && a + 1 < argc) steps = std::atoi(argv[++a]);
-    else if (arg == "--bed") bed = true;
-    else if (arg == "--collision-time") collision_time = true;
+    else if (arg == "--steps" && a + 1 < argc) o.steps = std::atoi(argv[++a]);
+    else if (arg == "--bed") o.bed = true;
+    else if (arg == "--collision-time") o.collision_time = true;
     else if (arg == "--coupling" && a + 1 < argc && (std::string(argv[a + 1]) == "uhlmann" ||
                                                      std::string(argv[a + 1]) == "no_slip"))
-      coupling = argv[++a];
-    else if (arg == "--drift" && a + 1 < argc) drift = std::atof(argv[++a]);
+      o.coupling = argv[++a];
+    else if (arg == "--drift" && a + 1 < argc) o.drift = std::atof(argv[++a]);
+    else if (arg == "--outer-fraction" && a + 1 < argc) o.outer_step_fraction = std::atof(argv[++a]);
     else {
       std::fprintf(stderr, "usage: bench_scale [--n 4,8,16,32] [--kinds rigid,wheel,swelling] [--steps 40] [--bed] "
-                           "[--collision-time] [--coupling uhlmann|no_slip] [--drift X]\n");
+                           "[--collision-time] [--coupling uhlmann|no_slip] [--drift X] [--outer-fraction F]\n");
       return 2;
     }
   }
   try {
-    std::printf("bench_scale: n x n bodies, D/h = %d, %d rim points, %s, coupling %s%s, series every 10 steps, %d "
-                "steps%s, one thread\n", cells_per_diameter, rim_points,
-                collision_time ? "collision-time contacts (10 steps)" : "k_Dn = 1e7", coupling.c_str(),
-                coupling == "no_slip" ? fmt::format(" (preconditioner_drift {})", drift).c_str() : "", steps,
-                bed ? ", a resting bed" : "");
+    std::printf("bench_scale: n x n bodies, D/h = %d, %d rim points, %s%s, coupling %s%s, series every 10 steps, "
+                "%d steps%s, one thread\n", cells_per_diameter, rim_points,
+                o.collision_time ? "collision-time contacts (10 steps)" : "k_Dn = 1e7",
+                o.outer_step_fraction > 0.0
+                    ? fmt::format(", outer step {} of the springs' sub-step", o.outer_step_fraction).c_str()
+                    : "",
+                o.coupling.c_str(),
+                o.coupling == "no_slip" ? fmt::format(" (preconditioner_drift {})", o.drift).c_str() : "", o.steps,
+                o.bed ? ", a resting bed" : "");
     std::printf("  %-9s %6s %8s | ms per step: %8s %8s %8s %8s %8s %8s | / fluid: %6s %6s %6s %6s\n", "kind", "bodies",
                 "cells", "fluid", "IB", "bodies", "contacts", "output", "run", "IB", "bodies", "output", "run");
     for (const std::string& kind : kinds) {
       std::vector<double> n_bodies, per_step, fluid_per_step;
       for (const std::string& size : sizes) {
-        const Figures f = run(std::atoi(size.c_str()), kind, steps, bed, collision_time, coupling, drift);
+        const Figures f = run(std::atoi(size.c_str()), kind, o);
         const double per = 1e3 / static_cast<double>(f.steps);
         std::printf("  %-9s %6d %8d | %25.3f %8.3f %8.3f %8.3f %8.3f %8.3f | %16.2f %6.2f %6.2f %6.2f\n", kind.c_str(),
                     f.bodies, f.cells, f.fluid * per, f.ib * per, f.bodies_stage * per, f.contacts * per,

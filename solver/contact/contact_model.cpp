@@ -20,6 +20,8 @@ void ContactModel::check() const {
     throw std::invalid_argument("contact: restitution_coefficient must be in (0, 1]");
   if (!(steps_per_contact >= 1.0) || !(active_pairs_safety >= 1.0))
     throw std::invalid_argument("contact: steps_per_contact and active_pairs_safety must be >= 1");
+  if (!(outer_step_fraction > 0.0 && outer_step_fraction <= 1.0))
+    throw std::invalid_argument("contact: outer_step_fraction must be in (0, 1]");
   if (!(cds_radius >= 0.0) || !(cds_radius_fraction >= 0.0))
     throw std::invalid_argument("contact: cds_radius and cds_radius_fraction must be >= 0");
   if (enabled() && cds_radius == 0.0 && cds_radius_fraction == 0.0)

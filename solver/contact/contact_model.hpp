@@ -21,8 +21,9 @@ namespace ibms {
 //         with M the point mass); a stiff body then rebounds with far less damping than e_D says.
 enum class ContactEffectiveMass { body, point };
 
-// How k (and with it c) of a contact is chosen, ContactLawKind (linear | collision_time), and the
-// step of the inner loop, InnerStepBound (listed_pairs | lightest_point): core/options.hpp.
+// How k (and with it c) of a contact is chosen, ContactLawKind (linear | collision_time), the step
+// of the inner loop, InnerStepBound (listed_pairs | lightest_point), and the default of its outer
+// step, inner_loop_outer_fraction: core/options.hpp.
 
 struct ContactModel {
   ContactLawKind law = ContactLawKind::linear;
@@ -52,6 +53,9 @@ struct ContactModel {
   // pair: 20 steps per contact).
   double steps_per_contact = 20.0;       // [-]
   InnerStepBound inner_step = InnerStepBound::listed_pairs;
+  // The inner loop's outer step as a fraction of the group's springs' stable sub-step, in (0, 1]
+  // (inner_loop_outer_fraction above: the default, and why).
+  double outer_step_fraction = inner_loop_outer_fraction;  // [-]
 
   // std::invalid_argument naming the first inconsistent parameter.
   void check() const;

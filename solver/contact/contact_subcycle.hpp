@@ -56,18 +56,6 @@
 
 namespace ibms {
 
-// The outer step of a group in the inner loop is at most this fraction of its springs' stable
-// sub-step (safety 0.5 already in it, so omega_max dt <= 0.0625): an impact excites the fastest
-// spring modes of the rim, which the held slow force must resolve, and the springs' dashpots act
-// on a rebounding point only from the next outer step. Measured on soft wheels (k_s = 100,
-// k_Dn = 1e4 and 1e7, e_D = 1, test_contact_inner_loop's set-up): the mechanical energy after a
-// wheel-wall or wheel-wheel impact changes by 1.0-1.1 % at the full stable sub-step, 0.2-1.1 % at
-// a half, <= 0.23 % at a quarter, <= 0.03 % at an eighth; the wheel's centre-of-mass rebound from
-// the wall at k_Dn = 1e7 is 0.274 at a quarter and 0.1280-0.1282 at an eighth and below, as with
-// the shared sub-step (0.1281). With the fluid (test_multirate_substeps: damped wheels, e_D = 0.8)
-// the largest overlap lies 2.35 % below the shared sub-step's at an eighth, 1.07 % at a sixteenth.
-inline constexpr double inner_loop_outer_fraction = 0.0625;
-
 struct ContactSubcycleResult {
   ContactStats stats;      // merged over the inner steps, as over shared sub-steps
   double work = 0.0;       // sum over inner steps of F_c . U dt_inner, all points [energy/length]

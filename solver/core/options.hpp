@@ -66,6 +66,22 @@ enum class ContactLawKind { linear, collision_time };
 // above by Collatz-Wielandt (a single pair: A8's t_c / steps_per_contact exactly); lightest_point:
 // the group's bound of contact_substep (the lightest CDS point in active_pairs_safety pairs at once).
 enum class InnerStepBound { listed_pairs, lightest_point };
+// The default outer step of a group in the inner loop (contact_subcycle.hpp), as a fraction of its
+// springs' stable sub-step (safety 0.5 already in it, so omega_max dt <= 0.0625): an impact excites
+// the fastest spring modes of the rim, which the held slow force must resolve, and the springs'
+// dashpots act on a rebounding point only from the next outer step. Measured on soft wheels
+// (k_s = 100, k_Dn = 1e4 and 1e7, test_contact_inner_loop's set-up), inner loop against the shared
+// sub-step: with elastic contacts (e_D = 1, the papers') the mechanical energy after an impact differs
+// by 5.4-7.7 % of the kinetic energy at the full stable sub-step, 1.4-3.3 % at a half, 0.1-0.6 % at a
+// quarter, <= 0.23 % at an eighth, <= 0.11 % at a sixteenth, and the centre-of-mass rebound from the
+// wall at k_Dn = 1e7 is wrong up to a quarter (0.273 against 0.128) and within 1.6 % at an eighth,
+// 0.9 % at a sixteenth (the rebounds of the elastic pair at k_Dn = 1e4 are chaotic: not compared).
+// With the fluid (test_multirate_substeps: damped wheels, e_D = 0.8) the largest overlap lies 2.35 %
+// below the shared sub-step's at an eighth, 1.07 % at a sixteenth.
+inline constexpr double inner_loop_outer_fraction = 0.0625;
+// A scene may take a larger fraction (ContactModel::outer_step_fraction, contact.outer_step_fraction):
+// where the contacts are damped and slow, as in a settling bed, the sixteenth costs without changing
+// the result (docs/method.md §5.4 gives the measured errors against the fraction; bench/README.md the bed).
 
 // How a SpectralSolver plans its transforms (fluid/spectral_solver.hpp). `measure` (FFTW_MEASURE)
 // times candidate algorithms and keeps the fastest: two processes may pick different ones, which

@@ -169,6 +169,7 @@ std::string resolved_scene_toml(const Scene& scene) {
   out += fmt::format("centre_point = {}\n", toml_bool(contact.centre_point));
   out += fmt::format("time_stepping = {}\n", toml_string(scene_schema::name_of(contact.time_stepping)));
   out += fmt::format("inner_step = {}\n", toml_string(scene_schema::name_of(contact.inner_step)));
+  out += fmt::format("outer_step_fraction = {}\n", toml_float(contact.outer_step_fraction));
   out += fmt::format("model = {}\n", toml_string(scene_schema::name_of(contact.model)));
   out += fmt::format("collision_steps = {}\n", toml_float(contact.collision_steps));
 

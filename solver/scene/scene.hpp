@@ -229,6 +229,11 @@ struct ContactSpec {
   // fastest mode its listed CDS pairs can form (a Collatz-Wielandt bound; docs/method.md §5.4);
   // "lightest_point", the group's bound (the lightest CDS point in four pairs at once).
   InnerStep inner_step = InnerStep::listed_pairs;
+  // The inner loop's outer step (springs and fluid held over it) as a fraction of the group's
+  // springs' stable sub-step, in (0, 1]: 1/16 resolves the papers' elastic impacts of soft wheels;
+  // damped, slow contacts (a settling bed) keep their result at larger fractions for less work
+  // (docs/method.md §5.4, measured).
+  double outer_step_fraction = inner_loop_outer_fraction;  // [-]
   // "linear": the papers' law at k_Dn = stiffness. "collision_time": the same law with k and c
   // chosen per contact from m_eff and e_D so that a single-pair contact lasts
   // T_c = collision_steps fluid steps (docs/method.md §5.5); stiffness is then not given.

@@ -276,6 +276,8 @@ Scene scene_from_table(const toml::table& root, SceneDiagnostics& diagnostics) {
   contact.read_bool("centre_point", scene.contact.centre_point);
   contact.read_choice("time_stepping", scene.contact.time_stepping);
   contact.read_choice("inner_step", scene.contact.inner_step);
+  contact.read_real("outer_step_fraction", scene.contact.outer_step_fraction, Need::optional,
+                    unit_interval_open_closed);
   contact.read_choice("model", scene.contact.model);
   // Finite and > 0 here; the lower bound of one fluid step, with its reason, in scene_checks.cpp.
   contact.read_real("collision_steps", scene.contact.collision_steps, Need::optional, positive);

@@ -65,7 +65,8 @@ inline constexpr std::string_view prescribed_body_keys[] = {
 inline constexpr std::string_view swelling_keys[] = {"onset_time", "rate", "max_diameter"};
 inline constexpr std::string_view contact_keys[] = {"stiffness", "restitution_coefficient",
                                                     "cds_radius", "cds_radius_fraction", "walls", "centre_point",
-                                                    "time_stepping", "inner_step", "model", "collision_steps"};
+                                                    "time_stepping", "inner_step", "outer_step_fraction", "model",
+                                                    "collision_steps"};
 inline constexpr std::string_view output_keys[] = {"file", "series_every", "snapshot_interval",
                                                    "centreline_profiles", "progress", "checkpoint_every",
                                                    "probes"};

@@ -104,7 +104,7 @@ inline CollisionRecord collide(const ContactModel& model, const WallBox& box, st
   double spring_substep = HUGE_VAL;
   if (!implicit_springs)
     for (const auto& body : bodies) spring_substep = std::min(spring_substep, stable_substep(body));
-  const double outer = inner_loop_outer_fraction * spring_substep;
+  const double outer = model.outer_step_fraction * spring_substep;
   const int n_inner = static_cast<int>(std::ceil(outer / record.substep * (1.0 - 1e-12)));
   if (stepping == ContactStepping::inner_loop && n_inner >= 2) {
     // As body_update.cpp plans it: a fraction of the springs' sub-step, the contact sub-step inside

@@ -196,7 +196,7 @@ int group_substeps(const SolidStepInputs& in, SubstepGroups& groups, int g, cons
   };
   if (inner_loop_fits) {
     // Only where it pays: springs slower than the contact (stiff bodies keep the shared sub-step).
-    const int n_outer = substeps(in.dt, inner_loop_outer_fraction * spring_dt);
+    const int n_outer = substeps(in.dt, groups.outer_step_fraction * spring_dt);
     const int n_inner = substeps(in.dt / n_outer, contact_dt);
     if (n_inner >= 2) {
       inner_substeps = n_inner;

@@ -62,6 +62,9 @@ struct SubstepGroups {
   std::vector<int> group_of;
   std::vector<double> max_substep;
   ContactInnerLoop inner_loop;        // empty: the shared sub-step for every group
+  // The inner loop's outer step as a fraction of the group's springs' stable sub-step
+  // (ContactModel::outer_step_fraction) [-].
+  double outer_step_fraction = inner_loop_outer_fraction;
   std::vector<int> group_inner_substeps;  // out: inner steps per outer sub-step of each group (0: shared)
   std::vector<int> member_start;  // scratch: group g's bodies are member_list[member_start[g] ..
   std::vector<int> member_list;   //   member_start[g + 1]), ascending (list_members)

@@ -34,6 +34,7 @@ SubstepGroups& SubstepPlanner::plan_step(double dt) {
 
 void SubstepPlanner::plan(double dt, SubstepGroups& groups) const {
   if (static_cast<bool>(groups.inner_loop) != static_cast<bool>(contact_inner_loop_)) groups.inner_loop = contact_inner_loop_;
+  groups.outer_step_fraction = contact_model_.outer_step_fraction;
   if (scene_.run.solid_substeps == RunSpec::SolidSubsteps::global) {
     groups.group_of.clear();
     return;
