@@ -12,14 +12,19 @@
 // --coupling no_slip: the end-of-step constraint on the face velocities (docs/method.md §3.7) instead
 // of the papers' coupling (ibm.coupling = "uhlmann", the default); --drift X: its
 // ibm.preconditioner_drift (0 by default: each moving body's block built again at every move).
+// --outer-fraction F: contact.outer_step_fraction (the inner loop's outer step, docs/method.md §5.4).
+// --report DIR: the report's sets, written to DIR/scale.csv (rigid disks and wheels at 16 to 1024
+// bodies; beds of 64 with the papers' law, the wheels also at outer step 0.5 and with collision time).
 // Usage: bench_scale [--n 4,8,16,32] [--kinds rigid,wheel,swelling] [--steps 40] [--bed] [--collision-time]
-//                    [--coupling uhlmann|no_slip] [--drift X]
+//                    [--coupling uhlmann|no_slip] [--drift X] [--outer-fraction F]
+//        bench_scale --report DIR
 #include <unistd.h>
 
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -149,11 +154,62 @@ std::vector<std::string> split(const std::string& text) {
   return items;
 }
 
+// One table row: a run's stages in ms per step and their ratios to the fluid stages.
+void print_row(const std::string& kind, const Figures& f) {
+  const double per = 1e3 / static_cast<double>(f.steps);
+  std::printf("  %-9s %6d %8d | %25.3f %8.3f %8.3f %8.3f %8.3f %8.3f | %16.2f %6.2f %6.2f %6.2f\n", kind.c_str(),
+              f.bodies, f.cells, f.fluid * per, f.ib * per, f.bodies_stage * per, f.contacts * per, f.output * per,
+              f.wall * per, f.ib / f.fluid, f.bodies_stage / f.fluid, f.output / f.fluid, f.wall / f.fluid);
+  std::fflush(stdout);
+}
+
+void print_header(const Options& o) {
+  std::printf("bench_scale: n x n bodies, D/h = %d, %d rim points, %s%s, coupling %s%s, series every 10 steps, "
+              "%d steps%s, one thread\n", cells_per_diameter, rim_points,
+              o.collision_time ? "collision-time contacts (10 steps)" : "k_Dn = 1e7",
+              o.outer_step_fraction > 0.0
+                  ? fmt::format(", outer step {} of the springs' sub-step", o.outer_step_fraction).c_str()
+                  : "",
+              o.coupling.c_str(),
+              o.coupling == "no_slip" ? fmt::format(" (preconditioner_drift {})", o.drift).c_str() : "", o.steps,
+              o.bed ? ", a resting bed" : "");
+  std::printf("  %-9s %6s %8s | ms per step: %8s %8s %8s %8s %8s %8s | / fluid: %6s %6s %6s %6s\n", "kind", "bodies",
+              "cells", "fluid", "IB", "bodies", "contacts", "output", "run", "IB", "bodies", "output", "run");
+}
+
+// Runs every kind at every size of one set, prints its table and exponents, and appends its rows
+// (set name first) to csv when it is open.
+void run_set(const std::string& set, const std::vector<std::string>& sizes, const std::vector<std::string>& kinds,
+             const Options& o, std::FILE* csv) {
+  print_header(o);
+  for (const std::string& kind : kinds) {
+    std::vector<double> n_bodies, per_step, fluid_per_step;
+    for (const std::string& size : sizes) {
+      const Figures f = run(std::atoi(size.c_str()), kind, o);
+      print_row(kind, f);
+      if (csv != nullptr) {
+        const double per = 1e3 / static_cast<double>(f.steps);
+        std::fprintf(csv, "%s,%s,%d,%d,%ld,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g\n", set.c_str(), kind.c_str(), f.bodies,
+                     f.cells, f.steps, f.fluid * per, f.ib * per, f.bodies_stage * per, f.contacts * per,
+                     f.output * per, f.wall * per);
+        std::fflush(csv);
+      }
+      n_bodies.push_back(f.bodies);
+      per_step.push_back(f.wall / f.steps);
+      fluid_per_step.push_back(f.fluid / f.steps);
+    }
+    if (n_bodies.size() > 1)
+      std::printf("  %-9s cost per step ~ N^%.2f (the fluid stages ~ N^%.2f; cells grow like N)\n", kind.c_str(),
+                  exponent(n_bodies, per_step), exponent(n_bodies, fluid_per_step));
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   std::vector<std::string> sizes{"4", "8", "16", "32"}, kinds{"rigid", "wheel", "swelling"};
   Options o;
+  std::string report_dir;
   for (int a = 1; a < argc; ++a) {
     const std::string arg = argv[a];
     if (arg == "--n" && a + 1 < argc) sizes = split(argv[++a]);
@@ -166,42 +222,40 @@ int main(int argc, char** argv) {
       o.coupling = argv[++a];
     else if (arg == "--drift" && a + 1 < argc) o.drift = std::atof(argv[++a]);
     else if (arg == "--outer-fraction" && a + 1 < argc) o.outer_step_fraction = std::atof(argv[++a]);
+    else if (arg == "--report" && a + 1 < argc) report_dir = argv[++a];
     else {
       std::fprintf(stderr, "usage: bench_scale [--n 4,8,16,32] [--kinds rigid,wheel,swelling] [--steps 40] [--bed] "
-                           "[--collision-time] [--coupling uhlmann|no_slip] [--drift X] [--outer-fraction F]\n");
+                           "[--collision-time] [--coupling uhlmann|no_slip] [--drift X] [--outer-fraction F]\n"
+                           "       bench_scale --report DIR\n");
       return 2;
     }
   }
   try {
-    std::printf("bench_scale: n x n bodies, D/h = %d, %d rim points, %s%s, coupling %s%s, series every 10 steps, "
-                "%d steps%s, one thread\n", cells_per_diameter, rim_points,
-                o.collision_time ? "collision-time contacts (10 steps)" : "k_Dn = 1e7",
-                o.outer_step_fraction > 0.0
-                    ? fmt::format(", outer step {} of the springs' sub-step", o.outer_step_fraction).c_str()
-                    : "",
-                o.coupling.c_str(),
-                o.coupling == "no_slip" ? fmt::format(" (preconditioner_drift {})", o.drift).c_str() : "", o.steps,
-                o.bed ? ", a resting bed" : "");
-    std::printf("  %-9s %6s %8s | ms per step: %8s %8s %8s %8s %8s %8s | / fluid: %6s %6s %6s %6s\n", "kind", "bodies",
-                "cells", "fluid", "IB", "bodies", "contacts", "output", "run", "IB", "bodies", "output", "run");
-    for (const std::string& kind : kinds) {
-      std::vector<double> n_bodies, per_step, fluid_per_step;
-      for (const std::string& size : sizes) {
-        const Figures f = run(std::atoi(size.c_str()), kind, o);
-        const double per = 1e3 / static_cast<double>(f.steps);
-        std::printf("  %-9s %6d %8d | %25.3f %8.3f %8.3f %8.3f %8.3f %8.3f | %16.2f %6.2f %6.2f %6.2f\n", kind.c_str(),
-                    f.bodies, f.cells, f.fluid * per, f.ib * per, f.bodies_stage * per, f.contacts * per,
-                    f.output * per, f.wall * per, f.ib / f.fluid, f.bodies_stage / f.fluid, f.output / f.fluid,
-                    f.wall / f.fluid);
-        std::fflush(stdout);
-        n_bodies.push_back(f.bodies);
-        per_step.push_back(f.wall / f.steps);
-        fluid_per_step.push_back(f.fluid / f.steps);
-      }
-      if (n_bodies.size() > 1)
-        std::printf("  %-9s cost per step ~ N^%.2f (the fluid stages ~ N^%.2f; cells grow like N)\n", kind.c_str(),
-                    exponent(n_bodies, per_step), exponent(n_bodies, fluid_per_step));
+    if (report_dir.empty()) {
+      run_set("", sizes, kinds, o, nullptr);
+      return 0;
     }
+    // The report's sets (DIR/scale.csv): rigid disks and wheels at 16 to 1024 bodies, and the beds of
+    // 64 at the papers' stiffness, the wheels also at half the springs' sub-step and with the
+    // collision-time law.
+    const std::string path = report_dir + "/scale.csv";
+    std::FILE* csv = std::fopen(path.c_str(), "w");
+    if (csv == nullptr) throw std::runtime_error("cannot write " + path);
+    std::fprintf(csv, "# bench_scale --report: ms per step from the solver's stage timers, one thread, %d steps\n",
+                 o.steps);
+    std::fprintf(csv, "set,kind,bodies,cells,steps,fluid,ib,bodies_stage,contacts,output,run\n");
+    run_set("spread", {"4", "8", "16", "32"}, {"rigid", "wheel"}, o, csv);
+    Options bed = o;
+    bed.bed = true;
+    run_set("bed", {"8"}, {"rigid", "wheel"}, bed, csv);
+    Options half = bed;
+    half.outer_step_fraction = 0.5;
+    run_set("bed_outer_step_0.5", {"8"}, {"wheel"}, half, csv);
+    Options collision = bed;
+    collision.collision_time = true;
+    run_set("bed_collision_time", {"8"}, {"rigid", "wheel"}, collision, csv);
+    std::fclose(csv);
+    std::printf("written %s\n", path.c_str());
   } catch (const std::exception& e) {
     std::fprintf(stderr, "bench_scale: %s\n", e.what());
     return 1;

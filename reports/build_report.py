@@ -970,6 +970,7 @@ def document(build, source, fig_dir):
     bench.work_precision_section(out, build, fig_dir, source)
     bench.stability_section(out, build, fig_dir)
     bench.overhead_section(out, build)
+    bench.scale_section(out, build, fig_dir)
     bench.forcing_passes_section(out, build, source)
     sweeps.sweeps_section(out, build, fig_dir)
     trace.traceability_section(out, source, defined, tests)

@@ -624,6 +624,77 @@ def overhead_section(out, build):
                                  "The one-body scene evaluates wall contacts but examines no CDS pair."))
 
 
+def scale_section(out, build, fig_dir):
+    """Cost against the number of bodies (BUILD/bench/scale.csv, bench_scale --report): each stage's
+    ms per step against N for rigid disks and wheels, the least-squares exponents, the ratios to the
+    fluid stages at 1024 bodies and in the beds, against issue targets that are ibms's own."""
+    out.append(r"\section{Cost against the number of bodies}")
+    rows = _rows(os.path.join(build, "bench", "scale.csv"))
+    if not rows:
+        out.append(r"\emph{Not run at this level: no \texttt{bench/scale.csv} (run \texttt{bench/bench\_scale "
+                   r"--report DIR}); \texttt{bench/README.md} gives the figures.}" + "\n")
+        return
+    stages = [("fluid", "fluid stages"), ("ib", "immersed boundary"), ("bodies_stage", "bodies (with contacts)"),
+              ("output", "output"), ("run", "whole step")]
+    spread = OrderedDict()
+    for r in rows:
+        if r["set"] == "spread":
+            spread.setdefault(r["kind"], []).append(r)
+    out.append("From \\texttt{bench/bench\\_scale --report} (\\texttt{bench/README.md}): $n\\times n$ bodies settling "
+               "in a closed box whose grid grows with them (1.6 $D$ per body and direction, $D/h = 16$, 50 rim points, "
+               "the papers' contacts $k_{Dn} = 10^7$ with contact spheres on the rim points, the papers' coupling, "
+               "series every 10 steps, the final snapshot and checkpoint), 40 steps on one thread, each stage's "
+               "time from the solver's own timers; the beds start with their bodies in touch. These are ibms's "
+               "measurements against its own cost targets, not a validation.\n")
+    if spread:
+        fig, axes = plt.subplots(1, len(spread), figsize=(3.3 * len(spread), 2.9), squeeze=False)
+        table = []
+        for ax, (kind, rs) in zip(axes.flat, spread.items()):
+            n = [_float(r["bodies"]) for r in rs]
+            for key, label in stages:
+                y = [_float(r[key]) for r in rs]
+                if all(v > 0 for v in y):
+                    ax.loglog(n, y, "o-", ms=3, label="%s ($N^{%.2f}$)" % (label, log_log_slope(n, y)))
+            ax.set_title({"rigid": "rigid disks", "wheel": "mass-spring wheels"}.get(kind, kind), fontsize=9)
+            ax.set_xlabel("bodies $N$", fontsize=8)
+            ax.set_ylabel("ms per step", fontsize=8)
+            ax.tick_params(labelsize=7)
+            ax.legend(fontsize=7, loc="upper left")
+            last = rs[-1]
+            fluid = _float(last["fluid"])
+            table.append([esc(kind), last["bodies"], num(_float(last["run"]) / fluid, 3),
+                          num(_float(last["bodies_stage"]) / fluid, 3), num(_float(last["output"]) / fluid, 3),
+                          num(log_log_slope(n, [_float(r["run"]) for r in rs]), 3),
+                          num(log_log_slope(n, [_float(r["fluid"]) for r in rs]), 3)])
+        path = os.path.join(fig_dir, "scale.pdf")
+        fig.tight_layout()
+        figs.save(fig, path)
+        out.append(figure(path, "Milliseconds per step of each stage against the number of bodies (16 to 1024, the "
+                                "cells growing like $N$); legend: the least-squares exponent of each stage."))
+        out.append(longtable("lrrrrrr", ["kind", "bodies", "run / fluid", "bodies / fluid", "output / fluid",
+                                         "exponent (run)", "exponent (fluid)"], table,
+                             caption="The largest run of each kind against the fluid stages, and the exponents of "
+                                     "cost per step against $N$ over all sizes. Targets (ibms's own): the whole "
+                                     "run of 1024 rigid disks $\\le 2\\times$ the fluid stages, the bodies stage "
+                                     "$\\le 0.5\\times$ (rigid) and $\\le 1\\times$ (wheels), exponent "
+                                     "$\\le 1.1$."))
+    beds = [r for r in rows if r["set"].startswith("bed")]
+    if beds:
+        names = {"bed": "papers' law ($k_{Dn} = 10^7$)",
+                 "bed_outer_step_0.5": "papers' law, \\texttt{contact.outer\\_step\\_fraction} = 0.5",
+                 "bed_collision_time": "collision-time law (10 fluid steps)"}
+        table = [[names.get(r["set"], esc(r["set"])), esc(r["kind"]), r["bodies"],
+                  num(_float(r["fluid"]), 3), num(_float(r["bodies_stage"]), 3), num(_float(r["contacts"]), 3),
+                  num(_float(r["bodies_stage"]) / _float(r["fluid"]), 3)] for r in beds]
+        out.append(longtable("p{5.2cm}lrrrrr", ["contacts", "kind", "bodies", "fluid [ms]", "bodies [ms]",
+                                                "contacts [ms]", "bodies / fluid"], table,
+                             caption="Beds of bodies in touch at rest under gravity, 40 steps. Target (ibms's "
+                                     "own): the bodies stage $\\le 3\\times$ the fluid stages at the papers' "
+                                     "stiffness. The wheels' outer step (docs/method.md \\S5.4) defaults to "
+                                     "1/16 of their springs' sub-step, which elastic impacts need; these damped "
+                                     "contacts ($e_D = 0.5$) keep their result at 1/2."))
+
+
 def forcing_passes_text(couette, disk):
     """What the forcing-passes tables show, from their rows: the coupling, and how the rim slip and the
     errors change from the fewest to the most passes at the coarsest and finest grid."""

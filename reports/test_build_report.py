@@ -160,6 +160,15 @@ with open(os.path.join(work, "bench", "stability_fluid_synthetic.csv"), "w") as 
             '"blow-up at step 3, t = 0.07: CFL number 1.2 exceeds run.max_cfl = 1 in cell (3, 63) at x = 0.05_1"\n')
     f.write('no_cfl_guard,1.5,4,0.375,0.023,0.0039,1.8,300,unstable,9,2,2,5,3,"kinetic energy above the bound"\n')
     f.write('no_cfl_guard,0.5,4,0.125,0.0078,0.0039,1.0,1280,stable,0.6,0.1,0.1,1,1,""\n')
+# bench_scale --report: rigid disks whose run grows like N, wheels, and two beds.
+with open(os.path.join(work, "bench", "scale.csv"), "w") as f:
+    f.write("# bench_scale --report\nset,kind,bodies,cells,steps,fluid,ib,bodies_stage,contacts,output,run\n")
+    for kind, body_ms in (("rigid", 0.007), ("wheel", 0.06)):
+        for n in (16, 64, 256, 1024):
+            f.write("spread,%s,%d,%d,40,%g,%g,%g,%g,%g,%g\n" % (kind, n, 650 * n, 0.075 * n, 0.012 * n, body_ms * n,
+                                                               0.1 * body_ms * n, 0.01 * n, (0.1 + body_ms) * n))
+    f.write("bed,wheel,64,42025,40,5.0,0.6,64.0,60.0,0.5,71.0\n"
+            "bed_outer_step_0.5,wheel,64,42025,40,5.0,0.6,13.0,10.0,0.5,19.0\n")
 with open(os.path.join(work, "bench", "overhead.csv"), "w") as f:
     f.write("scene,stage,seconds_per_step,calls\nfluid_only_cavity_128,simulation_step,,0.0014\n"
             "fluid_only_cavity_128,bare_fluid_solver_step,,0.00136\nfluid_only_cavity_128,ratio,,1.03\n"
@@ -292,6 +301,10 @@ if stage == "tex":
     if not re.search(r"p in time \(N = steps\) & \$\\Delta t\$ & 8, 16, 32 & [^&]+ & 2 & 0\.777[^&]*& "
                      r"\[1\.8, \$\\infty\$\] & \\textcolor\{red\}", orders):
         fail("the time study's order 0.777 is not shown against formal order 2 and band [1.8, inf] as FAIL")
+    scale = tex[tex.index("Cost against the number of bodies"):]
+    if "scale.pdf" not in scale or "rigid & 1024 & 1.43 & 0.0933 & 0.133 & 1 & 1" not in scale \
+            or "outer\\_step\\_fraction} = 0.5 & wheel & 64 & 5 & 13 & 10 & 2.6" not in scale:
+        fail("the scale section lacks its figure, the 1024 rigid disks' ratios and exponents, or the beds' ratio")
     if "time step $\\Delta t$" not in tex:
         fail("the time study's figure caption does not name the time step")
     # README excerpts: labelled as the README's text with its path (their figures are not this

@@ -75,14 +75,14 @@ ONE_CORE_BENCHES = {
 # cylinder grids as default, the fluid cases 1 min (bench/README.md), bench_forcing_passes a guess
 # (a third of its grids); full: bench/README.md's "adds 39 min" for the cylinders, forcing passes a
 # guess. bench_forcing_passes at default: 105 s measured alone on one core (the disk at 1 and 3
-# passes).
+# passes); bench_scale --report 21 s alone on one core.
 FALLBACK_SECONDS = {
     ("bench", "default"): {"work_precision": 100, "work_precision_bodies": 173, "fluid_stability": 202,
-                           "forcing_passes": 105, "stability": 8, "overhead": 2},
+                           "forcing_passes": 105, "stability": 8, "overhead": 2, "scale": 21},
     ("bench", "quick"): {"work_precision": 60, "work_precision_bodies": 173, "fluid_stability": 201,
-                         "forcing_passes": 30, "stability": 40, "overhead": 5},
+                         "forcing_passes": 30, "stability": 40, "overhead": 5, "scale": 21},
     ("bench", "full"): {"work_precision": 600, "work_precision_bodies": 2600, "fluid_stability": 201,
-                        "forcing_passes": 900, "stability": 40, "overhead": 5},
+                        "forcing_passes": 900, "stability": 40, "overhead": 5, "scale": 21},
     ("verification", None): {"verification": 150},
 }
 BENCH_UNKNOWN_SECONDS = 300.0
