@@ -23,6 +23,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -221,12 +222,13 @@ int main(int argc, char** argv) {
                                                      std::string(argv[a + 1]) == "no_slip"))
       o.coupling = argv[++a];
     else if (arg == "--drift" && a + 1 < argc) o.drift = std::atof(argv[++a]);
-    else if (arg == "--outer-fraction" && a + 1 < argc) o.outer_step_fraction = std::atof(argv[++a]);
+    else if (arg == "--outer-fraction" && a + 1 < argc && std::atof(argv[a + 1]) > 0.0 && std::atof(argv[a + 1]) <= 1.0)
+      o.outer_step_fraction = std::atof(argv[++a]);
     else if (arg == "--report" && a + 1 < argc) report_dir = argv[++a];
     else {
       std::fprintf(stderr, "usage: bench_scale [--n 4,8,16,32] [--kinds rigid,wheel,swelling] [--steps 40] [--bed] "
-                           "[--collision-time] [--coupling uhlmann|no_slip] [--drift X] [--outer-fraction F]\n"
-                           "       bench_scale --report DIR\n");
+                           "[--collision-time] [--coupling uhlmann|no_slip] [--drift X] [--outer-fraction F in (0, 1]]\n"
+                           "       bench_scale --report DIR [--steps 40]\n");
       return 2;
     }
   }
@@ -238,14 +240,18 @@ int main(int argc, char** argv) {
     // The report's sets (DIR/scale.csv): rigid disks and wheels at 16 to 1024 bodies, and the beds of
     // 64 at the papers' stiffness, the wheels also at half the springs' sub-step and with the
     // collision-time law.
+    // Every set from the defaults (the papers' coupling and law), only the step count taken.
+    Options base;
+    base.steps = o.steps;
     const std::string path = report_dir + "/scale.csv";
-    std::FILE* csv = std::fopen(path.c_str(), "w");
+    const std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "w"), &std::fclose);
+    std::FILE* csv = file.get();
     if (csv == nullptr) throw std::runtime_error("cannot write " + path);
     std::fprintf(csv, "# bench_scale --report: ms per step from the solver's stage timers, one thread, %d steps\n",
-                 o.steps);
+                 base.steps);
     std::fprintf(csv, "set,kind,bodies,cells,steps,fluid,ib,bodies_stage,contacts,output,run\n");
-    run_set("spread", {"4", "8", "16", "32"}, {"rigid", "wheel"}, o, csv);
-    Options bed = o;
+    run_set("spread", {"4", "8", "16", "32"}, {"rigid", "wheel"}, base, csv);
+    Options bed = base;
     bed.bed = true;
     run_set("bed", {"8"}, {"rigid", "wheel"}, bed, csv);
     Options half = bed;
@@ -254,7 +260,6 @@ int main(int argc, char** argv) {
     Options collision = bed;
     collision.collision_time = true;
     run_set("bed_collision_time", {"8"}, {"rigid", "wheel"}, collision, csv);
-    std::fclose(csv);
     std::printf("written %s\n", path.c_str());
   } catch (const std::exception& e) {
     std::fprintf(stderr, "bench_scale: %s\n", e.what());

@@ -627,7 +627,7 @@ def overhead_section(out, build):
 def scale_section(out, build, fig_dir):
     """Cost against the number of bodies (BUILD/bench/scale.csv, bench_scale --report): each stage's
     ms per step against N for rigid disks and wheels, the least-squares exponents, the ratios to the
-    fluid stages at 1024 bodies and in the beds, against issue targets that are ibms's own."""
+    fluid stages at 1024 bodies and in the beds, against ibms's own cost targets (bench/README.md)."""
     out.append(r"\section{Cost against the number of bodies}")
     rows = _rows(os.path.join(build, "bench", "scale.csv"))
     if not rows:
@@ -636,16 +636,23 @@ def scale_section(out, build, fig_dir):
         return
     stages = [("fluid", "fluid stages"), ("ib", "immersed boundary"), ("bodies_stage", "bodies (with contacts)"),
               ("output", "output"), ("run", "whole step")]
+    def ratio(a, b):
+        return num(a / b, 3) if a > 0 and b > 0 else "--"
+
+    def slope(x, y):
+        return num(log_log_slope(x, y), 3) if len(x) > 1 and all(v > 0 for v in x + y) else "--"
+
     spread = OrderedDict()
     for r in rows:
         if r["set"] == "spread":
             spread.setdefault(r["kind"], []).append(r)
+    steps = sorted({r["steps"] for r in rows})
     out.append("From \\texttt{bench/bench\\_scale --report} (\\texttt{bench/README.md}): $n\\times n$ bodies settling "
                "in a closed box whose grid grows with them (1.6 $D$ per body and direction, $D/h = 16$, 50 rim points, "
                "the papers' contacts $k_{Dn} = 10^7$ with contact spheres on the rim points, the papers' coupling, "
-               "series every 10 steps, the final snapshot and checkpoint), 40 steps on one thread, each stage's "
+               "series every 10 steps, the final snapshot and checkpoint), %s steps on one thread, each stage's "
                "time from the solver's own timers; the beds start with their bodies in touch. These are ibms's "
-               "measurements against its own cost targets, not a validation.\n")
+               "measurements against its own cost targets, not a validation.\n" % ", ".join(steps))
     if spread:
         fig, axes = plt.subplots(1, len(spread), figsize=(3.3 * len(spread), 2.9), squeeze=False)
         table = []
@@ -653,7 +660,7 @@ def scale_section(out, build, fig_dir):
             n = [_float(r["bodies"]) for r in rs]
             for key, label in stages:
                 y = [_float(r[key]) for r in rs]
-                if all(v > 0 for v in y):
+                if len(y) > 1 and all(v > 0 for v in n + y):
                     ax.loglog(n, y, "o-", ms=3, label="%s ($N^{%.2f}$)" % (label, log_log_slope(n, y)))
             ax.set_title({"rigid": "rigid disks", "wheel": "mass-spring wheels"}.get(kind, kind), fontsize=9)
             ax.set_xlabel("bodies $N$", fontsize=8)
@@ -662,10 +669,9 @@ def scale_section(out, build, fig_dir):
             ax.legend(fontsize=7, loc="upper left")
             last = rs[-1]
             fluid = _float(last["fluid"])
-            table.append([esc(kind), last["bodies"], num(_float(last["run"]) / fluid, 3),
-                          num(_float(last["bodies_stage"]) / fluid, 3), num(_float(last["output"]) / fluid, 3),
-                          num(log_log_slope(n, [_float(r["run"]) for r in rs]), 3),
-                          num(log_log_slope(n, [_float(r["fluid"]) for r in rs]), 3)])
+            table.append([esc(kind), last["bodies"], ratio(_float(last["run"]), fluid),
+                          ratio(_float(last["bodies_stage"]), fluid), ratio(_float(last["output"]), fluid),
+                          slope(n, [_float(r["run"]) for r in rs]), slope(n, [_float(r["fluid"]) for r in rs])])
         path = os.path.join(fig_dir, "scale.pdf")
         fig.tight_layout()
         figs.save(fig, path)
@@ -685,10 +691,10 @@ def scale_section(out, build, fig_dir):
                  "bed_collision_time": "collision-time law (10 fluid steps)"}
         table = [[names.get(r["set"], esc(r["set"])), esc(r["kind"]), r["bodies"],
                   num(_float(r["fluid"]), 3), num(_float(r["bodies_stage"]), 3), num(_float(r["contacts"]), 3),
-                  num(_float(r["bodies_stage"]) / _float(r["fluid"]), 3)] for r in beds]
+                  ratio(_float(r["bodies_stage"]), _float(r["fluid"]))] for r in beds]
         out.append(longtable("p{5.2cm}lrrrrr", ["contacts", "kind", "bodies", "fluid [ms]", "bodies [ms]",
                                                 "contacts [ms]", "bodies / fluid"], table,
-                             caption="Beds of bodies in touch at rest under gravity, 40 steps. Target (ibms's "
+                             caption="Beds: bodies started in touch, settling under gravity. Target (ibms's "
                                      "own): the bodies stage $\\le 3\\times$ the fluid stages at the papers' "
                                      "stiffness. The wheels' outer step (docs/method.md \\S5.4) defaults to "
                                      "1/16 of their springs' sub-step, which elastic impacts need; these damped "

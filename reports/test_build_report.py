@@ -301,6 +301,8 @@ if stage == "tex":
     if not re.search(r"p in time \(N = steps\) & \$\\Delta t\$ & 8, 16, 32 & [^&]+ & 2 & 0\.777[^&]*& "
                      r"\[1\.8, \$\\infty\$\] & \\textcolor\{red\}", orders):
         fail("the time study's order 0.777 is not shown against formal order 2 and band [1.8, inf] as FAIL")
+    if "Cost against the number of bodies" not in tex:
+        fail("no section 'Cost against the number of bodies'")
     scale = tex[tex.index("Cost against the number of bodies"):]
     if "scale.pdf" not in scale or "rigid & 1024 & 1.43 & 0.0933 & 0.133 & 1 & 1" not in scale \
             or "outer\\_step\\_fraction} = 0.5 & wheel & 64 & 5 & 13 & 10 & 2.6" not in scale:

@@ -54,7 +54,7 @@ struct ContactModel {
   double steps_per_contact = 20.0;       // [-]
   InnerStepBound inner_step = InnerStepBound::listed_pairs;
   // The inner loop's outer step as a fraction of the group's springs' stable sub-step, in (0, 1]
-  // (inner_loop_outer_fraction above: the default, and why).
+  // (core/options.hpp's inner_loop_outer_fraction: the default, and why).
   double outer_step_fraction = inner_loop_outer_fraction;  // [-]
 
   // std::invalid_argument naming the first inconsistent parameter.

@@ -76,8 +76,8 @@ enum class InnerStepBound { listed_pairs, lightest_point };
 // quarter, <= 0.23 % at an eighth, <= 0.11 % at a sixteenth, and the centre-of-mass rebound from the
 // wall at k_Dn = 1e7 is wrong up to a quarter (0.273 against 0.128) and within 1.6 % at an eighth,
 // 0.9 % at a sixteenth (the rebounds of the elastic pair at k_Dn = 1e4 are chaotic: not compared).
-// With the fluid (test_multirate_substeps: damped wheels, e_D = 0.8) the largest overlap lies 2.35 %
-// below the shared sub-step's at an eighth, 1.07 % at a sixteenth.
+// With the fluid (test_multirate_substeps: damped wheels, e_D = 0.8) the largest overlap lies 0.9 %
+// below the shared sub-step's at a sixteenth and 2.9 % above it at a half.
 inline constexpr double inner_loop_outer_fraction = 0.0625;
 // A scene may take a larger fraction (ContactModel::outer_step_fraction, contact.outer_step_fraction):
 // where the contacts are damped and slow, as in a settling bed, the sixteenth costs without changing

@@ -272,8 +272,9 @@ std::vector<std::string> Simulation::stage_names() const {
                                       ? fmt::format("t_c / {:g} of the fastest mode its listed CDS pairs can form",
                                                     contact_model_.steps_per_contact)
                                       : std::string("the group's contact sub-step")) +
-                                 fmt::format(", springs and fluid held over outer steps of {:g} of the springs' "
-                                             "sub-step)", contact_model_.outer_step_fraction)
+                                 fmt::format(", springs and fluid held over outer steps of {:g} (1/{:g}) of the springs' "
+                                             "sub-step)", contact_model_.outer_step_fraction,
+                                             1.0 / contact_model_.outer_step_fraction)
                            : "  contacts (DEM spring-dashpots on CDS, " + law + ", every sub-step; walls)");
     if (has_pair_search()) stages.push_back("  pair search (CDS: body-box broad phase, cell list in periodic boxes; every sub-step)");
   }

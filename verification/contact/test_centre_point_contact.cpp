@@ -59,7 +59,7 @@ CentreTrack push_centre_to_wall(bool centre_point, ContactStepping stepping) {
   const double duration = 0.25;  // the rim drifts 0.06 with the centre point's momentum: clear of the wall
   if (stepping == ContactStepping::inner_loop) {
     // Outer steps of at most 1e-3 (the centre point moves 0.006 in one), so that its track is sampled finely.
-    const double outer = std::min(inner_loop_outer_fraction * spring_dt, 1e-3);
+    const double outer = std::min(model.outer_step_fraction * spring_dt, 1e-3);
     const int n_inner = static_cast<int>(std::ceil(outer / contact_dt));
     BOOST_TEST_REQUIRE(n_inner >= 2);  // the inner loop does the contact work
     for (long k = 0; k * outer < duration; ++k) {

@@ -116,6 +116,8 @@ void check_same_scene(const ibms::Scene& a, const ibms::Scene& b) {
   BOOST_TEST((same(a.contact.cds_radius, b.contact.cds_radius) && same(a.contact.cds_radius_fraction,
                                                                         b.contact.cds_radius_fraction)));
   BOOST_TEST(a.contact.walls == b.contact.walls);
+  BOOST_TEST((a.contact.time_stepping == b.contact.time_stepping && a.contact.inner_step == b.contact.inner_step));
+  BOOST_TEST(same(a.contact.outer_step_fraction, b.contact.outer_step_fraction));
   BOOST_TEST((a.output.file == b.output.file && a.output.series_every == b.output.series_every));
   BOOST_TEST((same(a.output.snapshot_interval, b.output.snapshot_interval) &&
               a.output.centreline_profiles == b.output.centreline_profiles));
@@ -155,6 +157,19 @@ BOOST_AUTO_TEST_CASE(preconditioner_drift_is_auto_or_a_number_and_reads_back) {
     const ibms::Scene scene = ibms::read_scene_string(good_scene_text(), "good.toml", {"ibm.preconditioner_drift=" + value});
     BOOST_TEST(scene.ibm.preconditioner_drift ==
                (value == "\"auto\"" ? ibms::IbmSpec::preconditioner_drift_auto : std::stod(value)));
+    check_same_scene(scene, ibms::read_scene_string(scene.resolved_text, "good.toml"));
+  }
+}
+
+// contact.outer_step_fraction is 1/16 by default (inner_loop_outer_fraction) or a number in (0, 1];
+// it reads back from the resolved scene.
+BOOST_AUTO_TEST_CASE(outer_step_fraction_defaults_to_a_sixteenth_and_reads_back) {
+  const ibms::Scene by_default = ibms::read_scene_string(good_scene_text(), "good.toml");
+  BOOST_TEST(by_default.contact.outer_step_fraction == 0.0625);
+  for (const double value : {0.5, 1.0}) {
+    const ibms::Scene scene =
+        ibms::read_scene_string(good_scene_text(), "good.toml", {"contact.outer_step_fraction=" + std::to_string(value)});
+    BOOST_TEST(scene.contact.outer_step_fraction == value);
     check_same_scene(scene, ibms::read_scene_string(scene.resolved_text, "good.toml"));
   }
 }

@@ -12,7 +12,9 @@
 //    contact sub-step, in the step in which the contact begins.
 // These runs take the shared sub-step (contact.time_stepping = "shared"). The contacts' inner loop
 // (contact/contact_subcycle.hpp), in the same per-group runs with the fluid, against them: the
-// deepest overlap within 2 % and the colliding wheels' paths within 1e-3 D.
+// deepest overlap within 2 % and the colliding wheels' paths within 1e-3 D; with the scene's outer
+// step at half the springs' sub-step (contact.outer_step_fraction), fewer sub-steps and the paths
+// within 2e-4 D, the overlap within 4 %.
 // Checks docs/method.md §5.3, §5.4: the groups' own sub-steps (§5.3, "Groups") and the contacts'
 // inner loop with the fluid (§5.4: the largest overlap within 2 % of the shared sub-step's).
 #define BOOST_TEST_MODULE multirate_substeps
@@ -134,9 +136,9 @@ BOOST_AUTO_TEST_CASE(inner_loop_matches_the_shared_substep_with_the_fluid) {
 
 // The scene's outer step (contact.outer_step_fraction) reaches the planner: at half the springs'
 // sub-step the run takes fewer than half the default's body sub-steps (2464 against 6872), and this
-// damped impact (e_D = 0.8) keeps the wheels' paths within 1e-3 D of the shared sub-step's, as the
-// default does (8.9e-5 D against 5.5e-5 D); the largest overlap moves more: +2.9 % against the
-// default's -0.9 % (bounded at 4 % here), the cost of holding the springs over the impact.
+// damped impact (e_D = 0.8) keeps the wheels' paths within 2e-4 D of the shared sub-step's (8.9e-5 D;
+// the default's 5.5e-5 D); the largest overlap moves more: +2.9 % against the default's -0.9 %
+// (bounded at 4 % here), the cost of holding the springs over the impact.
 BOOST_AUTO_TEST_CASE(the_scene_sets_the_inner_loops_outer_step) {
   const Outcome shared = run("per_group", "shared");
   const Outcome fine = run("per_group", "inner_loop");
@@ -153,5 +155,5 @@ BOOST_AUTO_TEST_CASE(the_scene_sets_the_inner_loops_outer_step) {
   BOOST_TEST(coarse.body_substeps < fine.body_substeps / 2);
   BOOST_TEST(coarse.max_overlap <= 1.04 * shared.max_overlap);
   BOOST_TEST(coarse.max_overlap >= 0.96 * shared.max_overlap);
-  BOOST_TEST(largest_shift <= 1e-3 * diameter);
+  BOOST_TEST(largest_shift <= 2e-4 * diameter);
 }
