@@ -687,7 +687,7 @@ def scale_section(out, build, fig_dir):
     beds = [r for r in rows if r["set"].startswith("bed")]
     if beds:
         names = {"bed": "papers' law ($k_{Dn} = 10^7$)",
-                 "bed_outer_step_0.5": "papers' law, \\texttt{contact.outer\\_step\\_fraction} = 0.5",
+                 "bed_outer_step_0.5": "papers' law, outer step 1/2",
                  "bed_collision_time": "collision-time law (10 fluid steps)"}
         table = [[names.get(r["set"], esc(r["set"])), esc(r["kind"]), r["bodies"],
                   num(_float(r["fluid"]), 3), num(_float(r["bodies_stage"]), 3), num(_float(r["contacts"]), 3),
@@ -696,9 +696,9 @@ def scale_section(out, build, fig_dir):
                                                 "contacts [ms]", "bodies / fluid"], table,
                              caption="Beds: bodies started in touch, settling under gravity. Target (ibms's "
                                      "own): the bodies stage $\\le 3\\times$ the fluid stages at the papers' "
-                                     "stiffness. The wheels' outer step (docs/method.md \\S5.4) defaults to "
-                                     "1/16 of their springs' sub-step, which elastic impacts need; these damped "
-                                     "contacts ($e_D = 0.5$) keep their result at 1/2."))
+                                     "stiffness. The wheels' outer step (\\texttt{contact.outer\\_step\\_fraction}, docs/method.md "
+                                     "\\S5.4) defaults to 1/16 of their springs' sub-step, which elastic impacts need; "
+                                     "these damped contacts ($e_D = 0.5$) keep their result at 1/2."))
 
 
 def forcing_passes_text(couette, disk):

@@ -305,7 +305,7 @@ if stage == "tex":
         fail("no section 'Cost against the number of bodies'")
     scale = tex[tex.index("Cost against the number of bodies"):]
     if "scale.pdf" not in scale or "rigid & 1024 & 1.43 & 0.0933 & 0.133 & 1 & 1" not in scale \
-            or "outer\\_step\\_fraction} = 0.5 & wheel & 64 & 5 & 13 & 10 & 2.6" not in scale:
+            or "papers' law, outer step 1/2 & wheel & 64 & 5 & 13 & 10 & 2.6" not in scale:
         fail("the scale section lacks its figure, the 1024 rigid disks' ratios and exponents, or the beds' ratio")
     if "time step $\\Delta t$" not in tex:
         fail("the time study's figure caption does not name the time step")
