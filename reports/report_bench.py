@@ -62,6 +62,16 @@ def log_log_slope(x, y):
     return sum((a - mx) * (b - my) for a, b in zip(lx, ly)) / sxx if sxx > 0 else math.nan
 
 
+def _bench_section(out, build, title, name, missing):
+    """Opens the section `title` of one bench and returns the rows of BUILD/bench/<name>; without
+    them it says so (`missing`, LaTeX) and returns None."""
+    out.append(r"\section{%s}" % title)
+    rows = _rows(os.path.join(build, "bench", name))
+    if not rows:
+        out.append(r"\emph{%s}" % missing + "\n")
+    return rows
+
+
 def kernel_moment_section(out, build):
     out.append(r"\section{Kernel moments}")
     path = os.path.join(build, "verification_results", "kernel_moments.csv")
@@ -587,10 +597,9 @@ def fluid_stability_maps(out, files, fig_dir):
 
 
 def overhead_section(out, build):
-    out.append(r"\section{A scene pays only for what it uses}")
-    rows = _rows(os.path.join(build, "bench", "overhead.csv"))
+    rows = _bench_section(out, build, "A scene pays only for what it uses", "overhead.csv",
+                          r"Not run: no \texttt{bench/overhead.csv} (run \texttt{bench/bench\_overhead}).")
     if not rows:
-        out.append(r"\emph{Not run: no \texttt{bench/overhead.csv} (run \texttt{bench/bench\_overhead}).}" + "\n")
         return
     get = {(r["scene"], r["stage"]): r for r in rows}
     ratio = get.get(("fluid_only_cavity_128", "ratio"))
@@ -628,11 +637,10 @@ def scale_section(out, build, fig_dir):
     """Cost against the number of bodies (BUILD/bench/scale.csv, bench_scale --report): each stage's
     ms per step against N for rigid disks and wheels, the least-squares exponents, the ratios to the
     fluid stages at 1024 bodies and in the beds, against ibms's own cost targets (bench/README.md)."""
-    out.append(r"\section{Cost against the number of bodies}")
-    rows = _rows(os.path.join(build, "bench", "scale.csv"))
+    rows = _bench_section(out, build, "Cost against the number of bodies", "scale.csv",
+                          r"Not run at this level: no \texttt{bench/scale.csv} (run \texttt{bench/bench\_scale "
+                          r"--report DIR}); \texttt{bench/README.md} gives the figures.")
     if not rows:
-        out.append(r"\emph{Not run at this level: no \texttt{bench/scale.csv} (run \texttt{bench/bench\_scale "
-                   r"--report DIR}); \texttt{bench/README.md} gives the figures.}" + "\n")
         return
     stages = [("fluid", "fluid stages"), ("ib", "immersed boundary"), ("bodies_stage", "bodies (with contacts)"),
               ("output", "output"), ("run", "whole step")]
@@ -756,11 +764,9 @@ def forcing_passes_text(couette, disk):
 def forcing_passes_section(out, build, source):
     """Multi-direct forcing study (BUILD/bench/forcing_passes.csv, bench/bench_forcing_passes); the
     disk's speeds against the settling case's Glowinski et al. value (its reference file)."""
-    out.append(r"\section{Multi-direct forcing passes}")
-    rows = _rows(os.path.join(build, "bench", "forcing_passes.csv"))
+    rows = _bench_section(out, build, "Multi-direct forcing passes", "forcing_passes.csv",
+                          r"Not run: no \texttt{bench/forcing\_passes.csv} (run \texttt{bench/bench\_forcing\_passes}).")
     if not rows:
-        out.append(r"\emph{Not run: no \texttt{bench/forcing\_passes.csv} (run "
-                   r"\texttt{bench/bench\_forcing\_passes}).}" + "\n")
         return
     couette = [r for r in rows if r["case"] == "couette"]
     disk = [r for r in rows if r["case"] != "couette"]
