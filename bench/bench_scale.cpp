@@ -13,16 +13,21 @@
 // of the papers' coupling (ibm.coupling = "uhlmann", the default); --drift X: its
 // ibm.preconditioner_drift (0 by default: each moving body's block built again at every move).
 // --outer-fraction F: contact.outer_step_fraction (the inner loop's outer step, docs/method.md §5.4).
+// --restitution E: e_D of the bodies and the walls (0.5 by default).
+// --scene FILE: write the scene of the first size and kind to FILE (its output FILE with .h5 for .toml)
+// instead of running anything, so that `ibms run FILE` repeats a bench run and keeps its output.
 // --report DIR: the report's sets, written to DIR/scale.csv (rigid disks and wheels at 16 to 1024
 // bodies; beds of 64 with the papers' law, the wheels also at outer step 0.5 and with collision time).
 // Usage: bench_scale [--n 4,8,16,32] [--kinds rigid,wheel,swelling] [--steps 40] [--bed] [--collision-time]
-//                    [--coupling uhlmann|no_slip] [--drift X] [--outer-fraction F]
+//                    [--coupling uhlmann|no_slip] [--drift X] [--outer-fraction F] [--restitution E]
+//                    [--scene FILE]
 //        bench_scale --report DIR
 #include <unistd.h>
 
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <memory>
 #include <sstream>
 #include <stdexcept>
@@ -50,6 +55,7 @@ struct Options {
   std::string coupling = "uhlmann";
   double drift = 0.0;
   double outer_step_fraction = 0.0;  // contact.outer_step_fraction; 0: the scene's default
+  double restitution = 0.5;          // e_D of the bodies and the walls
 };
 
 // The scene of n x n bodies of `kind` (rigid | wheel | swelling) as TOML.
@@ -92,13 +98,13 @@ coupling = "{}"
       text += fmt::format("[[bodies]]\ncentre = [{}, {}]\ndiameter = {}\nn_surface_points = {}\ndensity = 1.5\n", x, y,
                           diameter, rim_points);
       if (kind == "rigid") text += "kind = \"rigid\"\n";
-      else text += "spring_stiffness = 2.0e4\nrestitution_coefficient = 0.5\n";
+      else text += fmt::format("spring_stiffness = 2.0e4\nrestitution_coefficient = {}\n", o.restitution);
       if (kind == "swelling")
         text += "[bodies.swelling]\nonset_time = 0.0\nrate = 0.1\nmax_diameter = 1.1\n";
     }
   text += collision_time ? "[contact]\nmodel = \"collision_time\"\n" : "[contact]\nstiffness = 1.0e7\n";
   if (o.outer_step_fraction > 0.0) text += fmt::format("outer_step_fraction = {}\n", o.outer_step_fraction);
-  text += fmt::format(R"(restitution_coefficient = 0.5
+  text += fmt::format(R"(restitution_coefficient = {}
 cds_radius = {}
 walls = true
 [output]
@@ -106,7 +112,7 @@ file = "{}"
 series_every = 10
 centreline_profiles = false
 progress = false
-)", 0.5 * diameter / cells_per_diameter, output);
+)", o.restitution, 0.5 * diameter / cells_per_diameter, output);
   return text;
 }
 
@@ -210,7 +216,7 @@ void run_set(const std::string& set, const std::vector<std::string>& sizes, cons
 int main(int argc, char** argv) {
   std::vector<std::string> sizes{"4", "8", "16", "32"}, kinds{"rigid", "wheel", "swelling"};
   Options o;
-  std::string report_dir;
+  std::string report_dir, scene_file;
   for (int a = 1; a < argc; ++a) {
     const std::string arg = argv[a];
     if (arg == "--n" && a + 1 < argc) sizes = split(argv[++a]);
@@ -224,15 +230,31 @@ int main(int argc, char** argv) {
     else if (arg == "--drift" && a + 1 < argc) o.drift = std::atof(argv[++a]);
     else if (arg == "--outer-fraction" && a + 1 < argc && std::atof(argv[a + 1]) > 0.0 && std::atof(argv[a + 1]) <= 1.0)
       o.outer_step_fraction = std::atof(argv[++a]);
+    else if (arg == "--restitution" && a + 1 < argc && std::atof(argv[a + 1]) >= 0.0 && std::atof(argv[a + 1]) <= 1.0)
+      o.restitution = std::atof(argv[++a]);
+    else if (arg == "--scene" && a + 1 < argc) scene_file = argv[++a];
     else if (arg == "--report" && a + 1 < argc) report_dir = argv[++a];
     else {
       std::fprintf(stderr, "usage: bench_scale [--n 4,8,16,32] [--kinds rigid,wheel,swelling] [--steps 40] [--bed] "
-                           "[--collision-time] [--coupling uhlmann|no_slip] [--drift X] [--outer-fraction F in (0, 1]]\n"
+                           "[--collision-time] [--coupling uhlmann|no_slip] [--drift X] [--outer-fraction F in (0, 1]] "
+                           "[--restitution E in [0, 1]] [--scene FILE]\n"
                            "       bench_scale --report DIR [--steps 40]\n");
       return 2;
     }
   }
   try {
+    if (!scene_file.empty()) {
+      std::filesystem::path output(scene_file);
+      output.replace_extension(".h5");
+      const std::string text = scene_text(std::stoi(sizes.front()), kinds.front(), o, output.string());
+      read_scene_string(text, scene_file);  // the bench's own scene: refuse one the solver would refuse
+      std::ofstream file(scene_file);
+      file << text;
+      if (!file.flush()) throw std::runtime_error("cannot write " + scene_file);
+      std::printf("written %s (ibms run %s writes %s)\n", scene_file.c_str(), scene_file.c_str(),
+                  output.string().c_str());
+      return 0;
+    }
     if (report_dir.empty()) {
       run_set("", sizes, kinds, o, nullptr);
       return 0;
