@@ -432,6 +432,12 @@ OWN_METRICS = (r"GCI|wheel / rigid|observed order|approach to the D = 0.30 run|b
                r"|control-volume|immersed-boundary c_D|over the one before|^Richardson value \[")
 
 
+# Lines of a case's variant runs beside its shipped scenes: the papers' coupling kept one key away
+# and the collision-time contact law. At equal standing a page-1 headline speaks for the case as
+# shipped, not for a variant.
+VARIANT_RUNS = r"^(?:papers' coupling|collision_time): "
+
+
 def finest_grids(results):
     """Finest 'D/h = N' per results case (None where the metrics name no grid)."""
     finest = {}
@@ -548,17 +554,21 @@ def _case_verdict(c):
     # quantity (PRINCIPAL) where it is judged on its published bounds; then the worst figure, a
     # figure judged on published bounds before one judged on a target the case sets (check
     # tolerance, case_criteria.hpp, README) at equal verdict, then one of the case's class before
-    # one of ibms against itself, the farthest from its target first.
+    # one of ibms against itself, then one of the shipped scenes before one of a variant run, the
+    # farthest from its target first.
     rank = {"fail": 3, "miss": 2, "pass": 1}
     principal = PRINCIPAL.get(c["folder"])
 
     # At equal verdict a figure of the case's own class (its README mark) goes before one of ibms
     # against itself (OWN_METRICS: GCI, wheel / rigid, ...): a published case's headline is not an
-    # own figure while it has a published one of the same verdict.
+    # own figure while it has a published one of the same verdict; then a figure of the shipped
+    # scenes before one of a variant run (VARIANT_RUNS).
     def key(r):
         published = r["target"] is not None and r["target"].published
         is_principal = bool(principal and published and re.search(principal, r["metric"]))
-        return (r["verdict"] == "fail", is_principal, rank[r["verdict"]], published, not r["own"], r["severity"])
+        shipped = not re.search(VARIANT_RUNS, r["metric"])
+        return (r["verdict"] == "fail", is_principal, rank[r["verdict"]], published, not r["own"], shipped,
+                r["severity"])
     c["headline"] = max(judged, key=key) if judged else None
 
 
