@@ -103,6 +103,28 @@ def readme_summary(source, case):
                 continue
             started = True
             lines.append(s)
+    return _excerpt(lines)
+
+
+def readme_titled_paragraph(source, case, title):
+    """The paragraph of validation/<case>/README.md whose bold title starts with `title` (a regex),
+    as readme_summary gives it: (text, cut), or None."""
+    path = os.path.join(source, "validation", case, "README.md")
+    if not os.path.isfile(path):
+        return None
+    lines = []
+    with open(path, encoding="utf-8", errors="replace") as f:
+        for line in f:
+            s = line.strip()
+            if lines and not s:
+                break
+            if lines or re.match(r"\*\*(?:%s)" % title, s):
+                lines.append(s)
+    return _excerpt(lines)
+
+
+def _excerpt(lines):
+    """README lines as one quoted text: (text, cut) or None."""
     # Markdown kept (code spans, ASCII notation): the quoting code sets it as LaTeX (md_text).
     text = join_lines(lines).replace("**", "")
     # Pointers to the project's issue tracker mean nothing to a reader of the report.
@@ -205,13 +227,20 @@ def grids_text(params, rows):
     return ("$D/h$ = " + ", ".join(sorted(found, key=float))) if found else "--"
 
 
-def grid_statement(params):
-    """What the grids this level ran allow: one grid (no estimate), two (a difference only), or
-    three and more (orders and GCIs, in the results, where the sequence converges)."""
+def grid_statement(params, source, case):
+    """What the grids this level ran allow: one grid (no estimate; the README's own statement where
+    it says why the case has no grid study), two (a difference only), or three and more (orders and
+    GCIs, in the results, where the sequence converges)."""
     grids = sorted({(p["nx"], p["ny"]) for p in params if p["nx"] and p["ny"]}, key=lambda g: g[0] * g[1])
     if not grids:
         return None
     if len(grids) == 1:
+        none = readme_titled_paragraph(source, case, "No grid study")
+        if none:
+            text, cut = none
+            return ("One grid (%d$\\times$%d), and no grid study at any level; the case README says why, and "
+                    "what stands for it (\\texttt{validation/%s/README.md}%s): ``%s''" %
+                    (grids[0] + (esc(case), ", its first sentences" if cut else "", md_text(text))))
         return ("One grid (%d$\\times$%d): no grid study and no GCI at this level; the case README gives what "
                 "is known beyond it (finer grids at the paper level, or why there are none)." % grids[0])
     if len(grids) == 2:
@@ -774,7 +803,7 @@ def case_section(out, case, meta, build, source, judged, params, fig_dir):
                    (esc(case), ", its first sentences" if cut else "", md_text(text),
                     r" (the paragraph goes on in the README, under its title)" if cut else "") + "\n")
     parameter_table(out, params)
-    statement = grid_statement(params)
+    statement = grid_statement(params, source, case)
     if statement:
         out.append(r"\noindent\textbf{Numerical uncertainty at this level.} " + statement + "\n")
     if not c:

@@ -10,18 +10,35 @@ _SPECIAL = {"\\": r"\textbackslash{}", "&": r"\&", "%": r"\%", "$": r"\$", "#": 
             # a hyphen stays one ("--set" is no en dash), a backtick no opening quote
             "-": "-{}", "`": r"\textasciigrave{}"}
 _UNICODE = {"≤": r"$\le$", "≥": r"$\ge$", "±": r"$\pm$", "°": r"$^\circ$", "×": r"$\times$",
-            "µ": r"$\mu$", "μ": r"$\mu$", "²": r"$^2$", "³": r"$^3$", "–": "--", "—": "---",
+            "µ": r"$\mu$", "μ": r"$\mu$", "–": "--", "—": "---",
             "−": "-", "‘": "`", "’": "'", "“": "``", "”": "''", "·": r"$\cdot$", "≈": r"$\approx$",
             "∞": r"$\infty$", "Δ": r"$\Delta$", "ρ": r"$\rho$", "ν": r"$\nu$", "§": r"\S{}",
-            "∈": r"$\in$", "→": r"$\to$", "⁻": r"$^-$", "¹": r"$^1$", "⁴": r"$^4$", "⁷": r"$^7$", "⁶": r"$^6$", "⁰": r"$^0$",
+            "∈": r"$\in$", "→": r"$\to$",
             "√": r"$\surd$", "ζ": r"$\zeta$", "ω": r"$\omega$", "δ": r"$\delta$", "π": r"$\pi$",
+            "κ": r"$\kappa$", "τ": r"$\tau$", "∝": r"$\propto$",
+            "∫": r"$\int$",
             "é": r"\'e", "ü": r"\"u", "ö": r"\"o", "ä": r"\"a", "…": "..."}
+
+
+# Unicode superscripts: a run of them is one math group (10⁻⁵ -> 10$^{-5}$), so that joining
+# adjacent math groups (notation) never makes a double superscript.
+_SUPERSCRIPT = {"⁰": "0", "¹": "1", "²": "2", "³": "3", "⁴": "4", "⁵": "5", "⁶": "6", "⁷": "7", "⁸": "8",
+                "⁹": "9", "⁻": "-", "⁺": "+"}
 
 
 def esc(text):
     """Any string from a file made safe for LaTeX text mode (non-ASCII beyond a small map -> ?)."""
     out = []
-    for c in str(text):
+    run = []  # a run of superscript characters, set as one group when it ends
+    for c in list(str(text)) + [None]:
+        if c is not None and c in _SUPERSCRIPT:
+            run.append(_SUPERSCRIPT[c])
+            continue
+        if run:
+            out.append("$^{%s}$" % "".join(run))
+            run = []
+        if c is None:
+            break
         if c in _SPECIAL:
             out.append(_SPECIAL[c])
         elif c in _UNICODE:

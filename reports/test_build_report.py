@@ -12,7 +12,9 @@ rerun row is not; a case's page-1 headline is a figure of its shipped scenes, no
 page-1 row (its headline, though a max c_L of -60 % misses by more), in the page-1 list of misses and in Known limitations; a time study's order below its
 asserted band is FAIL against its formal order; the title block gives the outputs' commit with its
 dirty flag and Basilisk's version; a snapshot's body rims are read as closed rims; README excerpts
-are labelled with their path and end at a sentence, with no ellipsis; no figure text (scripts
+are labelled with their path and end at a sentence, with no ellipsis, and every character of the
+case READMEs has a LaTeX form (none set as '?'); a one-grid case whose README says why it has no
+grid study quotes that paragraph as its numerical uncertainty; no figure text (scripts
 included) prints below 7 pt, and the LaTeX source sets no size below 7 pt (no \tiny, sub- and
 superscripts at 7 pt by \DeclareMathSizes); no control character in the source and a caption on
 every table, page 1's counts table unbroken; a control-volume against immersed-boundary c_D line
@@ -101,6 +103,13 @@ with h5py.File(os.path.join(dfg, "dfg_2d2_20.h5"), "w") as h5:
                          '[ibm]\nkernel = "roma3"\nforcing_passes = 3\n'
                          '[[bodies]]\nkind = "prescribed"\nn_surface_points = 63\n')
     h5["timing/run"] = 117.0
+# One run of a case whose README says why it has no grid study: its section quotes that paragraph.
+cavity = os.path.join(work, "validation", "cavity_swelling_particles")
+os.makedirs(cavity)
+with h5py.File(os.path.join(cavity, "nonswelling.h5"), "w") as h5:
+    h5.attrs["git_commit"] = "0123456789ab"
+    h5.attrs["scene"] = '[domain]\nlength_x = 1.0\nlength_y = 1.0\ncells_x = 100\ncells_y = 100\n'
+    h5["timing/run"] = 20.0
 for comp, coord in (("u", "y"), ("v", "x")):
     with open(os.path.join(case, "lid_driven_cavity_re100_8_centreline_%s.csv" % comp), "w") as f:
         f.write("# synthetic profile\n%s [length],%s [length/time]\n" % (coord, comp))
@@ -299,6 +308,13 @@ if stage == "tex":
     row = next((line for line in summary.splitlines() if "swelling\\_\\allowbreak{}particles}" in line), "")
     if "min rim distance between particles" not in row or "collision" in row:
         fail("the swelling cavity's page-1 headline is not its shipped scene's figure: %r" % row[-300:])
+    # A one-grid case whose README says why it has no grid study quotes that paragraph as its
+    # numerical uncertainty (the spread of perturbed runs, with its figures).
+    section = tex[tex.index("label{case:cavity_swelling_particles}"):]
+    section = section[:section.index("\\section")] if "\\section" in section else section
+    if not re.search(r"Numerical uncertainty at this level.\} One grid \(100\$\\times\$100\), and no grid study at "
+                     r"any level; the case README says why", section) or "0.3352" not in section:
+        fail("the swelling cavity's section does not quote its README's reason for no grid study and its spread")
     # Title block: the outputs' commit with its dirty flag (no CMakeCache.txt here: unknown) and the
     # peer compared with, with its version.
     title = tex[:tex.index("Summary: one row per validation case")]
@@ -327,6 +343,18 @@ if stage == "tex":
     for c, text in excerpts:
         if not re.search(r"[.!?)]\}?$", text.strip()) or text.strip().endswith("..."):
             fail("the README excerpt of %s does not end at a sentence end: ...%r" % (c, text[-60:]))
+    # Every character of the case READMEs, which the report quotes, has a LaTeX form: none is set
+    # as '?' (report_latex.esc).
+    sys.path.insert(0, here)
+    import report_latex  # noqa: E402
+    source_root = os.path.dirname(here)
+    for name in sorted(os.listdir(os.path.join(source_root, "validation"))):
+        readme = os.path.join(source_root, "validation", name, "README.md")
+        if os.path.isfile(readme):
+            with open(readme, encoding="utf-8") as f:
+                unset = sorted({ch for ch in f.read() if ord(ch) > 127 and "?" in report_latex.esc(ch)})
+            if unset:
+                fail("validation/%s/README.md holds characters the report would set as '?': %r" % (name, unset))
     # No text smaller than 7 pt in the LaTeX source: no \tiny, no \fontsize below 7, and math
     # scripts held at 7 pt in the small sizes the tables use.
     sizes = [float(v) for v in re.findall(r"\\fontsize\{([0-9.]+)\}", tex)]
