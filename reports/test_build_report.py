@@ -14,7 +14,8 @@ asserted band is FAIL against its formal order; the title block gives the output
 dirty flag and Basilisk's version; a snapshot's body rims are read as closed rims; README excerpts
 are labelled with their path and end at a sentence, with no ellipsis, and every character of the
 case READMEs has a LaTeX form (none set as '?'); a one-grid case whose README says why it has no
-grid study quotes that paragraph as its numerical uncertainty; no figure text (scripts
+grid study quotes that paragraph as its numerical uncertainty, and one whose README holds a grid
+study of finer grids quotes that; no figure text (scripts
 included) prints below 7 pt, and the LaTeX source sets no size below 7 pt (no \tiny, sub- and
 superscripts at 7 pt by \DeclareMathSizes); no control character in the source and a caption on
 every table, page 1's counts table unbroken; a control-volume against immersed-boundary c_D line
@@ -315,6 +316,11 @@ if stage == "tex":
     if not re.search(r"Numerical uncertainty at this level.\} One grid \(100\$\\times\$100\), and no grid study at "
                      r"any level; the case README says why", section) or "0.3352" not in section:
         fail("the swelling cavity's section does not quote its README's reason for no grid study and its spread")
+    # A one-grid case whose README holds a grid study of finer grids (DFG 2D-2) quotes it.
+    section = tex[tex.index("label{case:dfg_cylinder_2d2}"):]
+    section = section[:section.index("\\section")] if "\\section" in section else section
+    if "the case README's grid study, on finer grids" not in section or "GCI" not in section:
+        fail("the DFG 2D-2 section (one grid) does not quote its README's grid study of finer grids")
     # Title block: the outputs' commit with its dirty flag (no CMakeCache.txt here: unknown) and the
     # peer compared with, with its version.
     title = tex[:tex.index("Summary: one row per validation case")]
