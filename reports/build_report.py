@@ -229,25 +229,23 @@ def grids_text(params, rows):
 
 def grid_statement(params, source, case):
     """What the grids this level ran allow: one grid (no estimate; the README's own statement where
-    it says why the case has no grid study, or its grid study of the paper level's grids), two (a
+    it says why the case has no grid study, or its grid study of finer grids), two (a
     difference only), or three and more (orders and GCIs, in the results, where the sequence
     converges)."""
     grids = sorted({(p["nx"], p["ny"]) for p in params if p["nx"] and p["ny"]}, key=lambda g: g[0] * g[1])
     if not grids:
         return None
     if len(grids) == 1:
-        none = readme_titled_paragraph(source, case, "No grid study")
-        if none:
-            text, cut = none
-            return ("One grid (%d$\\times$%d), and no grid study at any level; the case README says why, and "
-                    "what stands for it (\\texttt{validation/%s/README.md}%s): ``%s''" %
-                    (grids[0] + (esc(case), ", its first sentences" if cut else "", md_text(text))))
-        study = readme_titled_paragraph(source, case, "Grid study")
-        if study:
-            text, cut = study
-            return ("One grid (%d$\\times$%d) at this level; the case README's grid study, on finer grids "
-                    "(\\texttt{validation/%s/README.md}%s): ``%s''" %
-                    (grids[0] + (esc(case), ", its first sentences" if cut else "", md_text(text))))
+        # The README's own paragraph, quoted: why the case has no grid study, or its study of finer grids.
+        for title, lead in (("No grid study", "One grid (%d$\\times$%d), and no grid study at any level; the case "
+                                              "README says why, and what stands for it"),
+                            ("Grid study", "One grid (%d$\\times$%d) at this level; the case README's grid study, "
+                                           "on finer grids")):
+            paragraph = readme_titled_paragraph(source, case, title)
+            if paragraph:
+                text, cut = paragraph
+                return (lead % grids[0] + " (\\texttt{validation/%s/README.md}%s): ``%s''" %
+                        (esc(case), ", its first sentences" if cut else "", md_text(text)))
         return ("One grid (%d$\\times$%d): no grid study and no GCI at this level; the case README gives what "
                 "is known beyond it (finer grids at the paper level, or why there are none)." % grids[0])
     if len(grids) == 2:
