@@ -1009,7 +1009,9 @@ def document(build, source, fig_dir):
     sweeps.sweeps_section(out, build, fig_dir)
     trace.traceability_section(out, source, defined, tests)
     environment_section(out, env, tests)
-    bench.run_times_section(out, tests, folders)
+    # Tests the build labels unit or convergence are no case's runs, whatever their names hold.
+    not_cases = {name for name, labels, _ in defined if {"unit", "convergence"} & set(labels)}
+    bench.run_times_section(out, tests, folders, not_cases)
     known_limitations(out, order, judged)
     cases_mod.bibliography_section(out)
     out.append(r"\end{document}")

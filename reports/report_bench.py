@@ -801,17 +801,18 @@ def forcing_passes_section(out, build, source):
                                      (num(value), report_cases.cite("glowinski2001"))))
 
 
-def run_times_section(out, tests, folders=()):
+def run_times_section(out, tests, folders=(), not_cases=()):
     """Wall time per validation case: the sum of its ctest runs and check. A test belongs to the
     case folder its name starts with (`folders`: the longest such, so settling_disk_rigid_100_run
     goes with settling_disk), else to the name before its grid and run/check suffix
-    (dfg_2d1_20_run -> dfg_2d1); unit tests (test_*) are no case's, whatever their name holds
+    (dfg_2d1_20_run -> dfg_2d1); unit tests (test_*, and `not_cases`: the tests the build labels
+    unit or convergence, such as dfg_check_gates) are no case's, whatever their name holds
     (test_end_of_run_forces)."""
     cases = OrderedDict()
     for t in tests:
         # <case>[_<grid>]_run[_...], _check[_...], _gate[_...], _compare: one row per case, its grids together
         m = re.match(r"(.+?)(?:_\d+)?_(run(_\w+)?|check(_\w+)?|gate(_\w+)?|compare)$", t["name"])
-        if not m or math.isnan(t["seconds"]) or t["name"].startswith("test_"):
+        if not m or math.isnan(t["seconds"]) or t["name"].startswith("test_") or t["name"] in not_cases:
             continue
         owner = max((f for f in folders if t["name"].startswith(f + "_")), key=len, default=m.group(1))
         c = cases.setdefault(owner, [0.0, 0, True])

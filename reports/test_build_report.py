@@ -23,7 +23,7 @@ marked O; the summary plot's band drawn as the band, not out to the point; READM
 notation (code spans, 32^2, c_D, rho_s, sum_l, pi, <=, 1e-4, list items) set as LaTeX, the kernel
 formula one math group, nan errors '--', a claim the whole first sentence of its header (not cut
 at a semicolon, an ellipsis or inside brackets); the run-time table and the verification count
-place test_end_of_run_forces and settling_disk_rigid_* right; and a results.csv case without a
+place test_end_of_run_forces, settling_disk_rigid_* and the unit-labelled dfg_check_gates right; and a results.csv case without a
 README source mark stops the build with an error naming it.
 Stage `pdf` (skipped without LaTeX): the whole report compiles to a PDF whose text holds the same
 figures, with no overfull line in LaTeX's log.
@@ -127,10 +127,15 @@ with open(os.path.join(work, "verification_results", "convergence.csv"), "w") as
 with open(os.path.join(work, "Testing", "Temporary", "LastTest.log"), "w") as f:
     f.write("1/1 Testing: test_x\n1/1 Test: test_x\nCommand: x\nTest time =   0.50 sec\n"
             "----------------------------------------------------------\nTest Passed.\n")
-    # a unit test whose name holds '_run_' (no case's) and a case's rigid run (its case's)
-    for name in ("test_end_of_run_forces", "settling_disk_rigid_100_run"):
+    # a unit test whose name holds '_run_' (no case's), a case's rigid run (its case's) and a unit
+    # test named like a case's check (dfg_check_gates: no case's, by its label)
+    for name in ("test_end_of_run_forces", "settling_disk_rigid_100_run", "dfg_check_gates"):
         f.write("1/1 Testing: %s\n1/1 Test: %s\nCommand: x\nTest time =   0.25 sec\n"
                 "----------------------------------------------------------\nTest Passed.\n" % (name, name))
+
+# The build's test definitions (ctest --show-only reads them): dfg_check_gates is labelled unit.
+with open(os.path.join(work, "CTestTestfile.cmake"), "w") as f:
+    f.write('add_test(dfg_check_gates "true")\nset_tests_properties(dfg_check_gates PROPERTIES LABELS "unit")\n')
 
 # Inputs of the issue-5 sections (reports/report_bench.py): kernel moments, work-precision,
 # stability map, per-stage cost.
@@ -512,7 +517,8 @@ if stage == "tex":
     # The run times: a unit test whose name holds '_run_' is no validation case's, a rigid run of
     # the settling disk goes with its case; the verification section counts the unit test.
     times = tex[tex.index("Run time per validation case"):]
-    if "test\\_end\\_of" in times or "settling\\_disk\\_rigid" in times or "settling\\_disk}" not in times:
+    if "test\\_end\\_of" in times or "settling\\_disk\\_rigid" in times or "settling\\_disk}" not in times \
+            or "texttt{dfg}" in times:
         fail("the run-time table shows a unit test as a case or splits settling_disk_rigid from settling_disk")
     if not re.search(r"Unit and convergence tests from ctest's logs: 2 tests", tex):
         fail("the verification section does not count test_end_of_run_forces among the unit tests")
