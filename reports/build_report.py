@@ -82,44 +82,43 @@ def case_list(build, source, results):
 EXCERPT_LIMIT = 1600
 
 
+def _readme_lines(source, case):
+    """The stripped lines of validation/<case>/README.md ([] without one)."""
+    path = os.path.join(source, "validation", case, "README.md")
+    if not os.path.isfile(path):
+        return []
+    with open(path, encoding="utf-8", errors="replace") as f:
+        return [line.strip() for line in f]
+
+
 def readme_summary(source, case):
     """First paragraph of validation/<case>/README.md after its heading and the Validates /
     Compared-with lines, if any: (text, cut), the paragraph whole, or its sentences up to
     EXCERPT_LIMIT characters with cut True; None without one."""
-    path = os.path.join(source, "validation", case, "README.md")
-    if not os.path.isfile(path):
-        return None
     lines, started = [], False
-    with open(path, encoding="utf-8", errors="replace") as f:
-        for line in f:
-            s = line.strip()
-            if s.startswith("#") or s.startswith("**Validates.**") or s.startswith("**Compared with.**"):
-                if started:
-                    break
-                continue
-            if not s:
-                if started:
-                    break
-                continue
-            started = True
-            lines.append(s)
+    for s in _readme_lines(source, case):
+        if s.startswith("#") or s.startswith("**Validates.**") or s.startswith("**Compared with.**"):
+            if started:
+                break
+            continue
+        if not s:
+            if started:
+                break
+            continue
+        started = True
+        lines.append(s)
     return _excerpt(lines)
 
 
 def readme_titled_paragraph(source, case, title):
     """The paragraph of validation/<case>/README.md whose bold title starts with `title` (a regex),
     as readme_summary gives it: (text, cut), or None."""
-    path = os.path.join(source, "validation", case, "README.md")
-    if not os.path.isfile(path):
-        return None
     lines = []
-    with open(path, encoding="utf-8", errors="replace") as f:
-        for line in f:
-            s = line.strip()
-            if lines and not s:
-                break
-            if lines or re.match(r"\*\*(?:%s)" % title, s):
-                lines.append(s)
+    for s in _readme_lines(source, case):
+        if lines and not s:
+            break
+        if lines or re.match(r"\*\*(?:%s)" % title, s):
+            lines.append(s)
     return _excerpt(lines)
 
 

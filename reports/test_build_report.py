@@ -314,16 +314,19 @@ if stage == "tex":
     row = next((line for line in summary.splitlines() if "swelling\\_\\allowbreak{}particles}" in line), "")
     if "min rim distance between particles" not in row or "collision" in row:
         fail("the swelling cavity's page-1 headline is not its shipped scene's figure: %r" % row[-300:])
+    def case_tex(case):
+        """The LaTeX of one case's section, up to the next section."""
+        section = tex[tex.index("label{case:%s}" % case):]
+        return section[:section.index("\\section")] if "\\section" in section else section
+
     # A one-grid case whose README says why it has no grid study quotes that paragraph as its
     # numerical uncertainty (the spread of perturbed runs, with its figures).
-    section = tex[tex.index("label{case:cavity_swelling_particles}"):]
-    section = section[:section.index("\\section")] if "\\section" in section else section
+    section = case_tex("cavity_swelling_particles")
     if not re.search(r"Numerical uncertainty at this level.\} One grid \(100\$\\times\$100\), and no grid study at "
                      r"any level; the case README says why", section) or "0.3352" not in section:
         fail("the swelling cavity's section does not quote its README's reason for no grid study and its spread")
     # A one-grid case whose README holds a grid study of finer grids (DFG 2D-2) quotes it.
-    section = tex[tex.index("label{case:dfg_cylinder_2d2}"):]
-    section = section[:section.index("\\section")] if "\\section" in section else section
+    section = case_tex("dfg_cylinder_2d2")
     if "the case README's grid study, on finer grids" not in section or "GCI" not in section:
         fail("the DFG 2D-2 section (one grid) does not quote its README's grid study of finer grids")
     # Title block: the outputs' commit with its dirty flag (no CMakeCache.txt here: unknown) and the
