@@ -130,17 +130,6 @@ void check_bodies(const Scene& scene, const SceneDiagnostics& diagnostics) {
   }
 }
 
-// ibm.coupling = "no_slip" on a mass-spring body solves the rim's response with the constraint,
-// marker by rim point (docs/method.md §3.7): sub-markers between the rim points are not part of it.
-void check_coupling(const Scene& scene, const SceneDiagnostics& diagnostics) {
-  if (scene.ibm.coupling != IbmSpec::Coupling::no_slip || !scene.ibm.sub_markers) return;
-  for (std::size_t b = 0; b < scene.bodies.size(); ++b)
-    if (scene.bodies[b].kind == BodySpec::Kind::mass_spring)
-      diagnostics.fail("ibm.sub_markers",
-                       fmt::format("is true, but \"no_slip\" couples a mass_spring body (body {}) through its rim "
-                                   "points alone: set ibm.sub_markers = false, or ibm.coupling = \"uhlmann\"", b));
-}
-
 void check_contact(const ContactSpec& contact, const SceneDiagnostics& diagnostics) {
   const bool collision_time = contact.model == ContactSpec::Model::collision_time;
   if (contact.enabled() && contact.cds_radius <= 0.0 && contact.cds_radius_fraction <= 0.0) {
@@ -195,7 +184,6 @@ void check_scene_consistency(const Scene& scene, const SceneDiagnostics& diagnos
   check_run(scene.run, diagnostics);
   check_open_sides(scene, diagnostics);
   check_bodies(scene, diagnostics);
-  check_coupling(scene, diagnostics);
   check_contact(scene.contact, diagnostics);
   check_output(scene.output, diagnostics);
 }

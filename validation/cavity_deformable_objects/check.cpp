@@ -16,18 +16,28 @@
 //      times of the deformation parameter (r_max - r_min)/(r_max + r_min) of the rim radii
 //      (solid/body_geometry.hpp) is at least twice that of k = 100.
 // usage: cavity_objects_check <cds_radius> <base_k10> <base_k100>
+//
+// Grid study (`--grid-study`, label slow): the k = 100 scene with sub-markers (marker spacing <= h,
+// so that the rims stay closed on the finer grids) on three grids N = 100, 150, 200 with the step
+// cap refined with h; per figure the observed order, Richardson value and fine-grid GCI
+// (metrics/grid_convergence.hpp, formal order 1 of the immersed boundary), and the shipped scene's
+// figure (100 x 100, markers at the rim points) against the Richardson value, as information.
+// Gate: the mean deformation parameter converges over the three grids (README.md, "Grid study").
+//        cavity_objects_check --grid-study <base_N1> <base_N2> <base_N3> <N1> <N2> <N3> <base_shipped>
 // The end time, the area band and the deformation ratio are solver/metrics/case_criteria.hpp's
 // (one definition with `ibms compare`).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <stdexcept>
 #include <string>
 
 #include "verification/common/results_csv.hpp"
 #include "metrics/body_series.hpp"
 #include "metrics/case_criteria.hpp"
 #include "metrics/csv_reader.hpp"
+#include "metrics/grid_convergence.hpp"
 
 using namespace ibms;
 using namespace ibms::validation;
@@ -76,9 +86,66 @@ RunFigures measure(const std::string& base) {
   return f;
 }
 
+int grid_study(char** argv) {
+  const std::string name = "cavity_deformable_objects";
+  const RunFigures run[3] = {measure(argv[2]), measure(argv[3]), measure(argv[4])};
+  const double n[3] = {std::atof(argv[5]), std::atof(argv[6]), std::atof(argv[7])};
+  const RunFigures shipped = measure(argv[8]);
+  for (const RunFigures& f : run)
+    if (f.end_time < criteria::deformable_t_end * (1 - 1e-9))
+      throw std::runtime_error("a grid-study run ended at t = " + std::to_string(f.end_time));
+  struct Figure {
+    const char* label;
+    double RunFigures::*member;
+  };
+  const Figure figures[] = {{"mean deformation parameter", &RunFigures::mean_deformation},
+                            {"max deformation parameter", &RunFigures::max_deformation},
+                            {"smallest area / A0", &RunFigures::area_min},
+                            {"smallest rim distance between bodies", &RunFigures::min_rim},
+                            {"smallest rim-point distance to a wall", &RunFigures::min_wall}};
+  const std::string grids = " (k = 100, sub-markers, N = " + std::string(argv[5]) + ", " + argv[6] + ", " + argv[7] + ")";
+  std::printf("cavity with deformable objects, grid study%s:\n", grids.c_str());
+  std::printf("  %-38s %9s %9s %9s  order  Richardson    GCI    shipped 100^2 (no sub-markers)\n", "figure", argv[5],
+              argv[6], argv[7]);
+  bool mean_converges = false;
+  for (const Figure& q : figures) {
+    const double f1 = run[0].*q.member, f2 = run[1].*q.member, f3 = run[2].*q.member;
+    const GridConvergence g = grid_convergence(1 / n[2], 1 / n[1], 1 / n[0], f3, f2, f1, immersed_boundary_order);
+    if (g.converging) {
+      const double off = (shipped.*q.member - g.extrapolated) / g.extrapolated;
+      std::printf("  %-38s %9.5g %9.5g %9.5g  %5.2f  %10.5g  %5.2f %%  %.5g (%+.2f %% from Richardson)\n", q.label, f1,
+                  f2, f3, g.order, g.extrapolated, 100 * g.gci_fine, shipped.*q.member, 100 * off);
+    } else {
+      // No order, no GCI: the spread of the three grids about the finest, and the shipped figure's
+      // distance from the finest.
+      const double spread = (std::max({f1, f2, f3}) - std::min({f1, f2, f3})) / std::abs(f3);
+      std::printf("  %-38s %9.5g %9.5g %9.5g  %s, spread %.2f %% of the finest  %.5g (%+.2f %% from N = %s)\n",
+                  q.label, f1, f2, f3, g.monotone ? "not converging" : "non-monotone", 100 * spread, shipped.*q.member,
+                  100 * (shipped.*q.member - f3) / f3, argv[7]);
+    }
+    if (std::isfinite(g.gci_fine)) {
+      record_info(name, std::string("GCI of the finest grid, ") + q.label + grids, g.gci_fine);
+      record_info(name, std::string("Richardson value, ") + q.label + grids, g.extrapolated);
+    }
+    if (q.member == &RunFigures::mean_deformation) mean_converges = g.converging;
+  }
+  std::printf("%s the mean deformation parameter converges over the three grids\n", mean_converges ? "PASS" : "FAIL");
+  record(name, "grid study: mean deformation parameter converges (1 = yes)" + grids, 1.0, mean_converges ? 1.0 : 0.0,
+         mean_converges);
+  return mean_converges ? 0 : 1;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  if (argc == 9 && std::string(argv[1]) == "--grid-study") {
+    try {
+      return grid_study(argv);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "cavity_objects_check: %s\n", e.what());
+      return 2;
+    }
+  }
   if (argc != 4) {
     std::fprintf(stderr, "usage: %s <cds_radius> <base_k10> <base_k100>\n", argv[0]);
     return 2;

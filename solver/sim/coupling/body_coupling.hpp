@@ -84,9 +84,10 @@ struct BodyCoupling {
   // ibm.coupling = "no_slip": the forces F_l of the latest step, the predictor of the next one while
   // the marker count stays the same (previous_force.size() == marker.size(); empty before the first step).
   std::vector<Vec2> previous_force;        // [length/time^2]
-  // ibm.coupling = "no_slip" on a mass-spring body (markers = rim points): the change of the rim
-  // velocities over the step that the fluid reaction of forcing_sum gives through the body's
-  // linearised response, -(M + dt D + dt^2 S)^{-1} rho_f dV dt F (docs/method.md §3.7). The target of
+  // ibm.coupling = "no_slip" on a mass-spring body: the change of the marker velocities over the step
+  // that the fluid reaction of forcing_sum gives through the body's linearised response,
+  // -(M + dt D + dt^2 S)^{-1} rho_f dV dt F (docs/method.md §3.7), each sub-marker's share taken to and
+  // from its edge's end points with the weights (1 - w, w) (§3.6). The target of
   // the constraint is the rim velocity at the end of the step, target_velocity (U^n + the step
   // without the fluid) + this. Empty for other bodies [length/time].
   std::vector<Vec2> body_velocity_change;
@@ -122,6 +123,38 @@ void prepare_markers(const std::vector<MassSpringBody>& bodies,
                      const std::vector<SwellingSchedule>& swelling, double time, double previous_dt,
                      const Grid& grid, bool sub_markers, std::vector<BodyCoupling>& coupling,
                      double retraction = 0.0);
+
+// Marker l of a rim sits on edge e0 -> e0 + 1 at fraction w (docs/method.md §3.6): a rim field's
+// value there is (1 - w) of e0's plus w of e1's, exactly e0's own at w = 0 (markers = rim points).
+// `at(p)` is the field's component at rim point p.
+template <class At>
+inline double on_marker_edge(const BodyCoupling& c, std::size_t l, int n_rim, At at) {
+  const int e0 = c.marker_edge[l];
+  const double w = c.marker_fraction[l];
+  if (w == 0.0) return at(e0);
+  return (1.0 - w) * at(e0) + w * at((e0 + 1) % n_rim);
+}
+
+inline double rim_to_marker(const BodyCoupling& c, std::size_t l, int n_rim, const std::vector<Vec2>& point, int d) {
+  return on_marker_edge(c, l, n_rim, [&](int p) { return point[p][d]; });
+}
+
+// point: two entries per body point, as the response systems take them.
+inline double rim_to_marker(const BodyCoupling& c, std::size_t l, int n_rim, const std::vector<double>& point, int d) {
+  return on_marker_edge(c, l, n_rim, [&](int p) { return point[2 * p + d]; });
+}
+
+// The transpose: marker l's value shared to its edge's end points with the same weights.
+inline void marker_to_rim(const BodyCoupling& c, std::size_t l, int n_rim, double value, int d, std::vector<double>& point) {
+  const int e0 = c.marker_edge[l];
+  const double w = c.marker_fraction[l];
+  if (w == 0.0) {
+    point[2 * e0 + d] += value;
+    return;
+  }
+  point[2 * e0 + d] += (1.0 - w) * value;
+  point[2 * ((e0 + 1) % n_rim) + d] += w * value;
+}
 
 // Adds to each marker's target U_target_l the change `change` of its body's point velocities (one
 // entry per body point), interpolated along the marker's rim edge and scaled by its radial factor

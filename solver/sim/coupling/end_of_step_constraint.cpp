@@ -71,7 +71,8 @@ EndOfStepConstraint::EndOfStepConstraint(const Scene& scene, const Grid& grid, K
   if (rim_response_) arrays_.preconditioner.attach_rim_systems(&arrays_.response_systems);
   for (std::size_t b = 0; b < bodies.size(); ++b) {
     if (bodies[b].kind != BodyKind::mass_spring) continue;
-    markers[b].body_velocity_change.assign(markers[b].marker.size(), Vec2{0.0, 0.0});
+    markers[b].body_velocity_change.assign(markers[b].marker.capacity(), Vec2{0.0, 0.0});
+    markers[b].body_velocity_change.resize(markers[b].marker.size());
     markers[b].response_work.assign(2 * bodies[b].n_points(), 0.0);
   }
   balanced_ = {&arrays_.force_cell_x, &arrays_.force_cell_y, &arrays_.force_face_x, &arrays_.force_face_y};
@@ -138,8 +139,9 @@ bool EndOfStepConstraint::prepare_body_responses(const CouplingStep& step) {
     for (int p = 0; p < body.n_points(); ++p)
       c.external_force[p] = body.buoyant_weight(body.mass[p], fluid_density_, gravity_);
     arrays_.response_systems[b].velocity_change(body, step.dt, c.external_force);  // dU without the fluid
+    c.body_velocity_change.resize(c.marker.size());  // sub-markers come and go: capacity reserved
     for (std::size_t l = 0; l < c.marker.size(); ++l)
-      for (int d = 0; d < 2; ++d) c.target_velocity[l][d] += c.external_force[l][d];
+      for (int d = 0; d < 2; ++d) c.target_velocity[l][d] += rim_to_marker(c, l, body.n_surface, c.external_force, d);
   }
   return any;
 }
@@ -151,7 +153,8 @@ CouplingWork EndOfStepConstraint::hold(const CouplingStep& step) {
   FluidState& fluid = step.fluid;
   const WallVelocities walls = wall_velocities_at(step.solver.boundaries(), step.time_n + step.dt);
   const bool responds = prepare_body_responses(step);
-  // -(M + dt D + dt^2 S)^{-1} rho_f dV (dt F) on the rim points of body b (markers = rim points).
+  // -(M + dt D + dt^2 S)^{-1} rho_f dV (dt F) on the rim points of body b: a marker's impulse goes to
+  // its edge's end points, and the change comes back to it, with the weights (1 - w, w) (§3.6).
   std::vector<BodyCoupling>& markers = step.markers;
   // Two captures: std::function keeps them in place, without allocating.
   const BodyResponse response = [this, &step](std::size_t b, const std::vector<Vec2>& impulse,
@@ -163,11 +166,12 @@ CouplingWork EndOfStepConstraint::hold(const CouplingStep& step) {
     }
     std::vector<double>& x = c.response_work;
     std::fill(x.begin(), x.end(), 0.0);
+    const int n_rim = step.bodies[b].n_surface;
     for (std::size_t l = 0; l < c.marker.size(); ++l)
-      for (int d = 0; d < 2; ++d) x[2 * l + d] = -fluid_density_ * c.marker_volume[l] * impulse[l][d];
+      for (int d = 0; d < 2; ++d) marker_to_rim(c, l, n_rim, -fluid_density_ * c.marker_volume[l] * impulse[l][d], d, x);
     arrays_.response_systems[b].response(x);
     for (std::size_t l = 0; l < c.marker.size(); ++l)
-      for (int d = 0; d < 2; ++d) change[l][d] = x[2 * l + d];
+      for (int d = 0; d < 2; ++d) change[l][d] = rim_to_marker(c, l, n_rim, x, d);
   };
   NoSlipArrays& a = arrays_;
   const NoSlipResult result =

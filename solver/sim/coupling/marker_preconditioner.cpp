@@ -83,22 +83,23 @@ bool MarkerPreconditioner::factorise(const Grid& grid, KernelKind kernel, bool o
     const Eigen::Index n = static_cast<Eigen::Index>(c.marker.size());
     Block& block = blocks_[b];
     // A rigid body that responds in the marker system takes A_b less its response. A mass-spring
-    // rim whose markers are its rim points takes, when the rims' systems are attached
-    // (ibm.rim_preconditioner = "response"), (D + R)^-1 under the face constraint, D the
-    // diagonal of J_f S_f and R its response, by Woodbury through its implicit system with rho dV / D
-    // added to the rim points' masses: O(N) a step, where its own block (A_b less its response,
-    // rebuilt as the rim moves) costs more to build than the products it saves (docs/method.md §3.7).
-    // Other responding rims keep the identity.
+    // rim takes, when the rims' systems are attached (ibm.rim_preconditioner = "response"),
+    // (D + W R W^T rho dV)^-1 under the face constraint, D the diagonal of J_f S_f, R its response
+    // on the rim points and W the markers' weights on their edges' end points (the identity when the
+    // markers are the rim points; (1 - w, w) for sub-markers, docs/method.md §3.6), by Woodbury
+    // through its implicit system with W^T rho dV D^-1 W added to the rim points' masses: exactly for
+    // markers at the rim points, lumped to its row sums with sub-markers. O(N) a step, where its own
+    // block (A_b less its response, rebuilt as the rim moves) costs more to build than the products it
+    // saves (docs/method.md §3.7). Other responding rims keep the identity.
     const bool responds = !c.body_velocity_change.empty();
     const bool rigid = c.response_mass > 0.0;
     block.identity = responds && !rigid;
     block.rim = false;
     if (block.identity) {
       block.leak = 0.0;
-      // Its markers are its rim points (scene_checks.cpp rejects ibm.sub_markers under "no_slip"
-      // with mass-spring bodies, as the response itself assumes).
       if (rim_systems_ != nullptr && on_faces) {
         block.rim = true;
+        const int n_rim = static_cast<int>(c.triangle_momentum.size());
         block.rim_diagonal.resize(2 * n);
         block.rim_work.assign(c.response_work.size(), 0.0);
         for (Eigen::Index k = 0; k < n; ++k)
@@ -106,7 +107,8 @@ bool MarkerPreconditioner::factorise(const Grid& grid, KernelKind kernel, bool o
             marker_node_weights(grid, c.face_stencils[k], on_faces, d, weights_[0]);
             const double diagonal = overlap(weights_[0], weights_[0]) * c.marker_volume[k] / cell_area_;
             block.rim_diagonal[2 * k + d] = diagonal;
-            block.rim_work[2 * k + d] = fluid_density_ * c.marker_volume[k] / diagonal;
+            marker_to_rim(c, static_cast<std::size_t>(k), n_rim, fluid_density_ * c.marker_volume[k] / diagonal, d,
+                          block.rim_work);
           }
         (*rim_systems_)[b].factorise_with_added_diagonal(block.rim_work, block.rim_system);
       }
@@ -370,13 +372,18 @@ void MarkerPreconditioner::apply(const std::vector<BodyCoupling>& coupling, cons
     const Eigen::Index n = static_cast<Eigen::Index>(c.marker.size());
     Block& block = blocks_[b];
     if (block.rim) {
-      // x = D^-1 (v - y), (K + rho dV D^-1) y = rho dV D^-1 v on the rim points.
+      // x = D^-1 (v - W y), (K + W^T rho dV D^-1 W) y = W^T rho dV D^-1 v on the rim points.
       std::vector<double>& t = block.rim_work;
       std::fill(t.begin(), t.end(), 0.0);
+      const int n_rim = static_cast<int>(c.triangle_momentum.size());
       for (Eigen::Index q = 0; q < 2 * n; ++q)
-        t[q] = fluid_density_ * c.marker_volume[q / 2] * v[first + q] / block.rim_diagonal[q];
+        marker_to_rim(c, static_cast<std::size_t>(q / 2), n_rim,
+                      fluid_density_ * c.marker_volume[q / 2] * v[first + q] / block.rim_diagonal[q],
+                      static_cast<int>(q % 2), t);
       block.rim_system.response(t);
-      for (Eigen::Index q = 0; q < 2 * n; ++q) x[first + q] = (v[first + q] - t[q]) / block.rim_diagonal[q];
+      for (Eigen::Index q = 0; q < 2 * n; ++q)
+        x[first + q] = (v[first + q] - rim_to_marker(c, static_cast<std::size_t>(q / 2), n_rim, t, static_cast<int>(q % 2))) /
+                       block.rim_diagonal[q];
       first += 2 * static_cast<std::size_t>(n);
       continue;
     }
