@@ -111,4 +111,10 @@ BOOST_AUTO_TEST_CASE(no_slip_coupling_steps_without_allocating) {
   // Mass-spring bodies under it (swelling, contacts): the rim's response is factorised in storage
   // made at the first step, its work vectors sized when the Simulation is built.
   BOOST_TEST(allocations_in_steps(IBMS_SCENE_MASS_SPRING, 100, 150, on_faces) == 0);
+  // With sub-markers and the rims' preconditioner block: the markers come and go within the
+  // capacity reserved for the swollen rims, and the block's work is sized by the body points.
+  std::vector<std::string> sub_markers = on_faces;
+  sub_markers.push_back("ibm.sub_markers=true");
+  sub_markers.push_back("ibm.rim_preconditioner=\"response\"");
+  BOOST_TEST(allocations_in_steps(IBMS_SCENE_MASS_SPRING, 100, 150, sub_markers) == 0);
 }
