@@ -113,8 +113,8 @@ BOOST_AUTO_TEST_CASE(no_slip_coupling_steps_without_allocating) {
   BOOST_TEST(allocations_in_steps(IBMS_SCENE_MASS_SPRING, 100, 150, on_faces) == 0);
   // With sub-markers and the rims' preconditioner block: the markers come and go within the
   // capacity reserved for the swollen rims, and the block's work is sized by the body points.
-  std::vector<std::string> sub_markers = on_faces;
-  sub_markers.push_back("ibm.sub_markers=true");
-  sub_markers.push_back("ibm.rim_preconditioner=\"response\"");
+  const std::vector<std::string> sub_markers{"ibm.coupling=\"no_slip\"", "ibm.slip_tolerance=1e-3",
+                                             "ibm.constrained_velocity=\"faces\"", "ibm.sub_markers=true",
+                                             "ibm.rim_preconditioner=\"response\""};
   BOOST_TEST(allocations_in_steps(IBMS_SCENE_MASS_SPRING, 100, 150, sub_markers) == 0);
 }
