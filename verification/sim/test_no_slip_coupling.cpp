@@ -94,8 +94,6 @@ BOOST_AUTO_TEST_CASE(sub_markers_on_mass_spring_wheels_keep_no_slip_on_the_faces
   // marker, sub-markers included, is the rim's velocity at the end of the step.
   const std::vector<std::string> on_faces{"ibm.coupling=\"no_slip\"", "ibm.slip_tolerance=1e-3",
                                           "ibm.constrained_velocity=\"faces\"", "ibm.sub_markers=true"};
-  const ibms::Scene scene = ibms::read_scene_file(IBMS_SCENE_MASS_SPRING, on_faces);
-  BOOST_TEST(scene.ibm.sub_markers);
   const SlipRecord coupled = slip_over_steps(IBMS_SCENE_MASS_SPRING, on_faces, 300, /*faces=*/true);
   BOOST_TEST_MESSAGE("no_slip on faces, sub-markers: largest face slip " << coupled.largest << ", GMRES products "
                                                                            << coupled.products << ", markers of a rim up to "

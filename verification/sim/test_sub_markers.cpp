@@ -52,6 +52,21 @@ double max_marker_spacing(const BodyCoupling& c) {
   return largest;
 }
 
+// A per-point field of the rim (positions, velocities) at 20 samples per rim edge, linear along
+// each edge as the markers' targets are.
+std::vector<Vec2> rim_samples(const MassSpringBody& body, const std::vector<Vec2>& field) {
+  std::vector<Vec2> samples;
+  for (int e = 0; e < body.n_surface; ++e) {
+    const Vec2& a = field[e];
+    const Vec2& z = field[(e + 1) % body.n_surface];
+    for (int j = 0; j < 20; ++j) {
+      const double w = j / 20.0;
+      samples.push_back({(1 - w) * a[0] + w * z[0], (1 - w) * a[1] + w * z[1]});
+    }
+  }
+  return samples;
+}
+
 // Largest |J u - U_body| over 20 samples per rim edge after the forcing passes of one step.
 double rim_slip_after_forcing(bool sub_markers, int passes) {
   Scene scene = coarse_scene(sub_markers);
@@ -64,16 +79,7 @@ double rim_slip_after_forcing(bool sub_markers, int passes) {
   us = sim.fluid().velocity_x;  // fluid at rest: u~ = 0
   vs = sim.fluid().velocity_y;
   apply_direct_forcing(sim.grid(), sim.kernel(), {}, dt, passes, sim.markers(), us, vs);
-  const MassSpringBody& body = sim.bodies()[0];
-  std::vector<Vec2> samples;
-  for (int e = 0; e < body.n_surface; ++e) {
-    const Vec2& a = body.position[e];
-    const Vec2& z = body.position[(e + 1) % body.n_surface];
-    for (int j = 0; j < 20; ++j) {
-      const double w = j / 20.0;
-      samples.push_back({(1 - w) * a[0] + w * z[0], (1 - w) * a[1] + w * z[1]});
-    }
-  }
+  const std::vector<Vec2> samples = rim_samples(sim.bodies()[0], sim.bodies()[0].position);
   std::vector<Vec2> u(samples.size());
   interpolate(sim.grid(), sim.kernel(), {}, us, vs, samples, u);
   double slip = 0.0;
@@ -203,17 +209,7 @@ EndOfStepSlip end_of_step_slip(bool sub_markers) {
   for (int n = 0; n < 10; ++n) {
     advance_one_step(sim, 2e-3);
     const MassSpringBody& body = sim.bodies()[0];
-    std::vector<Vec2> samples, rim_velocity;
-    for (int e = 0; e < body.n_surface; ++e) {
-      const int z = (e + 1) % body.n_surface;
-      for (int j = 0; j < 20; ++j) {
-        const double w = j / 20.0;
-        samples.push_back({(1 - w) * body.position[e][0] + w * body.position[z][0],
-                           (1 - w) * body.position[e][1] + w * body.position[z][1]});
-        rim_velocity.push_back({(1 - w) * body.velocity[e][0] + w * body.velocity[z][0],
-                                (1 - w) * body.velocity[e][1] + w * body.velocity[z][1]});
-      }
-    }
+    const std::vector<Vec2> samples = rim_samples(body, body.position), rim_velocity = rim_samples(body, body.velocity);
     std::vector<Vec2> u(samples.size());
     map_face_stencils(sim.grid(), sim.kernel(), samples, stencils);
     interpolate_faces(sim.grid(), stencils, {}, sim.fluid().velocity_face_x, sim.fluid().velocity_face_y, u);
