@@ -37,10 +37,8 @@ inline double face_mean_y(const FaceField& face_y, int i, int j) { return 0.5 * 
 // the centre point scaled by the marker's radial factor (exact for a rigid motion and a dilation).
 inline double marker_value(const std::vector<Vec2>& point, const Vec2& centre, const BodyCoupling& c, std::size_t l,
                            int n_rim, int d) {
-  const int e0 = c.marker_edge[l];
-  const int e1 = (e0 + 1) % n_rim;
-  const double w = c.marker_fraction[l], f = c.marker_fraction_work[l];
-  const double rim = (1.0 - w) * point[e0][d] + w * point[e1][d];
+  const double f = c.marker_fraction_work[l];
+  const double rim = rim_to_marker(c, l, n_rim, point, d);
   return f == 1.0 ? rim : centre[d] + f * (rim - centre[d]);
 }
 
@@ -112,7 +110,7 @@ void prepare_markers(const std::vector<MassSpringBody>& bodies,
           const double w = static_cast<double>(j) / pieces;
           c.marker_edge[m] = e;
           c.marker_fraction[m] = w;
-          c.marker[m] = {(1.0 - w) * a[0] + w * z[0], (1.0 - w) * a[1] + w * z[1]};
+          c.marker[m] = {rim_to_marker(c, m, n_rim, body.position, 0), rim_to_marker(c, m, n_rim, body.position, 1)};
         }
       }
     }
@@ -158,12 +156,8 @@ void rigid_arms(const MassSpringBody& body, const BodyCoupling& c, std::vector<V
   const int n_rim = body.n_surface;
   const Vec2& x_c = body.position[body.centre_index()];
   arm.resize(c.marker.size());  // capacity reserved: no allocation after the first step
-  for (std::size_t l = 0; l < c.marker.size(); ++l) {
-    const int e0 = c.marker_edge[l], e1 = (e0 + 1) % n_rim;
-    const double w = c.marker_fraction[l];
-    arm[l] = {(1.0 - w) * body.position[e0][0] + w * body.position[e1][0] - x_c[0],
-              (1.0 - w) * body.position[e0][1] + w * body.position[e1][1] - x_c[1]};
-  }
+  for (std::size_t l = 0; l < c.marker.size(); ++l)
+    arm[l] = {rim_to_marker(c, l, n_rim, body.position, 0) - x_c[0], rim_to_marker(c, l, n_rim, body.position, 1) - x_c[1]};
 }
 
 void rigid_response(double fluid_density, const BodyCoupling& c, const std::vector<Vec2>& arm,
@@ -334,16 +328,9 @@ void compute_fluid_reaction(double fluid_density, std::vector<BodyCoupling>& cou
     const int n_rim = static_cast<int>(c.triangle_momentum.size());
     // docs/method.md §1.6: F_f,l = -rho_f (sum_m F_l^(m)) dV_l, a force per unit depth; a sub-marker's
     // share goes to its edge's end points with weights (1 - w, w) (§3.6).
-    for (std::size_t l = 0; l < c.marker.size(); ++l) {
-      const int e0 = c.marker_edge[l];
-      const int e1 = (e0 + 1) % n_rim;
-      const double w = c.marker_fraction[l];
-      for (int d = 0; d < 2; ++d) {
-        const double f = -fluid_density * c.forcing_sum[l][d] * c.marker_volume[l];
-        c.fluid_force[e0][d] += (1.0 - w) * f;
-        c.fluid_force[e1][d] += w * f;
-      }
-    }
+    for (std::size_t l = 0; l < c.marker.size(); ++l)
+      for (int d = 0; d < 2; ++d)
+        marker_to_rim(c, l, n_rim, -fluid_density * c.forcing_sum[l][d] * c.marker_volume[l], d, c.fluid_force);
   }
 }
 

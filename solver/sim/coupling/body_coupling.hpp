@@ -144,16 +144,27 @@ inline double rim_to_marker(const BodyCoupling& c, std::size_t l, int n_rim, con
   return on_marker_edge(c, l, n_rim, [&](int p) { return point[2 * p + d]; });
 }
 
-// The transpose: marker l's value shared to its edge's end points with the same weights.
-inline void marker_to_rim(const BodyCoupling& c, std::size_t l, int n_rim, double value, int d, std::vector<double>& point) {
+// The transpose: marker l's value shared to its edge's end points with the same weights, all of it
+// to e0 at w = 0. `add(p, share)` adds a share to rim point p's component.
+template <class Add>
+inline void to_marker_edge_ends(const BodyCoupling& c, std::size_t l, int n_rim, double value, Add add) {
   const int e0 = c.marker_edge[l];
   const double w = c.marker_fraction[l];
   if (w == 0.0) {
-    point[2 * e0 + d] += value;
+    add(e0, value);
     return;
   }
-  point[2 * e0 + d] += (1.0 - w) * value;
-  point[2 * ((e0 + 1) % n_rim) + d] += w * value;
+  add(e0, (1.0 - w) * value);
+  add((e0 + 1) % n_rim, w * value);
+}
+
+inline void marker_to_rim(const BodyCoupling& c, std::size_t l, int n_rim, double value, int d, std::vector<Vec2>& point) {
+  to_marker_edge_ends(c, l, n_rim, value, [&](int p, double share) { point[p][d] += share; });
+}
+
+// point: two entries per body point, as the response systems take them.
+inline void marker_to_rim(const BodyCoupling& c, std::size_t l, int n_rim, double value, int d, std::vector<double>& point) {
+  to_marker_edge_ends(c, l, n_rim, value, [&](int p, double share) { point[2 * p + d] += share; });
 }
 
 // Adds to each marker's target U_target_l the change `change` of its body's point velocities (one
